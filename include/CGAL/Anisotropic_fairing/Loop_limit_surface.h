@@ -1,0 +1,401 @@
+// Copyright (c) 2026 Anisotropic_fairing developers.
+// SPDX-License-Identifier: GPL-3.0-or-later
+
+#ifndef CGAL_ANISOTROPIC_FAIRING_LOOP_LIMIT_SURFACE_H
+#define CGAL_ANISOTROPIC_FAIRING_LOOP_LIMIT_SURFACE_H
+
+#include <CGAL/Anisotropic_fairing/Input_error.h>
+#include <CGAL/Anisotropic_fairing/Vector_attribute_traits.h>
+#include <CGAL/Anisotropic_fairing/named_function_parameters.h>
+#include <CGAL/Anisotropic_fairing/internal/Indexed_mesh.h>
+#include <CGAL/Anisotropic_fairing/internal/Limit_resampler.h>
+#include <CGAL/Anisotropic_fairing/internal/Mass_assembly.h>
+#include <CGAL/Anisotropic_fairing/internal/Patch_cache.h>
+#include <CGAL/Anisotropic_fairing/internal/Sparse_pattern.h>
+#include <CGAL/Anisotropic_fairing/internal/Vertex_limit_masks.h>
+
+#include <CGAL/Kernel_traits.h>
+#include <CGAL/boost/graph/Euler_operations.h>
+#include <CGAL/boost/graph/helpers.h>
+#include <CGAL/boost/graph/properties.h>
+
+#include <Eigen/SparseCore>
+
+#include <array>
+#include <cmath>
+#include <memory>
+#include <string>
+#include <vector>
+
+namespace CGAL {
+namespace Anisotropic_fairing {
+
+/*!
+\ingroup PkgAnisotropicFairingLimitSurface
+
+The limit surface of Loop subdivision over a closed triangle mesh (the control mesh), and the Loop
+finite-element basis on it: \f$ x(\xi) = \sum_j \phi_j(\xi)\, x_j \f$ where the sum runs over the
+control vertices of the face's 1-ring.
+
+Each face is parameterised by barycentric coordinates \f$(\xi_0, \xi_1, \xi_2)\f$ with respect to
+its vertices in the order of `CGAL::vertices_around_face(halfedge(f, tm), tm)`; derivatives are
+taken with respect to \f$\xi_1\f$ and \f$\xi_2\f$ (\f$\xi_0 = 1 - \xi_1 - \xi_2\f$).
+Faces whose three vertices have valence 6 are quartic box splines; the others are evaluated exactly
+by local subdivision of the face's own 1-ring (any valences \f$\geq 3\f$, any number of
+extraordinary vertices per face; the mesh is never modified or globally subdivided). Evaluation
+weights are computed once per topological category of face and shared.
+
+The surface is a snapshot: positions are read at construction.
+
+\tparam TriangleMesh a model of `FaceListGraph` (e.g. `CGAL::Surface_mesh`, `CGAL::Polyhedron_3`)
+\tparam VertexPointMap a model of `ReadablePropertyMap` with `boost::graph_traits<TriangleMesh>::%vertex_descriptor`
+        as key and a CGAL `Point_3` as value
+
+The mesh must be closed, 2-manifold, made of triangles, without isolated vertices and with every
+valence at least 3; otherwise the constructor throws `Input_error` naming the offending element.
+*/
+template <typename TriangleMesh,
+          typename VertexPointMap = typename boost::property_map<TriangleMesh, CGAL::vertex_point_t>::const_type>
+class Loop_limit_surface
+{
+public:
+  /// \name Types
+  /// @{
+  typedef typename boost::graph_traits<TriangleMesh>::vertex_descriptor vertex_descriptor;
+  typedef typename boost::graph_traits<TriangleMesh>::face_descriptor face_descriptor;
+  typedef typename boost::property_traits<VertexPointMap>::value_type Point_3;
+  typedef typename CGAL::Kernel_traits<Point_3>::Kernel Kernel;
+  typedef typename Kernel::Vector_3 Vector_3;
+  /// Barycentric coordinates of a point of a face (non-negative, summing to 1).
+  typedef std::array<double, 3> Barycentric_coordinates;
+
+  /// The limit surface and its derivatives at one parameter point.
+  struct Limit_point
+  {
+    Point_3 position;   ///< the point of the limit surface
+    Vector_3 d1;        ///< \f$\partial x/\partial \xi_1\f$
+    Vector_3 d2;        ///< \f$\partial x/\partial \xi_2\f$
+    Vector_3 d11;       ///< \f$\partial^2 x/\partial \xi_1^2\f$
+    Vector_3 d12;       ///< \f$\partial^2 x/\partial \xi_1 \partial \xi_2\f$
+    Vector_3 d22;       ///< \f$\partial^2 x/\partial \xi_2^2\f$
+    Vector_3 normal;    ///< unit normal, oriented like the face
+    /// true at an extraordinary (valence \f$\neq 6\f$) vertex, where the parametric derivatives of
+    /// the limit surface degenerate: `d1` and `d2` then span the limit tangent plane (they are the
+    /// derivatives of a regular reparameterisation, exact for valence 6) and `d11`, `d12`, `d22` are zero.
+    bool at_extraordinary_vertex;
+  };
+  /// @}
+
+  /// \name Creation
+  /// @{
+
+  /*!
+  builds the limit surface of `tm` with the point map `vpm`.
+
+  \cgalNamedParamsBegin
+    \cgalParamNBegin{quadrature_degree}
+      \cgalParamDescription{degree of the symmetric Gauss rule used on each face for `area()` and `mass_matrix()`}
+      \cgalParamType{int, 4, 6 or 8}
+      \cgalParamDefault{8 (16 points, exact on planar regular patches)}
+    \cgalParamNEnd
+    \cgalParamNBegin{quadrature_tiling_depth}
+      \cgalParamDescription{0 applies the rule once per face; \f$K > 0\f$ splits faces with an extraordinary
+                            vertex 1-to-4 down to level \f$K\f$ and applies the rule on every tile (adaptive
+                            mode; far more accurate near extraordinary vertices, about 13-31 times more points there)}
+      \cgalParamType{int in [0, 12]}
+      \cgalParamDefault{0}
+    \cgalParamNEnd
+  \cgalNamedParamsEnd
+
+  \throws Input_error if the mesh is not a closed 2-manifold triangle mesh with valences \f$\geq 3\f$ and no isolated vertex,
+          if a coordinate is not finite, or if a parameter is out of range.
+  */
+  template <typename NamedParameters = parameters::Default_named_parameters>
+  Loop_limit_surface(const TriangleMesh& tm, VertexPointMap vpm,
+                     const NamedParameters& np = parameters::default_values())
+    : mesh_(tm)
+  {
+    init(vpm, np);
+  }
+
+  /*!
+  builds the limit surface of `tm` with the point map given by the named parameter
+  `vertex_point_map` (default: `get(CGAL::vertex_point, tm)`). Other named parameters as above.
+  */
+  template <typename NamedParameters = parameters::Default_named_parameters>
+  explicit Loop_limit_surface(const TriangleMesh& tm,
+                              const NamedParameters& np = parameters::default_values())
+    : mesh_(tm)
+  {
+    using parameters::choose_parameter;
+    using parameters::get_parameter;
+    init(choose_parameter(get_parameter(np, CGAL::internal_np::vertex_point), get_const_property_map(CGAL::vertex_point, tm)), np);
+  }
+  /// @}
+
+  /// \name Size
+  /// @{
+  std::size_t number_of_vertices() const { return indexed_->number_of_vertices(); }
+  std::size_t number_of_faces() const { return indexed_->number_of_faces(); }
+  /// Number of distinct topological categories of face patches; evaluation weights are computed once per category.
+  std::size_t number_of_patch_categories() const { return cache_->number_of_categories(); }
+  /// Index of `v` in the order of `vertices(tm)`: the row of `v` in `mass_matrix()`.
+  std::size_t vertex_index(vertex_descriptor v) const { return indexed_->index(v); }
+  /// @}
+
+  /// \name Evaluation
+  /// @{
+
+  /*!
+  evaluates the limit surface at the point of face `f` with barycentric coordinates `b`.
+  \throws Input_error if `b` has a negative or non-finite entry or does not sum to 1 (to 1e-12).
+  */
+  Limit_point evaluate(face_descriptor f, const Barycentric_coordinates& b) const
+  {
+    const std::size_t fi = indexed_->index(f);
+    internal::Stencil s;
+    stencil_at(fi, b, s);
+    double v[6][3];
+    const int* ring = cache_->ring(fi);
+    for(int r = 0; r < 6; ++r)
+      for(int c = 0; c < 3; ++c)
+      {
+        double sum = 0;
+        for(int k = 0; k < s.m; ++k) sum += s.row(r)[k] * X_(ring[k], c);
+        v[r][c] = sum;
+      }
+    double n[3];
+    internal::cross3(v[1], v[2], n);
+    internal::normalize3(n);
+    Limit_point p;
+    p.position = Point_3(v[0][0], v[0][1], v[0][2]);
+    p.d1 = Vector_3(v[1][0], v[1][1], v[1][2]);
+    p.d2 = Vector_3(v[2][0], v[2][1], v[2][2]);
+    p.d11 = Vector_3(v[3][0], v[3][1], v[3][2]);
+    p.d12 = Vector_3(v[4][0], v[4][1], v[4][2]);
+    p.d22 = Vector_3(v[5][0], v[5][1], v[5][2]);
+    p.normal = Vector_3(n[0], n[1], n[2]);
+    p.at_extraordinary_vertex = s.singular;
+    return p;
+  }
+
+  /*!
+  evaluates the limit of a per-vertex attribute (a function on the surface, e.g. colours or texture
+  coordinates) at the point of face `f` with barycentric coordinates `b`: the same Loop basis
+  functions applied to the attribute values.
+  \tparam AttributeMap a `ReadablePropertyMap` with `vertex_descriptor` as key whose value type has a `Vector_attribute_traits`
+  */
+  template <typename AttributeMap>
+  typename boost::property_traits<AttributeMap>::value_type
+  evaluate_attribute(face_descriptor f, const Barycentric_coordinates& b, AttributeMap attributes) const
+  {
+    typedef typename boost::property_traits<AttributeMap>::value_type Value;
+    const internal::Control_matrix A = indexed_->read_attributes(attributes);
+    const std::size_t fi = indexed_->index(f);
+    internal::Stencil s;
+    stencil_at(fi, b, s);
+    const int* ring = cache_->ring(fi);
+    std::vector<double> a(std::size_t(A.cols()), 0.0);
+    for(Eigen::Index c = 0; c < A.cols(); ++c)
+      for(int k = 0; k < s.m; ++k) a[std::size_t(c)] += s.row(internal::VALUE)[k] * A(ring[k], c);
+    const int corner = int(std::max_element(b.begin(), b.end()) - b.begin());
+    const Value& prototype = get(attributes, indexed_->vertex(std::size_t(indexed_->topology().face(fi)[corner])));
+    return Vector_attribute_traits<Value>::make(prototype, a.data());
+  }
+
+  /// writes the limit position of every control vertex (closed-form limit mask) into `out`,
+  /// a `WritablePropertyMap` with `vertex_descriptor` key and `Point_3` value.
+  template <typename PointOutputMap>
+  void limit_positions(PointOutputMap out) const
+  {
+    double p[3];
+    for(std::size_t i = 0; i < number_of_vertices(); ++i)
+    {
+      internal::vertex_limit_value(indexed_->topology(), X_, int(i), p);
+      put(out, indexed_->vertex(i), Point_3(p[0], p[1], p[2]));
+    }
+  }
+
+  /// writes the unit normal of the limit surface at every control vertex (closed-form tangent masks)
+  /// into `out`, a `WritablePropertyMap` with `vertex_descriptor` key and `Vector_3` value.
+  template <typename VectorOutputMap>
+  void limit_normals(VectorOutputMap out) const
+  {
+    double tu[3], tv[3], n[3];
+    for(std::size_t i = 0; i < number_of_vertices(); ++i)
+    {
+      internal::vertex_limit_tangents(indexed_->topology(), X_, int(i), tu, tv);
+      internal::cross3(tu, tv, n);
+      internal::normalize3(n);
+      put(out, indexed_->vertex(i), Vector_3(n[0], n[1], n[2]));
+    }
+  }
+
+  /// writes the limit value of an attribute at every control vertex into `out` (same key and value type as `in`).
+  template <typename AttributeMap, typename AttributeOutputMap>
+  void limit_values(AttributeMap in, AttributeOutputMap out) const
+  {
+    typedef typename boost::property_traits<AttributeMap>::value_type Value;
+    const internal::Control_matrix A = indexed_->read_attributes(in);
+    std::vector<double> a(std::size_t(A.cols()));
+    std::vector<Value> result;
+    result.reserve(number_of_vertices());
+    for(std::size_t i = 0; i < number_of_vertices(); ++i)
+    {
+      internal::vertex_limit_value(indexed_->topology(), A, int(i), a.data());
+      result.push_back(Vector_attribute_traits<Value>::make(get(in, indexed_->vertex(i)), a.data()));
+    }
+    for(std::size_t i = 0; i < number_of_vertices(); ++i) put(out, indexed_->vertex(i), result[i]);  // in may be out
+  }
+  /// @}
+
+  /// \name Integration
+  /// @{
+
+  /// the area of the limit surface, by the quadrature chosen at construction.
+  double area() const { return area_; }
+
+  /*!
+  the mass matrix \f$ M_{ij} = \int \phi_i \phi_j \, dA \f$ over the limit surface, with rows and
+  columns in the order of `vertices(tm)`. It is symmetric positive definite, has one row per control
+  vertex with non-zeros for the vertices of its 3-ring (37 on a regular mesh), and its entries sum to `area()`.
+  */
+  Eigen::SparseMatrix<double> mass_matrix() const
+  {
+    Eigen::SparseMatrix<double> M = internal::ring_sparsity_pattern(*cache_, number_of_vertices());
+    internal::assemble_mass_matrix(*cache_, X_, M);
+    return M;
+  }
+  /// @}
+
+  /// \name Resampling
+  /// @{
+
+  /*!
+  writes into the empty mesh `out` a triangulation of the limit surface at \f$2^{levels}\f$ times the
+  resolution of the control mesh: the connectivity of `levels` steps of Loop subdivision, with every
+  vertex placed exactly on the limit surface (vertices of the control mesh first, in their order,
+  then the points inside edges, then those inside faces).
+
+  \tparam OutputMesh a model of `MutableFaceGraph`
+  \cgalNamedParamsBegin
+    \cgalParamNBegin{vertex_point_map}
+      \cgalParamDescription{the point map of `out`}
+      \cgalParamDefault{`get(CGAL::vertex_point, out)`}
+    \cgalParamNEnd
+    \cgalParamNBegin{vertex_normal_map}
+      \cgalParamDescription{if given, receives the unit normal of the limit surface at each new vertex}
+      \cgalParamDefault{unused}
+    \cgalParamNEnd
+  \cgalNamedParamsEnd
+  \throws Input_error if `out` is not empty or `levels` exceeds 10.
+  */
+  template <typename OutputMesh, typename NamedParameters = parameters::Default_named_parameters>
+  void resample(unsigned levels, OutputMesh& out, const NamedParameters& np = parameters::default_values()) const
+  {
+    const internal::Resampled_surface r = resampled(levels, out, nullptr);
+    write_resampled(r, out, np, [](std::size_t, typename boost::graph_traits<OutputMesh>::vertex_descriptor) {});
+  }
+
+  /*!
+  as above, and also writes the limit values of the attribute `in` (keyed by this mesh's vertices)
+  into `out_attributes` (keyed by `out`'s vertices, same value type).
+  */
+  template <typename OutputMesh, typename AttributeMap, typename AttributeOutputMap,
+            typename NamedParameters = parameters::Default_named_parameters>
+  void resample(unsigned levels, OutputMesh& out, AttributeMap in, AttributeOutputMap out_attributes,
+                const NamedParameters& np = parameters::default_values()) const
+  {
+    typedef typename boost::property_traits<AttributeMap>::value_type Value;
+    const internal::Control_matrix A = indexed_->read_attributes(in);
+    const internal::Resampled_surface r = resampled(levels, out, &A);
+    write_resampled(r, out, np,
+      [&](std::size_t i, typename boost::graph_traits<OutputMesh>::vertex_descriptor v) {
+        const Value& prototype = get(in, indexed_->vertex(r.prototype[i]));
+        put(out_attributes, v, Vector_attribute_traits<Value>::make(prototype, r.attributes.row(Eigen::Index(i)).data()));
+      });
+  }
+  /// @}
+
+private:
+  template <typename PointMap, typename NamedParameters>
+  void init(PointMap vpm, const NamedParameters& np)
+  {
+    using parameters::choose_parameter;
+    using parameters::get_parameter;
+    internal::Quadrature_spec spec;
+    spec.degree = choose_parameter(get_parameter(np, internal_np::quadrature_degree), 8);
+    spec.tiling_depth = choose_parameter(get_parameter(np, internal_np::quadrature_tiling_depth), 0);
+    indexed_.reset(new internal::Indexed_mesh<TriangleMesh>(mesh_));
+    X_ = indexed_->read_points(vpm);
+    cache_.reset(new internal::Patch_cache(indexed_->topology()));
+    cache_->prepare_quadrature(spec);
+    area_ = internal::limit_surface_area(*cache_, X_);
+  }
+
+  void stencil_at(std::size_t fi, const Barycentric_coordinates& b, internal::Stencil& s) const
+  {
+    const double sum = b[0] + b[1] + b[2];
+    if(!(b[0] >= 0 && b[1] >= 0 && b[2] >= 0) || !(std::abs(sum - 1.0) <= 1e-12))
+      throw Input_error(Input_error::INVALID_PARAMETER, fi,
+                        "barycentric coordinates must be non-negative and sum to 1");
+    cache_->root_patch(cache_->category(fi)).stencil(b[1] / sum, b[2] / sum, s);
+  }
+
+  template <typename OutputMesh>
+  internal::Resampled_surface resampled(unsigned levels, const OutputMesh& out, const internal::Control_matrix* A) const
+  {
+    if(levels > 10)
+      throw Input_error(Input_error::INVALID_PARAMETER, Input_error::no_element,
+                        "resampling levels must not exceed 10");
+    if(num_vertices(out) != 0 || num_faces(out) != 0)
+      throw Input_error(Input_error::INVALID_PARAMETER, Input_error::no_element,
+                        "the output mesh of resample() must be empty");
+    return internal::resample_limit_surface(indexed_->topology(), *cache_, X_, A, levels);
+  }
+
+  template <typename OutputMesh, typename NamedParameters, typename AttributeWriter>
+  void write_resampled(const internal::Resampled_surface& r, OutputMesh& out, const NamedParameters& np,
+                       AttributeWriter write_attribute) const
+  {
+    using parameters::choose_parameter;
+    using parameters::get_parameter;
+    using parameters::is_default_parameter;
+    typedef typename boost::graph_traits<OutputMesh>::vertex_descriptor out_vertex;
+    typedef typename CGAL::GetVertexPointMap<OutputMesh, NamedParameters>::type Out_vpm;
+    typedef typename boost::property_traits<Out_vpm>::value_type Out_point;
+    typedef typename CGAL::Kernel_traits<Out_point>::Kernel::Vector_3 Out_vector;
+    Out_vpm ovpm = choose_parameter(get_parameter(np, CGAL::internal_np::vertex_point), get_property_map(CGAL::vertex_point, out));
+    auto onm = choose_parameter(get_parameter(np, CGAL::internal_np::vertex_normal_map),
+                                CGAL::Constant_property_map<out_vertex, Out_vector>(Out_vector(0, 0, 0)));
+    const bool with_normals = !is_default_parameter<NamedParameters, CGAL::internal_np::vertex_normal_map_t>::value;
+
+    std::vector<out_vertex> created;
+    created.reserve(std::size_t(r.positions.rows()));
+    for(Eigen::Index i = 0; i < r.positions.rows(); ++i)
+    {
+      out_vertex v = add_vertex(out);
+      put(ovpm, v, Out_point(r.positions(i, 0), r.positions(i, 1), r.positions(i, 2)));
+      if(with_normals) put(onm, v, Out_vector(r.normals(i, 0), r.normals(i, 1), r.normals(i, 2)));
+      write_attribute(std::size_t(i), v);
+      created.push_back(v);
+    }
+    for(const auto& t : r.faces)
+    {
+      const std::array<out_vertex, 3> tri = { created[t[0]], created[t[1]], created[t[2]] };
+      if(CGAL::Euler::add_face(tri, out) == boost::graph_traits<OutputMesh>::null_face())
+        throw std::logic_error("Loop_limit_surface::resample: could not add a face");
+    }
+  }
+
+  const TriangleMesh& mesh_;
+  std::unique_ptr<internal::Indexed_mesh<TriangleMesh>> indexed_;
+  std::unique_ptr<internal::Patch_cache> cache_;
+  internal::Control_matrix X_;
+  double area_ = 0;
+};
+
+} // namespace Anisotropic_fairing
+} // namespace CGAL
+
+#endif // CGAL_ANISOTROPIC_FAIRING_LOOP_LIMIT_SURFACE_H

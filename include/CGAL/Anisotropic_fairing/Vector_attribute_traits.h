@@ -1,0 +1,164 @@
+// Copyright (c) 2026 Anisotropic_fairing developers.
+// SPDX-License-Identifier: GPL-3.0-or-later
+
+#ifndef CGAL_ANISOTROPIC_FAIRING_VECTOR_ATTRIBUTE_TRAITS_H
+#define CGAL_ANISOTROPIC_FAIRING_VECTOR_ATTRIBUTE_TRAITS_H
+
+#include <CGAL/IO/Color.h>
+#include <CGAL/Kernel/global_functions.h>
+#include <CGAL/Point_2.h>
+#include <CGAL/Point_3.h>
+#include <CGAL/Vector_2.h>
+#include <CGAL/Vector_3.h>
+
+#include <Eigen/Core>
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <cstddef>
+#include <type_traits>
+#include <vector>
+
+namespace CGAL {
+namespace Anisotropic_fairing {
+
+/*!
+\ingroup PkgAnisotropicFairingLimitSurface
+
+Reads and writes the components of a per-vertex attribute value of type `V` as doubles, so that
+any vertex property map can carry a vector-valued function on the surface.
+
+Models are provided for arithmetic types, `std::array<T,N>`, `std::vector<T>`,
+`Eigen::Matrix<T,N,1>` (fixed or dynamic `N`), `CGAL::Point_2`, `CGAL::Point_3`,
+`CGAL::Vector_2`, `CGAL::Vector_3` of any kernel, and `CGAL::IO::Color` (red, green and blue, each
+clamped to 0..255 and rounded when written; alpha is kept). Specialize it for other types:
+
+\code
+template <> struct Vector_attribute_traits<My_type> {
+  static constexpr int static_dimension = 2;                    // -1 if only known at run time
+  static std::size_t dimension(const My_type& v);
+  static double get(const My_type& v, std::size_t i);
+  static My_type make(const My_type& prototype, const double* values); // a value with these components
+};
+\endcode
+`make()` receives the vertex's previous value as `prototype`, so that immutable types can be rebuilt
+and components that are not faired (such as a colour's alpha) can be kept.
+*/
+template <typename V, typename Enable = void>
+struct Vector_attribute_traits;
+
+/// \cond SKIP_IN_MANUAL
+template <typename T>
+struct Vector_attribute_traits<T, typename std::enable_if<std::is_arithmetic<T>::value>::type>
+{
+  static constexpr int static_dimension = 1;
+  static std::size_t dimension(const T&) { return 1; }
+  static double get(const T& v, std::size_t) { return double(v); }
+  static T make(const T&, const double* x)
+  {
+    if(std::is_integral<T>::value) return T(std::llround(x[0]));
+    return T(x[0]);
+  }
+};
+
+template <typename T, std::size_t N>
+struct Vector_attribute_traits<std::array<T, N>>
+{
+  static constexpr int static_dimension = int(N);
+  static std::size_t dimension(const std::array<T, N>&) { return N; }
+  static double get(const std::array<T, N>& v, std::size_t i) { return double(v[i]); }
+  static std::array<T, N> make(const std::array<T, N>& p, const double* x)
+  {
+    std::array<T, N> r;
+    for(std::size_t i = 0; i < N; ++i) r[i] = Vector_attribute_traits<T>::make(p[i], x + i);
+    return r;
+  }
+};
+
+template <typename T, typename A>
+struct Vector_attribute_traits<std::vector<T, A>>
+{
+  static constexpr int static_dimension = -1;
+  static std::size_t dimension(const std::vector<T, A>& v) { return v.size(); }
+  static double get(const std::vector<T, A>& v, std::size_t i) { return double(v[i]); }
+  static std::vector<T, A> make(const std::vector<T, A>& p, const double* x)
+  {
+    std::vector<T, A> r(p.size());
+    for(std::size_t i = 0; i < p.size(); ++i) r[i] = Vector_attribute_traits<T>::make(p[i], x + i);
+    return r;
+  }
+};
+
+template <typename T, int N, int Options, int MaxN>
+struct Vector_attribute_traits<Eigen::Matrix<T, N, 1, Options, MaxN, 1>>
+{
+  typedef Eigen::Matrix<T, N, 1, Options, MaxN, 1> V;
+  static constexpr int static_dimension = (N == Eigen::Dynamic) ? -1 : N;
+  static std::size_t dimension(const V& v) { return std::size_t(v.size()); }
+  static double get(const V& v, std::size_t i) { return double(v[Eigen::Index(i)]); }
+  static V make(const V& p, const double* x)
+  {
+    V r(p.size());
+    for(Eigen::Index i = 0; i < p.size(); ++i) r[i] = T(x[i]);
+    return r;
+  }
+};
+
+template <typename K>
+struct Vector_attribute_traits<CGAL::Point_3<K>>
+{
+  static constexpr int static_dimension = 3;
+  static std::size_t dimension(const CGAL::Point_3<K>&) { return 3; }
+  static double get(const CGAL::Point_3<K>& p, std::size_t i) { return CGAL::to_double(p[int(i)]); }
+  static CGAL::Point_3<K> make(const CGAL::Point_3<K>&, const double* x) { return CGAL::Point_3<K>(x[0], x[1], x[2]); }
+};
+
+template <typename K>
+struct Vector_attribute_traits<CGAL::Vector_3<K>>
+{
+  static constexpr int static_dimension = 3;
+  static std::size_t dimension(const CGAL::Vector_3<K>&) { return 3; }
+  static double get(const CGAL::Vector_3<K>& p, std::size_t i) { return CGAL::to_double(p[int(i)]); }
+  static CGAL::Vector_3<K> make(const CGAL::Vector_3<K>&, const double* x) { return CGAL::Vector_3<K>(x[0], x[1], x[2]); }
+};
+
+template <typename K>
+struct Vector_attribute_traits<CGAL::Point_2<K>>
+{
+  static constexpr int static_dimension = 2;
+  static std::size_t dimension(const CGAL::Point_2<K>&) { return 2; }
+  static double get(const CGAL::Point_2<K>& p, std::size_t i) { return CGAL::to_double(p[int(i)]); }
+  static CGAL::Point_2<K> make(const CGAL::Point_2<K>&, const double* x) { return CGAL::Point_2<K>(x[0], x[1]); }
+};
+
+template <typename K>
+struct Vector_attribute_traits<CGAL::Vector_2<K>>
+{
+  static constexpr int static_dimension = 2;
+  static std::size_t dimension(const CGAL::Vector_2<K>&) { return 2; }
+  static double get(const CGAL::Vector_2<K>& p, std::size_t i) { return CGAL::to_double(p[int(i)]); }
+  static CGAL::Vector_2<K> make(const CGAL::Vector_2<K>&, const double* x) { return CGAL::Vector_2<K>(x[0], x[1]); }
+};
+
+template <>
+struct Vector_attribute_traits<CGAL::IO::Color>
+{
+  static constexpr int static_dimension = 3;
+  static std::size_t dimension(const CGAL::IO::Color&) { return 3; }
+  static double get(const CGAL::IO::Color& c, std::size_t i) { return double(c[int(i)]); }
+  static CGAL::IO::Color make(const CGAL::IO::Color& p, const double* x)
+  {
+    auto channel = [](double v) {
+      if(!(v > 0)) return (unsigned char)0;          // also maps NaN to 0
+      return (unsigned char)std::lround((std::min)(v, 255.0));
+    };
+    return CGAL::IO::Color(channel(x[0]), channel(x[1]), channel(x[2]), p.alpha());
+  }
+};
+/// \endcond
+
+} // namespace Anisotropic_fairing
+} // namespace CGAL
+
+#endif // CGAL_ANISOTROPIC_FAIRING_VECTOR_ATTRIBUTE_TRAITS_H

@@ -1,0 +1,139 @@
+// Copyright (c) 2026 Anisotropic_fairing developers.
+// SPDX-License-Identifier: GPL-3.0-or-later
+//
+// The bridge from a user's FaceGraph to the index world: vertices and faces numbered in iteration
+// order, the validated Triangle_topology, and property maps read into dense matrices (with the
+// checks that keep bad input from reaching the numerics).
+
+#ifndef CGAL_ANISOTROPIC_FAIRING_INTERNAL_INDEXED_MESH_H
+#define CGAL_ANISOTROPIC_FAIRING_INTERNAL_INDEXED_MESH_H
+
+#include <CGAL/Anisotropic_fairing/Input_error.h>
+#include <CGAL/Anisotropic_fairing/Vector_attribute_traits.h>
+#include <CGAL/Anisotropic_fairing/internal/Mass_assembly.h>
+#include <CGAL/Anisotropic_fairing/internal/Triangle_topology.h>
+
+#include <CGAL/boost/graph/iterator.h>
+#include <CGAL/number_utils.h>
+
+#include <boost/graph/graph_traits.hpp>
+#include <boost/property_map/property_map.hpp>
+
+#include <cmath>
+#include <memory>
+#include <string>
+#include <unordered_map>
+#include <vector>
+
+namespace CGAL {
+namespace Anisotropic_fairing {
+namespace internal {
+
+template <typename TriangleMesh>
+class Indexed_mesh
+{
+public:
+  typedef boost::graph_traits<TriangleMesh> Graph_traits;
+  typedef typename Graph_traits::vertex_descriptor vertex_descriptor;
+  typedef typename Graph_traits::face_descriptor face_descriptor;
+  typedef typename Graph_traits::halfedge_descriptor halfedge_descriptor;
+
+  /// Numbers the elements and validates the topology (throws Input_error).
+  explicit Indexed_mesh(const TriangleMesh& tm)
+  {
+    for(vertex_descriptor v : vertices(tm))
+    {
+      vertex_index_.emplace(v, vertices_.size());
+      vertices_.push_back(v);
+    }
+    std::vector<Triangle_topology::Face> tris;
+    for(face_descriptor f : faces(tm))
+    {
+      const std::size_t fi = faces_.size();
+      face_index_.emplace(f, fi);
+      faces_.push_back(f);
+      Triangle_topology::Face t{ { -1, -1, -1 } };
+      std::size_t degree = 0;
+      for(vertex_descriptor v : CGAL::vertices_around_face(halfedge(f, tm), tm))
+      {
+        if(degree < 3) t[degree] = int(vertex_index_.at(v));
+        ++degree;
+      }
+      if(degree != 3)
+        throw Input_error(Input_error::NON_TRIANGLE_FACE, fi,
+                          "face " + std::to_string(fi) + " has " + std::to_string(degree) +
+                          " vertices; only triangle meshes are supported");
+      tris.push_back(t);
+    }
+    topology_.reset(new Triangle_topology(vertices_.size(), std::move(tris)));
+  }
+
+  const Triangle_topology& topology() const { return *topology_; }
+  std::size_t number_of_vertices() const { return vertices_.size(); }
+  std::size_t number_of_faces() const { return faces_.size(); }
+  vertex_descriptor vertex(std::size_t i) const { return vertices_[i]; }
+  face_descriptor face(std::size_t i) const { return faces_[i]; }
+  std::size_t index(vertex_descriptor v) const { return vertex_index_.at(v); }
+  std::size_t index(face_descriptor f) const { return face_index_.at(f); }
+
+  /// Reads a point map into an n x 3 matrix; throws on a non-finite coordinate.
+  template <typename PointMap>
+  Control_matrix read_points(PointMap vpm) const
+  {
+    Control_matrix X(Eigen::Index(vertices_.size()), 3);
+    for(std::size_t i = 0; i < vertices_.size(); ++i)
+    {
+      const auto& p = get(vpm, vertices_[i]);
+      for(int c = 0; c < 3; ++c)
+      {
+        const double x = CGAL::to_double(p[c]);
+        if(!std::isfinite(x))
+          throw Input_error(Input_error::NON_FINITE_COORDINATE, i,
+                            "vertex " + std::to_string(i) + " has a non-finite coordinate");
+        X(Eigen::Index(i), c) = x;
+      }
+    }
+    return X;
+  }
+
+  /// Reads an attribute map into an n x d matrix; throws if the dimension varies or a value is not finite.
+  template <typename AttributeMap>
+  Control_matrix read_attributes(AttributeMap map) const
+  {
+    typedef typename boost::property_traits<AttributeMap>::value_type Value;
+    typedef Vector_attribute_traits<Value> Traits;
+    if(vertices_.empty()) return Control_matrix();
+    const std::size_t d = Traits::dimension(get(map, vertices_[0]));
+    Control_matrix A(Eigen::Index(vertices_.size()), Eigen::Index(d));
+    for(std::size_t i = 0; i < vertices_.size(); ++i)
+    {
+      const Value& value = get(map, vertices_[i]);
+      if(Traits::dimension(value) != d)
+        throw Input_error(Input_error::ATTRIBUTE_DIMENSION, i,
+                          "the attribute of vertex " + std::to_string(i) + " has dimension " +
+                          std::to_string(Traits::dimension(value)) + " but vertex 0's has " + std::to_string(d));
+      for(std::size_t c = 0; c < d; ++c)
+      {
+        const double x = Traits::get(value, c);
+        if(!std::isfinite(x))
+          throw Input_error(Input_error::NON_FINITE_COORDINATE, i,
+                            "the attribute of vertex " + std::to_string(i) + " is not finite");
+        A(Eigen::Index(i), Eigen::Index(c)) = x;
+      }
+    }
+    return A;
+  }
+
+private:
+  std::vector<vertex_descriptor> vertices_;
+  std::vector<face_descriptor> faces_;
+  std::unordered_map<vertex_descriptor, std::size_t> vertex_index_;
+  std::unordered_map<face_descriptor, std::size_t> face_index_;
+  std::unique_ptr<Triangle_topology> topology_;
+};
+
+} // namespace internal
+} // namespace Anisotropic_fairing
+} // namespace CGAL
+
+#endif // CGAL_ANISOTROPIC_FAIRING_INTERNAL_INDEXED_MESH_H

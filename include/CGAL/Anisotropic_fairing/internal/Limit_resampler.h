@@ -1,0 +1,192 @@
+// Copyright (c) 2026 Anisotropic_fairing developers.
+// SPDX-License-Identifier: GPL-3.0-or-later
+//
+// A k-times 1-to-4 refined triangulation of the control mesh whose vertices are points of the
+// limit surface (and limit values of any attribute) at the dyadic parameters i/2^k. Same
+// connectivity as k steps of Loop subdivision; vertices are exact limit points, not level-k controls.
+
+#ifndef CGAL_ANISOTROPIC_FAIRING_INTERNAL_LIMIT_RESAMPLER_H
+#define CGAL_ANISOTROPIC_FAIRING_INTERNAL_LIMIT_RESAMPLER_H
+
+#include <CGAL/Anisotropic_fairing/internal/Mass_assembly.h>
+#include <CGAL/Anisotropic_fairing/internal/Patch_cache.h>
+#include <CGAL/Anisotropic_fairing/internal/Vertex_limit_masks.h>
+
+#include <array>
+#include <cmath>
+#include <map>
+#include <vector>
+
+namespace CGAL {
+namespace Anisotropic_fairing {
+namespace internal {
+
+struct Resampled_surface
+{
+  Control_matrix positions;            // one row per output vertex (3 columns)
+  Control_matrix normals;              // unit normals of the limit surface
+  Control_matrix attributes;           // limit values of the attribute columns (may be empty)
+  std::vector<std::size_t> prototype;  // a control vertex near each output vertex (for attribute types)
+  std::vector<std::array<std::size_t, 3>> faces;
+  // Where each output vertex lies: a control face and its (xi1, xi2).
+  std::vector<std::size_t> face;
+  std::vector<std::array<double, 2>> parameter;
+};
+
+inline void cross3(const double* a, const double* b, double* c)
+{
+  c[0] = a[1] * b[2] - a[2] * b[1];
+  c[1] = a[2] * b[0] - a[0] * b[2];
+  c[2] = a[0] * b[1] - a[1] * b[0];
+}
+
+inline void normalize3(double* n)
+{
+  const double l = std::sqrt(n[0] * n[0] + n[1] * n[1] + n[2] * n[2]);
+  if(l > 0) { n[0] /= l; n[1] /= l; n[2] /= l; }
+}
+
+/// Output vertices: the control vertices first (in their order), then N-1 points per edge, then
+/// the interior points of each face, N = 2^levels. X holds the geometry (3 columns), A optional attributes.
+inline Resampled_surface resample_limit_surface(const Triangle_topology& topo, const Patch_cache& cache,
+                                                const Control_matrix& X, const Control_matrix* A,
+                                                unsigned levels)
+{
+  const int N = 1 << levels;
+  const std::size_t nv = topo.number_of_vertices();
+  const std::size_t nf = topo.number_of_faces();
+  const Eigen::Index d = A ? A->cols() : 0;
+
+  // edge numbering: each edge is owned by its smaller halfedge
+  std::vector<std::size_t> edge_id(3 * nf, std::size_t(-1));
+  std::size_t ne = 0;
+  for(int h = 0; h < int(3 * nf); ++h)
+    if(h < topo.opposite(h)) edge_id[h] = ne++;
+  const std::size_t per_edge = std::size_t(N - 1);
+  const std::size_t per_face = std::size_t(N - 1) * std::size_t(N - 2) / 2;
+  const std::size_t edge_base = nv, face_base = nv + ne * per_edge;
+  const std::size_t n_out = face_base + nf * per_face;
+
+  Resampled_surface out;
+  out.positions.resize(Eigen::Index(n_out), 3);
+  out.normals.resize(Eigen::Index(n_out), 3);
+  if(A) out.attributes.resize(Eigen::Index(n_out), d);
+  out.prototype.resize(n_out);
+  out.face.resize(n_out);
+  out.parameter.resize(n_out);
+
+  // lattice index (i, j), 0 <= i + j <= N, of face f -> output vertex
+  auto lattice_vertex = [&](std::size_t f, int i, int j) -> std::size_t {
+    const auto& t = topo.face(f);
+    if(i == 0 && j == 0) return std::size_t(t[0]);
+    if(i == N && j == 0) return std::size_t(t[1]);
+    if(i == 0 && j == N) return std::size_t(t[2]);
+    int h = -1, step = 0;
+    if(j == 0)          { h = int(3 * f);     step = i; }
+    else if(i + j == N) { h = int(3 * f) + 1; step = j; }
+    else if(i == 0)     { h = int(3 * f) + 2; step = N - j; }
+    if(h >= 0)
+    {
+      if(h < topo.opposite(h)) return edge_base + edge_id[h] * per_edge + std::size_t(step - 1);
+      return edge_base + edge_id[topo.opposite(h)] * per_edge + std::size_t(N - step - 1);
+    }
+    // interior: rows j = 1..N-2, i = 1..N-1-j
+    const std::size_t before = std::size_t(j - 1) * std::size_t(2 * N - 2 - j) / 2;   // sum_{r<j} (N-1-r)
+    return face_base + f * per_face + before + std::size_t(i - 1);
+  };
+  auto owns = [&](std::size_t f, int i, int j) {
+    // the face evaluates its interior points and the edge points of the edges it owns
+    if(j == 0)          return int(3 * f) < topo.opposite(int(3 * f));
+    if(i + j == N)      return int(3 * f) + 1 < topo.opposite(int(3 * f) + 1);
+    if(i == 0)          return int(3 * f) + 2 < topo.opposite(int(3 * f) + 2);
+    return true;
+  };
+
+  // control vertices: closed-form limit masks
+  std::vector<double> tu(3), tv(3), tmp(std::max<Eigen::Index>(d, 3));
+  for(std::size_t v = 0; v < nv; ++v)
+  {
+    vertex_limit_value(topo, X, int(v), out.positions.row(Eigen::Index(v)).data());
+    vertex_limit_tangents(topo, X, int(v), tu.data(), tv.data());
+    double n[3];
+    cross3(tu.data(), tv.data(), n);
+    normalize3(n);
+    for(int c = 0; c < 3; ++c) out.normals(Eigen::Index(v), c) = n[c];
+    if(A) vertex_limit_value(topo, *A, int(v), out.attributes.row(Eigen::Index(v)).data());
+    out.prototype[v] = v;
+    const int f = topo.face_of(topo.outgoing(int(v)));
+    const auto& t = topo.face(std::size_t(f));
+    const int corner = (t[0] == int(v)) ? 0 : (t[1] == int(v)) ? 1 : 2;
+    out.face[v] = std::size_t(f);
+    out.parameter[v] = { corner == 1 ? 1.0 : 0.0, corner == 2 ? 1.0 : 0.0 };
+  }
+
+  // lattice stencils, once per category
+  std::map<int, std::vector<Stencil>> lattice;
+  auto lattice_stencils = [&](int c) -> const std::vector<Stencil>& {
+    auto it = lattice.find(c);
+    if(it != lattice.end()) return it->second;
+    std::vector<Stencil>& s = lattice[c];
+    const Loop_local_patch root = cache.root_patch(c);
+    s.resize(std::size_t(N + 1) * std::size_t(N + 1));
+    for(int j = 0; j <= N; ++j)
+      for(int i = 0; i + j <= N; ++i)
+        if(!((i == 0 && j == 0) || (i == N && j == 0) || (i == 0 && j == N)))
+          root.stencil(double(i) / N, double(j) / N, s[std::size_t(j) * (N + 1) + i]);
+    return s;
+  };
+
+  for(std::size_t f = 0; f < nf; ++f)
+  {
+    const std::vector<Stencil>& S = lattice_stencils(cache.category(f));
+    const int* ring = cache.ring(f);
+    for(int j = 0; j <= N; ++j)
+      for(int i = 0; i + j <= N; ++i)
+      {
+        if((i == 0 && j == 0) || (i == N && j == 0) || (i == 0 && j == N)) continue;
+        if(!owns(f, i, j)) continue;
+        const std::size_t o = lattice_vertex(f, i, j);
+        const Stencil& s = S[std::size_t(j) * (N + 1) + i];
+        double p[3] = { 0, 0, 0 }, t1[3] = { 0, 0, 0 }, t2[3] = { 0, 0, 0 };
+        for(int k = 0; k < s.m; ++k)
+          for(int c = 0; c < 3; ++c)
+          {
+            const double x = X(ring[k], c);
+            p[c] += s.row(VALUE)[k] * x;
+            t1[c] += s.row(D1)[k] * x;
+            t2[c] += s.row(D2)[k] * x;
+          }
+        double n[3];
+        cross3(t1, t2, n);
+        normalize3(n);
+        for(int c = 0; c < 3; ++c) { out.positions(Eigen::Index(o), c) = p[c]; out.normals(Eigen::Index(o), c) = n[c]; }
+        if(A)
+          for(Eigen::Index c = 0; c < d; ++c)
+          {
+            double a = 0;
+            for(int k = 0; k < s.m; ++k) a += s.row(VALUE)[k] * (*A)(ring[k], c);
+            out.attributes(Eigen::Index(o), c) = a;
+          }
+        // nearest corner's control vertex as the prototype of attribute values
+        const double b[3] = { double(N - i - j), double(i), double(j) };
+        const int corner = int(std::max_element(b, b + 3) - b);
+        out.prototype[o] = std::size_t(topo.face(f)[corner]);
+        out.face[o] = f;
+        out.parameter[o] = { double(i) / N, double(j) / N };
+      }
+    for(int j = 0; j < N; ++j)
+      for(int i = 0; i + j < N; ++i)
+      {
+        out.faces.push_back({ lattice_vertex(f, i, j), lattice_vertex(f, i + 1, j), lattice_vertex(f, i, j + 1) });
+        if(i + j + 2 <= N)
+          out.faces.push_back({ lattice_vertex(f, i + 1, j), lattice_vertex(f, i + 1, j + 1), lattice_vertex(f, i, j + 1) });
+      }
+  }
+  return out;
+}
+
+} // namespace internal
+} // namespace Anisotropic_fairing
+} // namespace CGAL
+
+#endif // CGAL_ANISOTROPIC_FAIRING_INTERNAL_LIMIT_RESAMPLER_H

@@ -1,0 +1,365 @@
+// Copyright (c) 2026 Anisotropic_fairing developers.
+// SPDX-License-Identifier: GPL-3.0-or-later
+//
+// Evaluation of one triangle's Loop limit patch by local subdivision of the triangle's own 1-ring.
+//
+// The patch of a triangle t = (a, b, c) is controlled by ring(t), the vertices of all triangles
+// incident to a, b or c. If a, b and c have valence 6 it is the quartic box spline (Loop_box_spline).
+// Otherwise the ring is subdivided locally, the child containing the parameter point is kept, and
+// so on until the child is regular. With one extraordinary vertex this is Stam's scheme; with two
+// or three it branches at the first level. The user's mesh is never changed: a patch is a set of
+// local triangles plus a dense matrix W saying how each local vertex combines the root controls.
+// (loop-fem.md section 4; Bajaj & Xu 2003 section 3.3 with its two errata avoided.)
+
+#ifndef CGAL_ANISOTROPIC_FAIRING_INTERNAL_LOOP_LOCAL_PATCH_H
+#define CGAL_ANISOTROPIC_FAIRING_INTERNAL_LOOP_LOCAL_PATCH_H
+
+#include <CGAL/Anisotropic_fairing/internal/Loop_box_spline.h>
+#include <CGAL/Anisotropic_fairing/internal/Loop_rules.h>
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <stdexcept>
+#include <utility>
+#include <vector>
+
+namespace CGAL {
+namespace Anisotropic_fairing {
+namespace internal {
+
+/// Weights of a limit-surface quantity on a ring: rows VALUE..D22 (see Stencil_row), m columns.
+struct Stencil
+{
+  int m = 0;
+  std::vector<double> w;      // STENCIL_ROWS x m, row-major
+  bool singular = false;      // at (or within 2^-max_depth of) an extraordinary vertex: the
+                              // second-derivative rows are zero and D1, D2 are tangent-mask
+                              // directions rather than parametric derivatives (which degenerate there)
+
+  void resize(int m_) { m = m_; w.assign(std::size_t(STENCIL_ROWS) * m, 0.0); singular = false; }
+  double* row(int r) { return w.data() + std::size_t(r) * m; }
+  const double* row(int r) const { return w.data() + std::size_t(r) * m; }
+};
+
+/// Which child of a 1-to-4 split: the children at corners a, b, c, and the middle one.
+enum Child { CHILD_A = 0, CHILD_B = 1, CHILD_C = 2, CHILD_M = 3 };
+
+class Loop_local_patch
+{
+public:
+  typedef std::array<int, 3> Tri;
+
+  /// The root patch: local vertex j is control j (W = identity); `tris` are oriented triangles in
+  /// local ids and must contain every triangle incident to the target's vertices (closed fans).
+  Loop_local_patch(int m, std::vector<Tri> tris, const Tri& target)
+    : m_(m), nl_(m), W_(std::size_t(m) * m, 0.0), tris_(std::move(tris)), target_(target)
+  {
+    for(int j = 0; j < m; ++j) W_[std::size_t(j) * m + j] = 1.0;
+    build_adjacency();
+  }
+
+  int number_of_controls() const { return m_; }
+  int number_of_local_vertices() const { return nl_; }
+  const Tri& target() const { return target_; }
+  const std::vector<Tri>& triangles() const { return tris_; }
+  const double* weights(int local) const { return W_.data() + std::size_t(local) * m_; }
+
+  int valence(int v) const { return valence_[v]; }
+
+  bool is_regular() const
+  {
+    return valence_[target_[0]] == 6 && valence_[target_[1]] == 6 && valence_[target_[2]] == 6;
+  }
+
+  /// Third vertex of the triangle containing the directed edge p -> q, or -1.
+  int third(int p, int q) const { return third_[std::size_t(p) * nl_ + q]; }
+
+  /// The vertex opposite to r across the edge {p, q}.
+  int opp(int p, int q, int r) const
+  {
+    const int x = third(p, q);
+    const int y = third(q, p);
+    const int o = (x == r) ? y : x;
+    if(o < 0 || (x != r && y != r))
+      throw std::logic_error("Loop_local_patch: open fan or inconsistent local triangles");
+    return o;
+  }
+
+  /// Neighbours of target vertex v counter-clockwise, starting at `start`.
+  std::vector<int> neighbours_ccw(int v, int start) const
+  {
+    std::vector<int> out;
+    int w = start;
+    do {
+      out.push_back(w);
+      w = third(v, w);
+      if(w < 0) throw std::logic_error("Loop_local_patch: open fan");
+    } while(w != start && int(out.size()) <= valence_[v]);
+    return out;
+  }
+
+  /// The 12 local ids of a regular patch in box-spline order (loop-fem.md section 2).
+  std::array<int, 12> layout12() const
+  {
+    std::array<int, 13> L{};
+    L[4] = target_[0]; L[7] = target_[1]; L[8] = target_[2];
+    L[3] = opp(L[4], L[7], L[8]);
+    L[5] = opp(L[4], L[8], L[7]);
+    L[11] = opp(L[7], L[8], L[4]);
+    L[1] = opp(L[4], L[3], L[7]);
+    L[2] = opp(L[4], L[5], L[8]);
+    L[6] = opp(L[7], L[3], L[4]);
+    L[10] = opp(L[7], L[11], L[8]);
+    L[12] = opp(L[8], L[11], L[7]);
+    L[9] = opp(L[8], L[12], L[11]);
+    std::array<int, 12> out;
+    for(int i = 0; i < 12; ++i) out[i] = L[i + 1];
+    return out;
+  }
+
+  /// One step of Loop subdivision restricted to what the child's 1-ring needs.
+  Loop_local_patch child(Child which) const
+  {
+    Loop_local_patch c;
+    c.m_ = m_;
+    std::vector<int> vertex_point(nl_, -1);
+    std::vector<int> edge_point(std::size_t(nl_) * nl_, -1);   // symmetric, by local ids
+    std::vector<double> rows;                                    // new W, grown row by row
+
+    auto new_row = [&]() -> int {
+      rows.resize(rows.size() + m_, 0.0);
+      return int(rows.size() / m_) - 1;
+    };
+    auto axpy = [&](int dst, double s, int src) {
+      double* d = rows.data() + std::size_t(dst) * m_;
+      const double* x = W_.data() + std::size_t(src) * m_;
+      for(int j = 0; j < m_; ++j) d[j] += s * x[j];
+    };
+
+    auto is_target = [&](int v) { return v == target_[0] || v == target_[1] || v == target_[2]; };
+
+    // vertex points of a, b, c
+    for(int k = 0; k < 3; ++k)
+    {
+      const int v = target_[k];
+      const int n = valence_[v];
+      const double beta = loop_vertex_weight(n);
+      const int r = new_row();
+      axpy(r, 1.0 - n * beta, v);
+      for(int w : neighbours_ccw(v, first_neighbour(v))) axpy(r, beta, w);
+      vertex_point[v] = r;
+    }
+    // edge points of every edge incident to a, b or c
+    for(const Tri& t : tris_)
+      for(int e = 0; e < 3; ++e)
+      {
+        const int p = t[e], q = t[(e + 1) % 3];
+        if(!is_target(p) && !is_target(q)) continue;
+        int& slot = edge_point[std::size_t(std::min(p, q)) * nl_ + std::max(p, q)];
+        if(slot >= 0) continue;
+        const int x = third(p, q), y = third(q, p);
+        if(x < 0 || y < 0) throw std::logic_error("Loop_local_patch: open fan at an edge");
+        slot = new_row();
+        axpy(slot, 3.0 / 8.0, p); axpy(slot, 3.0 / 8.0, q);
+        axpy(slot, 1.0 / 8.0, x); axpy(slot, 1.0 / 8.0, y);
+      }
+    auto ep = [&](int p, int q) { return edge_point[std::size_t(std::min(p, q)) * nl_ + std::max(p, q)]; };
+
+    // children of every local triangle whose three vertices were computed
+    std::vector<Tri> kids;
+    for(const Tri& t : tris_)
+    {
+      const int i = t[0], j = t[1], k = t[2];
+      const int vi = vertex_point[i], vj = vertex_point[j], vk = vertex_point[k];
+      const int eij = ep(i, j), ejk = ep(j, k), eki = ep(k, i);
+      const Tri cand[4] = { {vi, eij, eki}, {vj, ejk, eij}, {vk, eki, ejk}, {eij, ejk, eki} };
+      for(const Tri& ct : cand)
+        if(ct[0] >= 0 && ct[1] >= 0 && ct[2] >= 0) kids.push_back(ct);
+    }
+
+    const int a = target_[0], b = target_[1], cc = target_[2];
+    Tri nt;
+    switch(which)
+    {
+      case CHILD_A: nt = { vertex_point[a], ep(a, b), ep(cc, a) }; break;
+      case CHILD_B: nt = { ep(a, b), vertex_point[b], ep(b, cc) }; break;
+      case CHILD_C: nt = { ep(cc, a), ep(b, cc), vertex_point[cc] }; break;
+      default:      nt = { ep(b, cc), ep(cc, a), ep(a, b) }; break;
+    }
+
+    // keep the triangles incident to the new target, and compact the vertex ids
+    const int total = int(rows.size() / m_);
+    std::vector<int> remap(total, -1);
+    int used = 0;
+    for(int k = 0; k < 3; ++k) remap[nt[k]] = used++;   // target first: ids 0, 1, 2
+    for(const Tri& t : kids)
+    {
+      const bool incident = (t[0] == nt[0] || t[0] == nt[1] || t[0] == nt[2] ||
+                             t[1] == nt[0] || t[1] == nt[1] || t[1] == nt[2] ||
+                             t[2] == nt[0] || t[2] == nt[1] || t[2] == nt[2]);
+      if(!incident) continue;
+      Tri r;
+      for(int k = 0; k < 3; ++k)
+      {
+        if(remap[t[k]] < 0) remap[t[k]] = used++;
+        r[k] = remap[t[k]];
+      }
+      c.tris_.push_back(r);
+    }
+    c.nl_ = used;
+    c.W_.assign(std::size_t(used) * m_, 0.0);
+    for(int old = 0; old < total; ++old)
+      if(remap[old] >= 0)
+        std::copy(rows.begin() + std::size_t(old) * m_, rows.begin() + std::size_t(old + 1) * m_,
+                  c.W_.begin() + std::size_t(remap[old]) * m_);
+    c.target_ = { 0, 1, 2 };
+    c.build_adjacency();
+    return c;
+  }
+
+  /// Parameters in the child that contains (u, v), and the derivative factor d(child)/d(parent).
+  static Child locate(double& u, double& v, double& factor)
+  {
+    if(u >= 0.5)            { u = 2 * u - 1; v = 2 * v;     factor = 2;  return CHILD_B; }
+    if(v >= 0.5)            { u = 2 * u;     v = 2 * v - 1; factor = 2;  return CHILD_C; }
+    if(u + v <= 0.5)        { u = 2 * u;     v = 2 * v;     factor = 2;  return CHILD_A; }
+    u = 1 - 2 * u; v = 1 - 2 * v; factor = -2; return CHILD_M;
+  }
+
+  /// Stencil of a regular patch at (u, v): box-spline rows times W on the 12-vertex layout.
+  void regular_stencil(double u, double v, Stencil& s) const
+  {
+    Box_spline_values B;
+    Loop_box_spline::evaluate(u, v, B);
+    const std::array<int, 12> L = layout12();
+    s.resize(m_);
+    for(int r = 0; r < STENCIL_ROWS; ++r)
+    {
+      double* out = s.row(r);
+      for(int i = 0; i < 12; ++i)
+      {
+        const double bi = B[r][i];
+        if(bi == 0) continue;
+        const double* w = weights(L[i]);
+        for(int j = 0; j < m_; ++j) out[j] += bi * w[j];
+      }
+    }
+  }
+
+  /// Limit point and tangent-mask directions at target corner k (0, 1, 2) of an extraordinary
+  /// vertex. D1/D2 are the derivatives of a regular reparametrisation (exact for valence 6), mapped
+  /// to this patch's (xi1, xi2) orientation; second derivatives are left at zero.
+  void corner_stencil(int k, Stencil& s) const
+  {
+    s.resize(m_);
+    s.singular = true;
+    const int v = target_[k];
+    const int n = valence_[v];
+    const int start = target_[(k + 1) % 3];       // next corner: CCW after it comes target[(k+2)%3]
+    const std::vector<int> nb = neighbours_ccw(v, start);
+    const double chi = loop_limit_weight(n);
+    std::vector<double> t1(m_, 0.0), t2(m_, 0.0);
+    double* val = s.row(VALUE);
+    const double* wv = weights(v);
+    for(int j = 0; j < m_; ++j) val[j] = (1.0 - n * chi) * wv[j];
+    for(int i = 0; i < n; ++i)
+    {
+      const double* w = weights(nb[i]);
+      const double c1 = (2.0 / n) * std::cos(2.0 * loop_pi() * i / n);
+      const double c2 = (2.0 / n) * std::cos(2.0 * loop_pi() * (i - 1) / n);
+      for(int j = 0; j < m_; ++j)
+      {
+        val[j] += chi * w[j];
+        t1[j] += c1 * w[j];
+        t2[j] += c2 * w[j];
+      }
+    }
+    // (s1, s2) are the parameters of the rotated triangle that starts at corner k.
+    double* d1 = s.row(D1);
+    double* d2 = s.row(D2);
+    for(int j = 0; j < m_; ++j)
+    {
+      switch(k)
+      {
+        case 0: d1[j] = t1[j];          d2[j] = t2[j];          break;
+        case 1: d1[j] = -t2[j];         d2[j] = t1[j] - t2[j];  break;  // s = (xi2, 1 - xi1 - xi2)
+        default: d1[j] = -t1[j] + t2[j]; d2[j] = -t1[j];        break;  // s = (1 - xi1 - xi2, xi1)
+      }
+    }
+  }
+
+  /// Evaluates the patch at (u, v) = (xi1, xi2) in the closed unit triangle.
+  void stencil(double u, double v, Stencil& s, int max_depth = 48) const
+  {
+    // exactly at an extraordinary corner, the recursion would never reach a regular patch
+    const int corner = (u == 0 && v == 0) ? 0 : (u == 1 && v == 0) ? 1 : (u == 0 && v == 1) ? 2 : -1;
+    if(corner >= 0 && valence_[target_[corner]] != 6) { corner_stencil(corner, s); return; }
+    if(is_regular()) { regular_stencil(u, v, s); return; }
+
+    double factor = 1;
+    const Loop_local_patch* p = this;
+    Loop_local_patch current;
+    int depth = 0;
+    while(!p->is_regular())
+    {
+      if(depth == max_depth)
+      {
+        // closer than 2^-max_depth to an extraordinary vertex: evaluate at that vertex
+        const double b[3] = { 1 - u - v, u, v };
+        const int k = int(std::max_element(b, b + 3) - b);
+        p->corner_stencil(k, s);
+        for(int r = D1; r <= D2; ++r) for(int j = 0; j < m_; ++j) s.row(r)[j] *= factor;
+        return;
+      }
+      double f;
+      const Child which = locate(u, v, f);
+      current = p->child(which);
+      p = &current;
+      factor *= f;
+      ++depth;
+    }
+    p->regular_stencil(u, v, s);
+    for(int j = 0; j < m_; ++j)
+    {
+      s.row(D1)[j] *= factor;  s.row(D2)[j] *= factor;
+      s.row(D11)[j] *= factor * factor;  s.row(D12)[j] *= factor * factor;  s.row(D22)[j] *= factor * factor;
+    }
+  }
+
+  Loop_local_patch() = default;
+
+private:
+  int first_neighbour(int v) const
+  {
+    for(const Tri& t : tris_)
+      for(int k = 0; k < 3; ++k)
+        if(t[k] == v) return t[(k + 1) % 3];
+    throw std::logic_error("Loop_local_patch: vertex without triangle");
+  }
+
+  void build_adjacency()
+  {
+    third_.assign(std::size_t(nl_) * nl_, -1);
+    valence_.assign(nl_, 0);
+    for(const Tri& t : tris_)
+      for(int k = 0; k < 3; ++k)
+      {
+        third_[std::size_t(t[k]) * nl_ + t[(k + 1) % 3]] = t[(k + 2) % 3];
+        ++valence_[t[k]];
+      }
+  }
+
+  int m_ = 0, nl_ = 0;
+  std::vector<double> W_;
+  std::vector<Tri> tris_;
+  Tri target_{ { 0, 1, 2 } };
+  std::vector<int> third_;
+  std::vector<int> valence_;   // number of local triangles at each local vertex (the valence for closed fans)
+};
+
+} // namespace internal
+} // namespace Anisotropic_fairing
+} // namespace CGAL
+
+#endif // CGAL_ANISOTROPIC_FAIRING_INTERNAL_LOOP_LOCAL_PATCH_H

@@ -1,0 +1,76 @@
+// Copyright (c) 2026 Anisotropic_fairing developers.
+// SPDX-License-Identifier: GPL-3.0-or-later
+//
+// The sparsity of the Loop finite-element matrices: M_ij can be non-zero iff i and j belong to a
+// common triangle ring (i.e. j is in the 3-ring of i). The pattern depends on topology only, so it
+// is built once and every later assembly only adds into its values.
+
+#ifndef CGAL_ANISOTROPIC_FAIRING_INTERNAL_SPARSE_PATTERN_H
+#define CGAL_ANISOTROPIC_FAIRING_INTERNAL_SPARSE_PATTERN_H
+
+#include <CGAL/Anisotropic_fairing/internal/Patch_cache.h>
+
+#include <Eigen/SparseCore>
+
+#include <algorithm>
+#include <vector>
+
+namespace CGAL {
+namespace Anisotropic_fairing {
+namespace internal {
+
+/// Returns an n x n compressed, symmetric matrix whose structural non-zeros are all pairs of
+/// vertices sharing a triangle ring, with zero values.
+inline Eigen::SparseMatrix<double> ring_sparsity_pattern(const Patch_cache& cache, std::size_t n)
+{
+  // faces whose ring contains each vertex (CSR)
+  std::vector<std::size_t> start(n + 1, 0);
+  for(std::size_t f = 0; f < cache.number_of_faces(); ++f)
+    for(int k = 0; k < cache.ring_size(f); ++k) ++start[cache.ring(f)[k] + 1];
+  for(std::size_t i = 0; i < n; ++i) start[i + 1] += start[i];
+  std::vector<int> faces_of(start[n]);
+  std::vector<std::size_t> fill(start.begin(), start.end() - 1);
+  for(std::size_t f = 0; f < cache.number_of_faces(); ++f)
+    for(int k = 0; k < cache.ring_size(f); ++k) faces_of[fill[cache.ring(f)[k]]++] = int(f);
+
+  const Eigen::Index size = Eigen::Index(n);
+  Eigen::SparseMatrix<double> M(size, size);
+  std::vector<int> nnz(n, 0);
+  std::vector<int> mark(n, -1);
+  std::vector<std::vector<int>> cols(n);
+  for(std::size_t j = 0; j < n; ++j)
+  {
+    std::vector<int>& c = cols[j];
+    for(std::size_t p = start[j]; p < start[j + 1]; ++p)
+    {
+      const int f = faces_of[p];
+      for(int k = 0; k < cache.ring_size(f); ++k)
+      {
+        const int i = cache.ring(f)[k];
+        if(mark[i] != int(j)) { mark[i] = int(j); c.push_back(i); }
+      }
+    }
+    std::sort(c.begin(), c.end());
+    nnz[j] = int(c.size());
+  }
+  M.reserve(nnz);
+  for(std::size_t j = 0; j < n; ++j)
+    for(int i : cols[j]) M.insert(i, Eigen::Index(j)) = 0.0;
+  M.makeCompressed();
+  return M;
+}
+
+/// Position of entry (i, j) in the value array of a compressed column-major matrix (must exist).
+inline Eigen::Index sparse_entry_position(const Eigen::SparseMatrix<double>& M, int i, int j)
+{
+  const int* rows = M.innerIndexPtr();
+  const int* b = rows + M.outerIndexPtr()[j];
+  const int* e = rows + M.outerIndexPtr()[j + 1];
+  return Eigen::Index(std::lower_bound(b, e, i) - rows);
+}
+
+} // namespace internal
+} // namespace Anisotropic_fairing
+} // namespace CGAL
+
+#endif // CGAL_ANISOTROPIC_FAIRING_INTERNAL_SPARSE_PATTERN_H

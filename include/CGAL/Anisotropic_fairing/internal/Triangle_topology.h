@@ -1,0 +1,138 @@
+// Copyright (c) 2026 Anisotropic_fairing developers.
+// SPDX-License-Identifier: GPL-3.0-or-later
+//
+// A compact, index-based halfedge view of a closed, manifold triangle mesh. Every later stage
+// (patch categories, assembly) works on indices only, so it does not depend on the FaceGraph
+// model, and a ghost layer can later extend it without touching the user's mesh.
+
+#ifndef CGAL_ANISOTROPIC_FAIRING_INTERNAL_TRIANGLE_TOPOLOGY_H
+#define CGAL_ANISOTROPIC_FAIRING_INTERNAL_TRIANGLE_TOPOLOGY_H
+
+#include <CGAL/Anisotropic_fairing/Input_error.h>
+
+#include <algorithm>
+#include <array>
+#include <cstdint>
+#include <string>
+#include <unordered_map>
+#include <vector>
+
+namespace CGAL {
+namespace Anisotropic_fairing {
+namespace internal {
+
+/// Halfedge h = 3f + c goes from faces[f][c] to faces[f][(c+1)%3].
+class Triangle_topology
+{
+public:
+  typedef std::array<int, 3> Face;
+
+  /// Builds and validates the topology. Throws `Input_error` naming the first offending element.
+  Triangle_topology(std::size_t number_of_vertices, std::vector<Face> faces)
+    : faces_(std::move(faces)), n_vertices_(number_of_vertices)
+  {
+    if(faces_.empty())
+      throw Input_error(Input_error::EMPTY_MESH, Input_error::no_element, "the mesh has no face");
+    build();
+  }
+
+  std::size_t number_of_vertices() const { return n_vertices_; }
+  std::size_t number_of_faces() const { return faces_.size(); }
+  const Face& face(std::size_t f) const { return faces_[f]; }
+  const std::vector<Face>& faces() const { return faces_; }
+
+  int source(int h) const { return faces_[h / 3][h % 3]; }
+  int target(int h) const { return faces_[h / 3][(h % 3 + 1) % 3]; }
+  int next(int h) const { return 3 * (h / 3) + (h % 3 + 1) % 3; }
+  int prev(int h) const { return 3 * (h / 3) + (h % 3 + 2) % 3; }
+  int opposite(int h) const { return opposite_[h]; }
+  int face_of(int h) const { return h / 3; }
+  /// Next outgoing halfedge counter-clockwise around source(h).
+  int ccw(int h) const { return opposite_[prev(h)]; }
+  /// One outgoing halfedge of vertex v.
+  int outgoing(int v) const { return out_[v]; }
+  int valence(int v) const { return valence_[v]; }
+
+  /// Neighbours of v in counter-clockwise order, starting at target(h0) (h0 outgoing from v).
+  template <class Output>
+  void neighbours_ccw(int h0, Output out) const
+  {
+    int h = h0;
+    do { *out++ = target(h); h = ccw(h); } while(h != h0);
+  }
+
+private:
+  static std::uint64_t key(int a, int b)
+  {
+    return (std::uint64_t(std::uint32_t(a)) << 32) | std::uint32_t(b);
+  }
+
+  void build()
+  {
+    const std::size_t nh = 3 * faces_.size();
+    opposite_.assign(nh, -1);
+    out_.assign(n_vertices_, -1);
+    std::vector<int> outgoing_count(n_vertices_, 0);
+
+    for(std::size_t f = 0; f < faces_.size(); ++f)
+    {
+      const Face& t = faces_[f];
+      if(t[0] == t[1] || t[1] == t[2] || t[2] == t[0])
+        throw Input_error(Input_error::DEGENERATE_FACE, f,
+                          "face " + std::to_string(f) + " uses vertex " +
+                          std::to_string(t[0] == t[1] || t[0] == t[2] ? t[0] : t[1]) + " twice");
+    }
+
+    std::unordered_map<std::uint64_t, int> directed;
+    directed.reserve(nh * 2);
+    for(int h = 0; h < int(nh); ++h)
+    {
+      const int s = source(h), t = target(h);
+      if(!directed.emplace(key(s, t), h).second)
+        throw Input_error(Input_error::NON_MANIFOLD_EDGE, std::size_t(s),
+                          "the edge between vertices " + std::to_string(s) + " and " + std::to_string(t) +
+                          " is used by more than two faces, twice in the same direction, or twice");
+      out_[s] = h;
+      ++outgoing_count[s];
+    }
+    for(int h = 0; h < int(nh); ++h)
+    {
+      auto it = directed.find(key(target(h), source(h)));
+      if(it == directed.end())
+        throw Input_error(Input_error::BORDER_EDGE, std::size_t(source(h)),
+                          "the edge between vertices " + std::to_string(source(h)) + " and " +
+                          std::to_string(target(h)) + " is a border edge; this operation needs a closed mesh");
+      opposite_[h] = it->second;
+    }
+
+    valence_.assign(n_vertices_, 0);
+    for(std::size_t v = 0; v < n_vertices_; ++v)
+    {
+      if(out_[v] < 0)
+        throw Input_error(Input_error::ISOLATED_VERTEX, v,
+                          "vertex " + std::to_string(v) + " has no incident face");
+      int n = 0, h = out_[v];
+      do { ++n; h = ccw(h); } while(h != out_[v] && n <= outgoing_count[v]);
+      if(n != outgoing_count[v])
+        throw Input_error(Input_error::NON_MANIFOLD_VERTEX, v,
+                          "vertex " + std::to_string(v) + " is non-manifold (its faces form more than one fan)");
+      if(n < 3)
+        throw Input_error(Input_error::LOW_VALENCE_VERTEX, v,
+                          "vertex " + std::to_string(v) + " has valence " + std::to_string(n) +
+                          "; Loop subdivision needs valence 3 or more");
+      valence_[v] = n;
+    }
+  }
+
+  std::vector<Face> faces_;
+  std::size_t n_vertices_;
+  std::vector<int> opposite_;
+  std::vector<int> out_;
+  std::vector<int> valence_;
+};
+
+} // namespace internal
+} // namespace Anisotropic_fairing
+} // namespace CGAL
+
+#endif // CGAL_ANISOTROPIC_FAIRING_INTERNAL_TRIANGLE_TOPOLOGY_H
