@@ -221,12 +221,10 @@ public:
   template <typename VectorOutputMap>
   void limit_normals(VectorOutputMap out) const
   {
-    double tu[3], tv[3], n[3];
+    double n[3];
     for(std::size_t i = 0; i < number_of_vertices(); ++i)
     {
-      internal::vertex_limit_tangents(indexed_->topology(), X_, int(i), tu, tv);
-      internal::cross3(tu, tv, n);
-      internal::normalize3(n);
+      internal::vertex_limit_normal(indexed_->topology(), X_, int(i), n);
       put(out, indexed_->vertex(i), Vector_3(n[0], n[1], n[2]));
     }
   }

@@ -33,19 +33,6 @@ struct Resampled_surface
   std::vector<std::array<double, 2>> parameter;
 };
 
-inline void cross3(const double* a, const double* b, double* c)
-{
-  c[0] = a[1] * b[2] - a[2] * b[1];
-  c[1] = a[2] * b[0] - a[0] * b[2];
-  c[2] = a[0] * b[1] - a[1] * b[0];
-}
-
-inline void normalize3(double* n)
-{
-  const double l = std::sqrt(n[0] * n[0] + n[1] * n[1] + n[2] * n[2]);
-  if(l > 0) { n[0] /= l; n[1] /= l; n[2] /= l; }
-}
-
 /// Output vertices: the control vertices first (in their order), then N-1 points per edge, then
 /// the interior points of each face, N = 2^levels. X holds the geometry (3 columns), A optional attributes.
 inline Resampled_surface resample_limit_surface(const Triangle_topology& topo, const Patch_cache& cache,
@@ -103,14 +90,11 @@ inline Resampled_surface resample_limit_surface(const Triangle_topology& topo, c
   };
 
   // control vertices: closed-form limit masks
-  std::vector<double> tu(3), tv(3), tmp(std::max<Eigen::Index>(d, 3));
   for(std::size_t v = 0; v < nv; ++v)
   {
     vertex_limit_value(topo, X, int(v), out.positions.row(Eigen::Index(v)).data());
-    vertex_limit_tangents(topo, X, int(v), tu.data(), tv.data());
     double n[3];
-    cross3(tu.data(), tv.data(), n);
-    normalize3(n);
+    vertex_limit_normal(topo, X, int(v), n);
     for(int c = 0; c < 3; ++c) out.normals(Eigen::Index(v), c) = n[c];
     if(A) vertex_limit_value(topo, *A, int(v), out.attributes.row(Eigen::Index(v)).data());
     out.prototype[v] = v;

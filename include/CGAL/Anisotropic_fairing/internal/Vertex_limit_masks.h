@@ -17,6 +17,19 @@ namespace CGAL {
 namespace Anisotropic_fairing {
 namespace internal {
 
+inline void cross3(const double* a, const double* b, double* c)
+{
+  c[0] = a[1] * b[2] - a[2] * b[1];
+  c[1] = a[2] * b[0] - a[0] * b[2];
+  c[2] = a[0] * b[1] - a[1] * b[0];
+}
+
+inline void normalize3(double* n)
+{
+  const double l = std::sqrt(n[0] * n[0] + n[1] * n[1] + n[2] * n[2]);
+  if(l > 0) { n[0] /= l; n[1] /= l; n[2] /= l; }
+}
+
 /// out = limit position of vertex v: (1 - n chi) x_v + chi sum of the neighbours (kappa values).
 inline void vertex_limit_value(const Triangle_topology& topo, const Control_matrix& X, int v, double* out)
 {
@@ -50,6 +63,15 @@ inline void vertex_limit_tangents(const Triangle_topology& topo, const Control_m
     h = topo.ccw(h);
     ++j;
   } while(h != h0);
+}
+
+/// Unit normal of the limit surface at vertex v (geometry: 3 columns).
+inline void vertex_limit_normal(const Triangle_topology& topo, const Control_matrix& X, int v, double* n)
+{
+  double tu[3], tv[3];
+  vertex_limit_tangents(topo, X, v, tu, tv);
+  cross3(tu, tv, n);
+  normalize3(n);
 }
 
 } // namespace internal

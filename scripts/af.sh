@@ -1,0 +1,88 @@
+#!/usr/bin/env bash
+# af.sh -- the one script with the shared build logic of the Anisotropic_fairing package.
+#
+#   bash scripts/af.sh deps    install the missing Debian 12 packages (as root, or through sudo)
+#   bash scripts/af.sh build   deps, then configure (Release) and build everything into build/
+#   bash scripts/af.sh main    build, then run the main example on examples/.../data/bumpy.off
+#   bash scripts/af.sh test    build, then run all CTest tests (non-zero exit on failure)
+#
+# Works from any current directory.
+set -euo pipefail
+
+ROOT="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
+cd "$ROOT"
+
+BUILD_DIR="build"
+JOBS=2
+DEB_PACKAGES=(libcgal-dev libeigen3-dev libboost-dev libtbb-dev cmake g++)
+
+# The main program: the one place to change what `af.sh main` runs.
+MAIN_EXE="$BUILD_DIR/examples/Anisotropic_fairing/loop_limit_surface"
+MAIN_INPUT="examples/Anisotropic_fairing/data/bumpy.off"
+MAIN_OUTPUT="$BUILD_DIR/bumpy_limit.off"
+MAIN_EXTRA_ARGS=(2)
+
+log() { printf '[af] %s\n' "$*" >&2; }
+die() { printf '[af] error: %s\n' "$*" >&2; exit 1; }
+
+usage() {
+  sed -n '2,9p' "${BASH_SOURCE[0]}" | sed 's/^# \{0,1\}//' >&2
+}
+
+is_installed() {
+  [ "$(dpkg-query -W -f='${Status}' "$1" 2>/dev/null || true)" = "install ok installed" ]
+}
+
+cmd_deps() {
+  command -v dpkg-query >/dev/null 2>&1 || die "dpkg-query not found: this script expects Debian 12"
+  local missing=() p
+  for p in "${DEB_PACKAGES[@]}"; do
+    is_installed "$p" || missing+=("$p")
+  done
+  if [ "${#missing[@]}" -eq 0 ]; then
+    log "dependencies already installed: ${DEB_PACKAGES[*]}"
+    return 0
+  fi
+  local as_root=()
+  if [ "$(id -u)" -ne 0 ]; then
+    command -v sudo >/dev/null 2>&1 || die "missing packages (${missing[*]}); run as root or install sudo"
+    as_root=(sudo)
+  fi
+  log "installing missing packages: ${missing[*]}"
+  "${as_root[@]}" apt-get update
+  "${as_root[@]}" env DEBIAN_FRONTEND=noninteractive apt-get install -y "${missing[@]}"
+}
+
+cmd_build() {
+  cmd_deps
+  cmake -S . -B "$BUILD_DIR" -DCMAKE_BUILD_TYPE=Release
+  cmake --build "$BUILD_DIR" -j"$JOBS"
+}
+
+cmd_main() {
+  cmd_build
+  [ -x "$MAIN_EXE" ] || die "main program not built: $MAIN_EXE"
+  log "running: $MAIN_EXE $MAIN_INPUT $MAIN_OUTPUT ${MAIN_EXTRA_ARGS[*]}"
+  "$MAIN_EXE" "$MAIN_INPUT" "$MAIN_OUTPUT" "${MAIN_EXTRA_ARGS[@]}"
+  echo "Output written to $ROOT/$MAIN_OUTPUT"
+}
+
+cmd_test() {
+  cmd_build
+  ctest --test-dir "$BUILD_DIR" --output-on-failure --no-tests=error -j"$JOBS"
+}
+
+main() {
+  [ "$#" -ge 1 ] || { usage; exit 2; }
+  local sub="$1"; shift
+  case "$sub" in
+    deps)  cmd_deps "$@" ;;
+    build) cmd_build "$@" ;;
+    main)  cmd_main "$@" ;;
+    test)  cmd_test "$@" ;;
+    -h|--help|help) usage ;;
+    *) usage; die "unknown subcommand: $sub" ;;
+  esac
+}
+
+main "$@"
