@@ -54,34 +54,63 @@ inline double limit_surface_area(const Patch_cache& cache, const Control_matrix&
   return area;
 }
 
+/// Adds the symmetric local matrix `local` (ring x ring) into M, which carries the ring pattern.
+/// Rows of a column are sorted, so each local column is merged into the global one in one pass.
+inline void scatter_local_matrix(const Eigen::MatrixXd& local, const int* ring, int m,
+                                 std::vector<int>& order, Eigen::SparseMatrix<double>& M)
+{
+  order.resize(std::size_t(m));
+  for(int k = 0; k < m; ++k) order[std::size_t(k)] = k;
+  std::sort(order.begin(), order.end(), [ring](int a, int b) { return ring[a] < ring[b]; });
+  const int* outer = M.outerIndexPtr();
+  const int* rows = M.innerIndexPtr();
+  double* values = M.valuePtr();
+  for(int s = 0; s < m; ++s)
+  {
+    const int j = ring[s];
+    int p = outer[j];
+    for(int k = 0; k < m; ++k)
+    {
+      const int r = order[std::size_t(k)];
+      while(rows[p] < ring[r]) ++p;
+      values[p] += local(r, s);
+    }
+  }
+}
+
 /// Fills the values of M (which must carry ring_sparsity_pattern) with the mass matrix and returns
 /// the limit-surface area. Exact identity: sum_ij M_ij = area (partition of unity).
 inline double assemble_mass_matrix(const Patch_cache& cache, const Control_matrix& X,
                                    Eigen::SparseMatrix<double>& M)
 {
   std::fill(M.valuePtr(), M.valuePtr() + M.nonZeros(), 0.0);
-  std::vector<double> t1(X.cols()), t2(X.cols());
-  Eigen::MatrixXd local;
+  const Eigen::Index kappa = X.cols();
+  Control_matrix Xr, T1, T2;
+  Eigen::MatrixXd B, local;
+  Eigen::VectorXd c;
+  std::vector<int> order;
   double area = 0;
   for(std::size_t f = 0; f < cache.number_of_faces(); ++f)
   {
     const int m = cache.ring_size(f);
     const int* ring = cache.ring(f);
-    local.setZero(m, m);
-    for(const Quadrature_point& q : cache.quadrature_points(cache.category(f)))
+    const int cat = cache.category(f);
+    Xr.resize(m, kappa);
+    for(int k = 0; k < m; ++k) Xr.row(k) = X.row(ring[k]);
+    T1.noalias() = cache.quadrature_rows(cat, D1) * Xr;
+    T2.noalias() = cache.quadrature_rows(cat, D2) * Xr;
+    const Eigen::VectorXd& w = cache.quadrature_weights(cat);
+    c.resize(w.size());
+    for(Eigen::Index q = 0; q < w.size(); ++q)
     {
-      const double c = q.weight * area_element(q.stencil, ring, X, t1.data(), t2.data());
-      area += c;
-      Eigen::Map<const Eigen::VectorXd> phi(q.stencil.row(VALUE), m);
-      local.selfadjointView<Eigen::Lower>().rankUpdate(phi, c);
+      const double g11 = T1.row(q).squaredNorm(), g22 = T2.row(q).squaredNorm(), g12 = T1.row(q).dot(T2.row(q));
+      const double det = g11 * g22 - g12 * g12;
+      c[q] = w[q] * (det > 0 ? std::sqrt(det) : 0.0);
     }
-    double* values = M.valuePtr();
-    for(int s = 0; s < m; ++s)
-      for(int r = s; r < m; ++r)
-      {
-        values[sparse_entry_position(M, ring[r], ring[s])] += local(r, s);
-        if(r != s) values[sparse_entry_position(M, ring[s], ring[r])] += local(r, s);
-      }
+    area += c.sum();
+    B.noalias() = c.cwiseSqrt().asDiagonal() * cache.quadrature_rows(cat, VALUE);
+    local.noalias() = B.transpose() * B;
+    scatter_local_matrix(local, ring, m, order, M);
   }
   return area;
 }

@@ -12,6 +12,8 @@
 #include <CGAL/Anisotropic_fairing/internal/Quadrature_rules.h>
 #include <CGAL/Anisotropic_fairing/internal/Triangle_topology.h>
 
+#include <Eigen/Core>
+
 #include <algorithm>
 #include <array>
 #include <cstdint>
@@ -134,12 +136,28 @@ public:
       c->points.clear();
       const Loop_local_patch root(c->m, c->tris, Tri{ { 0, 1, 2 } });
       tile(root, rule, spec.tiling_depth, 0.0, 0.0, 1.0, c->points);
+      const Eigen::Index nq = Eigen::Index(c->points.size());
+      c->weights.resize(nq);
+      for(int r = 0; r < STENCIL_ROWS; ++r) c->rows[r].resize(nq, c->m);
+      for(Eigen::Index q = 0; q < nq; ++q)
+      {
+        c->weights[q] = c->points[std::size_t(q)].weight;
+        for(int r = 0; r < STENCIL_ROWS; ++r)
+          for(int j = 0; j < c->m; ++j) c->rows[r](q, j) = c->points[std::size_t(q)].stencil.row(r)[j];
+      }
     }
     spec_ = spec;
     quadrature_ready_ = true;
   }
 
   const std::vector<Quadrature_point>& quadrature_points(int c) const { return categories_[c]->points; }
+
+  typedef Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, Eigen::RowMajor> Row_matrix;
+  /// The stencils of a category stacked by row kind: quadrature_rows(c, r) is (points x ring size),
+  /// row q holding row r of point q's stencil. Dense, so assembly works with small matrix products.
+  const Row_matrix& quadrature_rows(int c, int r) const { return categories_[c]->rows[r]; }
+  /// Weights of a category's quadrature points (including the reference area 1/2).
+  const Eigen::VectorXd& quadrature_weights(int c) const { return categories_[c]->weights; }
   const Quadrature_spec& quadrature_spec() const { return spec_; }
 
 private:
@@ -190,6 +208,8 @@ private:
     int m;
     std::vector<Tri> tris;
     std::vector<Quadrature_point> points;
+    Row_matrix rows[STENCIL_ROWS];
+    Eigen::VectorXd weights;
   };
 
   std::vector<int> category_;
