@@ -61,10 +61,15 @@ class Loop_limit_surface
 public:
   /// \name Types
   /// @{
+  /// vertex descriptor of the control mesh
   typedef typename boost::graph_traits<TriangleMesh>::vertex_descriptor vertex_descriptor;
+  /// face descriptor of the control mesh
   typedef typename boost::graph_traits<TriangleMesh>::face_descriptor face_descriptor;
+  /// point type of the point map
   typedef typename boost::property_traits<VertexPointMap>::value_type Point_3;
+  /// kernel of the point type
   typedef typename CGAL::Kernel_traits<Point_3>::Kernel Kernel;
+  /// vector type of the kernel
   typedef typename Kernel::Vector_3 Vector_3;
   /// Barycentric coordinates of a point of a face (non-negative, summing to 1).
   typedef std::array<double, 3> Barycentric_coordinates;
@@ -135,7 +140,9 @@ public:
 
   /// \name Size
   /// @{
+  /// number of control vertices
   std::size_t number_of_vertices() const { return indexed_->number_of_vertices(); }
+  /// number of control faces (one limit-surface patch each)
   std::size_t number_of_faces() const { return indexed_->number_of_faces(); }
   /// Number of distinct topological categories of face patches; evaluation weights are computed once per category.
   std::size_t number_of_patch_categories() const { return cache_->number_of_categories(); }

@@ -54,7 +54,8 @@ inline double limit_surface_area(const Patch_cache& cache, const Control_matrix&
   return area;
 }
 
-/// Adds the symmetric local matrix `local` (ring x ring) into M, which carries the ring pattern.
+/// Adds the symmetric local matrix whose lower triangle is `local` (ring x ring) into M, which
+/// carries the ring pattern. Reading one triangle only keeps M exactly symmetric.
 /// Rows of a column are sorted, so each local column is merged into the global one in one pass.
 inline void scatter_local_matrix(const Eigen::MatrixXd& local, const int* ring, int m,
                                  std::vector<int>& order, Eigen::SparseMatrix<double>& M)
@@ -73,7 +74,7 @@ inline void scatter_local_matrix(const Eigen::MatrixXd& local, const int* ring, 
     {
       const int r = order[std::size_t(k)];
       while(rows[p] < ring[r]) ++p;
-      values[p] += local(r, s);
+      values[p] += (r >= s) ? local(r, s) : local(s, r);
     }
   }
 }
@@ -109,7 +110,8 @@ inline double assemble_mass_matrix(const Patch_cache& cache, const Control_matri
     }
     area += c.sum();
     B.noalias() = c.cwiseSqrt().asDiagonal() * cache.quadrature_rows(cat, VALUE);
-    local.noalias() = B.transpose() * B;
+    local.setZero(m, m);
+    local.selfadjointView<Eigen::Lower>().rankUpdate(B.transpose());   // lower triangle of B^T B
     scatter_local_matrix(local, ring, m, order, M);
   }
   return area;
