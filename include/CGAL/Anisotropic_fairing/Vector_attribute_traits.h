@@ -105,41 +105,27 @@ struct Vector_attribute_traits<Eigen::Matrix<T, N, 1, Options, MaxN, 1>>
   }
 };
 
-template <typename K>
-struct Vector_attribute_traits<CGAL::Point_3<K>>
+// CGAL points and vectors: immutable, so rebuilt from their coordinates
+template <typename T, int D>
+struct Cartesian_attribute_traits
 {
-  static constexpr int static_dimension = 3;
-  static std::size_t dimension(const CGAL::Point_3<K>&) { return 3; }
-  static double get(const CGAL::Point_3<K>& p, std::size_t i) { return CGAL::to_double(p[int(i)]); }
-  static CGAL::Point_3<K> make(const CGAL::Point_3<K>&, const double* x) { return CGAL::Point_3<K>(x[0], x[1], x[2]); }
+  static constexpr int static_dimension = D;
+  static std::size_t dimension(const T&) { return D; }
+  static double get(const T& p, std::size_t i) { return CGAL::to_double(p[int(i)]); }
+  static T make(const T&, const double* x) { return build(x, std::integral_constant<int, D>()); }
+private:
+  static T build(const double* x, std::integral_constant<int, 2>) { return T(x[0], x[1]); }
+  static T build(const double* x, std::integral_constant<int, 3>) { return T(x[0], x[1], x[2]); }
 };
 
 template <typename K>
-struct Vector_attribute_traits<CGAL::Vector_3<K>>
-{
-  static constexpr int static_dimension = 3;
-  static std::size_t dimension(const CGAL::Vector_3<K>&) { return 3; }
-  static double get(const CGAL::Vector_3<K>& p, std::size_t i) { return CGAL::to_double(p[int(i)]); }
-  static CGAL::Vector_3<K> make(const CGAL::Vector_3<K>&, const double* x) { return CGAL::Vector_3<K>(x[0], x[1], x[2]); }
-};
-
+struct Vector_attribute_traits<CGAL::Point_3<K>> : Cartesian_attribute_traits<CGAL::Point_3<K>, 3> {};
 template <typename K>
-struct Vector_attribute_traits<CGAL::Point_2<K>>
-{
-  static constexpr int static_dimension = 2;
-  static std::size_t dimension(const CGAL::Point_2<K>&) { return 2; }
-  static double get(const CGAL::Point_2<K>& p, std::size_t i) { return CGAL::to_double(p[int(i)]); }
-  static CGAL::Point_2<K> make(const CGAL::Point_2<K>&, const double* x) { return CGAL::Point_2<K>(x[0], x[1]); }
-};
-
+struct Vector_attribute_traits<CGAL::Vector_3<K>> : Cartesian_attribute_traits<CGAL::Vector_3<K>, 3> {};
 template <typename K>
-struct Vector_attribute_traits<CGAL::Vector_2<K>>
-{
-  static constexpr int static_dimension = 2;
-  static std::size_t dimension(const CGAL::Vector_2<K>&) { return 2; }
-  static double get(const CGAL::Vector_2<K>& p, std::size_t i) { return CGAL::to_double(p[int(i)]); }
-  static CGAL::Vector_2<K> make(const CGAL::Vector_2<K>&, const double* x) { return CGAL::Vector_2<K>(x[0], x[1]); }
-};
+struct Vector_attribute_traits<CGAL::Point_2<K>> : Cartesian_attribute_traits<CGAL::Point_2<K>, 2> {};
+template <typename K>
+struct Vector_attribute_traits<CGAL::Vector_2<K>> : Cartesian_attribute_traits<CGAL::Vector_2<K>, 2> {};
 
 template <>
 struct Vector_attribute_traits<CGAL::IO::Color>
