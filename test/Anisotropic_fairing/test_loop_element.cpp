@@ -36,7 +36,7 @@ void test_box_spline()
 {
   AFi::Box_spline_values B;
   // corner values at xi0 = 1 (vertex 4): N4 = 1/2; N1, N2, N3, N5, N7, N8 = 1/12; others 0
-  AFi::Loop_box_spline::evaluate(0, 0, B);
+  AFi::Loop_box_spline::evaluate(0.0, 0.0, B);
   const double corner[12] = { 1. / 12, 1. / 12, 1. / 12, 0.5, 1. / 12, 0, 1. / 12, 1. / 12, 0, 0, 0, 0 };
   AF_test::Max_error corner_err("box-spline corner values vs 1/2, 1/12");
   for(int i = 0; i < 12; ++i) corner_err.add_error(std::abs(B[AFi::VALUE][i] - corner[i]));
@@ -116,7 +116,7 @@ void test_partition_of_unity(const M& mesh, const std::string& name)
   }
   std::cout << "  (" << cache.number_of_categories() << " categories, " << points << " stencils)\n";
   check_max(value, 1e-14, "value rows sum to 1");
-  check_max(deriv, 1e-12, "derivative rows sum to 0");
+  check_max(deriv, 1e-14, "derivative rows sum to 0");
 }
 
 // ---------------------------------------------------------------------------------------------
@@ -176,8 +176,9 @@ void test_derivatives_by_finite_differences(const M& mesh, const std::string& na
 // Near an extraordinary vertex the patch converges to the closed-form limit point and normal.
 // A point at parameter distance 2^-k lies about lambda1(n)^k * (ring size) from the limit point,
 // lambda1 = 3/8 + cos(2 pi/n)/4 (loop-fem.md section 1), so that is the bound checked. Normals
-// converge geometrically for n >= 4 and only like 1/k for n = 3 (a Jordan block of Loop's
-// subdivision matrix at eigenvalue 1/4), so the check is a rate, per valence.
+// converge geometrically; the check is the rate between 2^-10 and 2^-20. (In double precision the
+// valence-3 rate stalled at 0.6: the 2^k-scaled derivative rows lose digits near the vertex, which
+// is why patches are evaluated in extended precision.)
 template <class M>
 void test_extraordinary_corners(const M& mesh, const std::string& name)
 {
@@ -187,8 +188,7 @@ void test_extraordinary_corners(const M& mesh, const std::string& name)
   AFi::Control_matrix X = im.read_points(get(CGAL::vertex_point, mesh));
   AF_test::Max_error exact("exact corner evaluation vs limit and tangent masks, " + name),
       pos("position at 2^-20 and 2^-30 from a vertex, error / (4 lambda1^k R), " + name),
-      rate("normal error ratio 2^-20 / 2^-10 (n >= 4), " + name),
-      rate3("normal error ratio 2^-20 / 2^-10 (n = 3), " + name),
+      rate("normal error ratio 2^-20 / 2^-10, " + name),
       nrm("normal error at 2^-20, " + name);
   const double corners[3][2] = { {0, 0}, {1, 0}, {0, 1} };
   const double inward[3][2] = { {1, 1}, {-2, 1}, {1, -2} };
@@ -242,13 +242,12 @@ void test_extraordinary_corners(const M& mesh, const std::string& name)
       for(int c = 0; c < 3; ++c) { e10 = std::max(e10, std::abs(n10[c] - n_mask[c])); e20 = std::max(e20, std::abs(n20[c] - n_mask[c])); }
       if(n == 6) continue;                 // regular corner: the box spline is exact, nothing converges
       nrm.add_error(e20);
-      (n == 3 ? rate3 : rate).add_error(e20 / (e10 + 1e-300));
+      rate.add_error(e20 / (e10 + 1e-300));
     }
   }
   check_max(exact, 1e-14, "exact corners use the limit and tangent masks");
   check_max(pos, 1.0, "position within 4 lambda1^k R of the limit point");
-  check_max(rate, 0.1, "normals converge geometrically (n >= 4)");
-  if(rate3.count() > 0) check_max(rate3, 0.9, "normals converge (n = 3)");
+  check_max(rate, 0.1, "normals converge geometrically");
   check_max(nrm, 1e-3, "normal at 2^-20");
 }
 

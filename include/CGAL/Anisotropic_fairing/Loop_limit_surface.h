@@ -61,6 +61,7 @@ class Loop_limit_surface
 public:
   /// \name Types
   /// @{
+
   /// vertex descriptor of the control mesh
   typedef typename boost::graph_traits<TriangleMesh>::vertex_descriptor vertex_descriptor;
   /// face descriptor of the control mesh
@@ -140,6 +141,7 @@ public:
 
   /// \name Size
   /// @{
+
   /// number of control vertices
   std::size_t number_of_vertices() const { return indexed_->number_of_vertices(); }
   /// number of control faces (one limit-surface patch each)

@@ -30,22 +30,22 @@ typedef std::array<std::array<double, 12>, STENCIL_ROWS> Box_spline_values;
 class Loop_box_spline
 {
   // Each basis function as a polynomial in (u, v) = (xi1, xi2): coef[i][p][q] multiplies u^p v^q.
-  typedef std::array<std::array<std::array<double, 5>, 5>, 12> Coefficients;
+  typedef std::array<std::array<std::array<long double, 5>, 5>, 12> Coefficients;
 
   // N1..N4 in barycentric monomials xi0^e0 xi1^e1 xi2^e2, times 12 (the paper's eq. 18).
-  struct Term { int e0, e1, e2; double c; };
+  struct Term { int e0, e1, e2; long double c; };
 
-  static void add_barycentric_monomial(std::array<std::array<double, 5>, 5>& poly,
-                                       int e0, int e1, int e2, double c)
+  static void add_barycentric_monomial(std::array<std::array<long double, 5>, 5>& poly,
+                                       int e0, int e1, int e2, long double c)
   {
     // xi0^e0 = (1 - u - v)^e0 = sum over i+j+k = e0 of multinomial * (-u)^j (-v)^k
-    static const double fact[5] = { 1, 1, 2, 6, 24 };
+    static const long double fact[5] = { 1, 1, 2, 6, 24 };
     for(int j = 0; j <= e0; ++j)
       for(int k = 0; j + k <= e0; ++k)
       {
         const int i = e0 - j - k;
-        const double multinomial = fact[e0] / (fact[i] * fact[j] * fact[k]);
-        const double sign = ((j + k) % 2 == 0) ? 1.0 : -1.0;
+        const long double multinomial = fact[e0] / (fact[i] * fact[j] * fact[k]);
+        const long double sign = ((j + k) % 2 == 0) ? 1.0L : -1.0L;
         poly[e1 + j][e2 + k] += c * sign * multinomial;
       }
   }
@@ -72,7 +72,7 @@ class Loop_box_spline
       for(int t = 0; t < bases[b].size; ++t)
       {
         const Term& m = bases[b].terms[t];
-        const double c = m.c / 12.0;
+        const long double c = m.c / 12.0L;
         add_barycentric_monomial(coef[identity[b] - 1], m.e0, m.e1, m.e2, c);
         // N(xi1,xi2,xi0): xi1^e0 xi2^e1 xi0^e2 -> exponents (e2, e0, e1) in (xi0, xi1, xi2)
         add_barycentric_monomial(coef[rot1[b] - 1], m.e2, m.e0, m.e1, c);
@@ -89,19 +89,20 @@ class Loop_box_spline
   }
 
 public:
-  /// Evaluates the 12 basis functions and their derivatives at (xi1, xi2).
-  static void evaluate(double u, double v, Box_spline_values& out)
+  /// Evaluates the 12 basis functions and their derivatives at (xi1, xi2), in precision Real.
+  template <typename Real>
+  static void evaluate(Real u, Real v, std::array<std::array<Real, 12>, STENCIL_ROWS>& out)
   {
     const Coefficients& coef = coefficients();
-    double up[5] = { 1, u, u * u, u * u * u, u * u * u * u };
-    double vp[5] = { 1, v, v * v, v * v * v, v * v * v * v };
+    Real up[5] = { 1, u, u * u, u * u * u, u * u * u * u };
+    Real vp[5] = { 1, v, v * v, v * v * v, v * v * v * v };
     for(int i = 0; i < 12; ++i)
     {
-      double f = 0, fu = 0, fv = 0, fuu = 0, fuv = 0, fvv = 0;
+      Real f = 0, fu = 0, fv = 0, fuu = 0, fuv = 0, fvv = 0;
       for(int p = 0; p <= 4; ++p)
         for(int q = 0; p + q <= 4; ++q)
         {
-          const double c = coef[i][p][q];
+          const Real c = Real(coef[i][p][q]);
           if(c == 0) continue;
           f += c * up[p] * vp[q];
           if(p >= 1) fu += c * p * up[p - 1] * vp[q];

@@ -49,6 +49,10 @@ class Loop_local_patch
 {
 public:
   typedef std::array<int, 3> Tri;
+  // Stencils are computed once per category, so extended precision is affordable: it keeps the
+  // rounding of up to ~5 levels of W products and of the box-spline cancellation (amplified by
+  // 4^depth in second derivatives) below double precision in the final stencil.
+  typedef long double Real;
 
   /// The root patch: local vertex j is control j (W = identity); `tris` are oriented triangles in
   /// local ids and must contain every triangle incident to the target's vertices (closed fans).
@@ -63,7 +67,7 @@ public:
   int number_of_local_vertices() const { return nl_; }
   const Tri& target() const { return target_; }
   const std::vector<Tri>& triangles() const { return tris_; }
-  const double* weights(int local) const { return W_.data() + std::size_t(local) * m_; }
+  const Real* weights(int local) const { return W_.data() + std::size_t(local) * m_; }
 
   int valence(int v) const { return valence_[v]; }
 
@@ -125,15 +129,15 @@ public:
     c.m_ = m_;
     std::vector<int> vertex_point(nl_, -1);
     std::vector<int> edge_point(std::size_t(nl_) * nl_, -1);   // symmetric, by local ids
-    std::vector<double> rows;                                    // new W, grown row by row
+    std::vector<Real> rows;                                      // new W, grown row by row
 
     auto new_row = [&]() -> int {
       rows.resize(rows.size() + m_, 0.0);
       return int(rows.size() / m_) - 1;
     };
-    auto axpy = [&](int dst, double s, int src) {
-      double* d = rows.data() + std::size_t(dst) * m_;
-      const double* x = W_.data() + std::size_t(src) * m_;
+    auto axpy = [&](int dst, Real s, int src) {
+      Real* d = rows.data() + std::size_t(dst) * m_;
+      const Real* x = W_.data() + std::size_t(src) * m_;
       for(int j = 0; j < m_; ++j) d[j] += s * x[j];
     };
 
@@ -144,7 +148,7 @@ public:
     {
       const int v = target_[k];
       const int n = valence_[v];
-      const double beta = loop_vertex_weight(n);
+      const Real beta = loop_vertex_weight<Real>(n);
       const int r = new_row();
       axpy(r, 1.0 - n * beta, v);
       for(int w : neighbours_ccw(v, first_neighbour(v))) axpy(r, beta, w);
@@ -161,8 +165,8 @@ public:
         const int x = third(p, q), y = third(q, p);
         if(x < 0 || y < 0) throw std::logic_error("Loop_local_patch: open fan at an edge");
         slot = new_row();
-        axpy(slot, 3.0 / 8.0, p); axpy(slot, 3.0 / 8.0, q);
-        axpy(slot, 1.0 / 8.0, x); axpy(slot, 1.0 / 8.0, y);
+        axpy(slot, Real(0.375), p); axpy(slot, Real(0.375), q);
+        axpy(slot, Real(0.125), x); axpy(slot, Real(0.125), y);
       }
     auto ep = [&](int p, int q) { return edge_point[std::size_t(std::min(p, q)) * nl_ + std::max(p, q)]; };
 
@@ -208,7 +212,7 @@ public:
       c.tris_.push_back(r);
     }
     c.nl_ = used;
-    c.W_.assign(std::size_t(used) * m_, 0.0);
+    c.W_.assign(std::size_t(used) * m_, Real(0));
     for(int old = 0; old < total; ++old)
       if(remap[old] >= 0)
         std::copy(rows.begin() + std::size_t(old) * m_, rows.begin() + std::size_t(old + 1) * m_,
@@ -219,7 +223,7 @@ public:
   }
 
   /// Parameters in the child that contains (u, v), and the derivative factor d(child)/d(parent).
-  static Child locate(double& u, double& v, double& factor)
+  static Child locate(Real& u, Real& v, Real& factor)
   {
     if(u >= 0.5)            { u = 2 * u - 1; v = 2 * v;     factor = 2;  return CHILD_B; }
     if(v >= 0.5)            { u = 2 * u;     v = 2 * v - 1; factor = 2;  return CHILD_C; }
@@ -227,23 +231,27 @@ public:
     u = 1 - 2 * u; v = 1 - 2 * v; factor = -2; return CHILD_M;
   }
 
-  /// Stencil of a regular patch at (u, v): box-spline rows times W on the 12-vertex layout.
-  void regular_stencil(double u, double v, Stencil& s) const
+  /// Stencil of a regular patch at (u, v): box-spline rows times W on the 12-vertex layout,
+  /// scaled by the derivative factor f (first rows by f, second by f^2).
+  void regular_stencil(Real u, Real v, Stencil& s, Real f = 1) const
   {
-    Box_spline_values B;
+    std::array<std::array<Real, 12>, STENCIL_ROWS> B;
     Loop_box_spline::evaluate(u, v, B);
     const std::array<int, 12> L = layout12();
+    const Real scale[STENCIL_ROWS] = { 1, f, f, f * f, f * f, f * f };
     s.resize(m_);
+    std::vector<Real> acc(static_cast<std::size_t>(m_), Real(0));
     for(int r = 0; r < STENCIL_ROWS; ++r)
     {
-      double* out = s.row(r);
+      std::fill(acc.begin(), acc.end(), Real(0));
       for(int i = 0; i < 12; ++i)
       {
-        const double bi = B[r][i];
+        const Real bi = B[r][i];
         if(bi == 0) continue;
-        const double* w = weights(L[i]);
-        for(int j = 0; j < m_; ++j) out[j] += bi * w[j];
+        const Real* w = weights(L[i]);
+        for(int j = 0; j < m_; ++j) acc[std::size_t(j)] += bi * w[j];
       }
+      for(int j = 0; j < m_; ++j) s.row(r)[j] = double(scale[r] * acc[std::size_t(j)]);
     }
   }
 
@@ -258,16 +266,15 @@ public:
     const int n = valence_[v];
     const int start = target_[(k + 1) % 3];       // next corner: CCW after it comes target[(k+2)%3]
     const std::vector<int> nb = neighbours_ccw(v, start);
-    const double chi = loop_limit_weight(n);
-    std::vector<double> t1(m_, 0.0), t2(m_, 0.0);
-    double* val = s.row(VALUE);
-    const double* wv = weights(v);
-    for(int j = 0; j < m_; ++j) val[j] = (1.0 - n * chi) * wv[j];
+    const Real chi = loop_limit_weight<Real>(n);
+    std::vector<Real> val(m_, Real(0)), t1(m_, Real(0)), t2(m_, Real(0));
+    const Real* wv = weights(v);
+    for(int j = 0; j < m_; ++j) val[j] = (1 - n * chi) * wv[j];
     for(int i = 0; i < n; ++i)
     {
-      const double* w = weights(nb[i]);
-      const double c1 = (2.0 / n) * std::cos(2.0 * loop_pi() * i / n);
-      const double c2 = (2.0 / n) * std::cos(2.0 * loop_pi() * (i - 1) / n);
+      const Real* w = weights(nb[i]);
+      const Real c1 = (Real(2) / n) * std::cos(2 * loop_pi() * i / n);
+      const Real c2 = (Real(2) / n) * std::cos(2 * loop_pi() * (i - 1) / n);
       for(int j = 0; j < m_; ++j)
       {
         val[j] += chi * w[j];
@@ -275,6 +282,7 @@ public:
         t2[j] += c2 * w[j];
       }
     }
+    for(int j = 0; j < m_; ++j) s.row(VALUE)[j] = double(val[j]);
     // (s1, s2) are the parameters of the rotated triangle that starts at corner k.
     double* d1 = s.row(D1);
     double* d2 = s.row(D2);
@@ -282,22 +290,23 @@ public:
     {
       switch(k)
       {
-        case 0: d1[j] = t1[j];          d2[j] = t2[j];          break;
-        case 1: d1[j] = -t2[j];         d2[j] = t1[j] - t2[j];  break;  // s = (xi2, 1 - xi1 - xi2)
-        default: d1[j] = -t1[j] + t2[j]; d2[j] = -t1[j];        break;  // s = (1 - xi1 - xi2, xi1)
+        case 0: d1[j] = double(t1[j]);          d2[j] = double(t2[j]);          break;
+        case 1: d1[j] = double(-t2[j]);         d2[j] = double(t1[j] - t2[j]);  break;  // s = (xi2, 1 - xi1 - xi2)
+        default: d1[j] = double(-t1[j] + t2[j]); d2[j] = double(-t1[j]);        break;  // s = (1 - xi1 - xi2, xi1)
       }
     }
   }
 
   /// Evaluates the patch at (u, v) = (xi1, xi2) in the closed unit triangle.
-  void stencil(double u, double v, Stencil& s, int max_depth = 48) const
+  void stencil(double u_in, double v_in, Stencil& s, int max_depth = 48) const
   {
+    Real u = u_in, v = v_in;
     // exactly at an extraordinary corner, the recursion would never reach a regular patch
     const int corner = (u == 0 && v == 0) ? 0 : (u == 1 && v == 0) ? 1 : (u == 0 && v == 1) ? 2 : -1;
     if(corner >= 0 && valence_[target_[corner]] != 6) { corner_stencil(corner, s); return; }
     if(is_regular()) { regular_stencil(u, v, s); return; }
 
-    double factor = 1;
+    Real factor = 1;
     const Loop_local_patch* p = this;
     Loop_local_patch current;
     int depth = 0;
@@ -306,25 +315,20 @@ public:
       if(depth == max_depth)
       {
         // closer than 2^-max_depth to an extraordinary vertex: evaluate at that vertex
-        const double b[3] = { 1 - u - v, u, v };
+        const Real b[3] = { 1 - u - v, u, v };
         const int k = int(std::max_element(b, b + 3) - b);
         p->corner_stencil(k, s);
-        for(int r = D1; r <= D2; ++r) for(int j = 0; j < m_; ++j) s.row(r)[j] *= factor;
+        for(int r = D1; r <= D2; ++r) for(int j = 0; j < m_; ++j) s.row(r)[j] *= double(factor);
         return;
       }
-      double f;
+      Real f;
       const Child which = locate(u, v, f);
       current = p->child(which);
       p = &current;
       factor *= f;
       ++depth;
     }
-    p->regular_stencil(u, v, s);
-    for(int j = 0; j < m_; ++j)
-    {
-      s.row(D1)[j] *= factor;  s.row(D2)[j] *= factor;
-      s.row(D11)[j] *= factor * factor;  s.row(D12)[j] *= factor * factor;  s.row(D22)[j] *= factor * factor;
-    }
+    p->regular_stencil(u, v, s, factor);
   }
 
   Loop_local_patch() = default;
@@ -351,7 +355,7 @@ private:
   }
 
   int m_ = 0, nl_ = 0;
-  std::vector<double> W_;
+  std::vector<Real> W_;
   std::vector<Tri> tris_;
   Tri target_{ { 0, 1, 2 } };
   std::vector<int> third_;

@@ -13,28 +13,30 @@ namespace CGAL {
 namespace Anisotropic_fairing {
 namespace internal {
 
-inline double loop_pi() { return 3.14159265358979323846; }
+inline long double loop_pi() { return 3.141592653589793238462643383279502884L; }
 
 /// Weight of each neighbour in Loop's vertex rule: x0' = (1 - n a) x0 + a sum(xi).
-inline double loop_vertex_weight(int n)
+template <typename Real = double>
+inline Real loop_vertex_weight(int n)
 {
-  if(n == 6) return 1.0 / 16.0;                 // exact, so regular patches stay exact
-  const double c = 3.0 / 8.0 + 0.25 * std::cos(2.0 * loop_pi() / n);
-  return (5.0 / 8.0 - c * c) / n;
+  if(n == 6) return Real(1) / 16;               // exact, so regular patches stay exact
+  const long double c = 0.375L + 0.25L * std::cos(2 * loop_pi() / n);
+  return Real((0.625L - c * c) / n);
 }
 
 /// Weight of each neighbour in the limit mask: x_inf = (1 - n chi) x0 + chi sum(xi).
-inline double loop_limit_weight(int n)
+template <typename Real = double>
+inline Real loop_limit_weight(int n)
 {
-  if(n == 6) return 1.0 / 12.0;
-  return 1.0 / (n + 3.0 / (8.0 * loop_vertex_weight(n)));
+  if(n == 6) return Real(1) / 12;
+  return Real(1.0L / (n + 3.0L / (8 * loop_vertex_weight<long double>(n))));
 }
 
 /// Tangent-mask coefficients of neighbour j (0-based, counter-clockwise) of a valence-n vertex.
 /// t_u = sum cos(2 pi j / n) x_j, t_v = sum sin(2 pi j / n) x_j span the limit tangent plane and
 /// t_u x t_v is the oriented normal.
-inline double loop_tangent_u(int j, int n) { return std::cos(2.0 * loop_pi() * j / n); }
-inline double loop_tangent_v(int j, int n) { return std::sin(2.0 * loop_pi() * j / n); }
+inline double loop_tangent_u(int j, int n) { return double(std::cos(2 * loop_pi() * j / n)); }
+inline double loop_tangent_v(int j, int n) { return double(std::sin(2 * loop_pi() * j / n)); }
 
 } // namespace internal
 } // namespace Anisotropic_fairing
