@@ -23,34 +23,45 @@ namespace internal {
 
 typedef Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, Eigen::RowMajor> Control_matrix;
 
-/// Tangents t1 = dx/dxi1, t2 = dx/dxi2 of the limit surface at one quadrature point, and the
-/// area element sqrt(det G), for control rows `ring` of X.
-inline double area_element(const Stencil& s, const int* ring, const Control_matrix& X,
-                           double* t1, double* t2)
+/// Work space of one face: its ring's control rows and the tangents at its quadrature points.
+struct Face_metric_workspace
 {
-  const Eigen::Index kappa = X.cols();
-  for(Eigen::Index c = 0; c < kappa; ++c) { t1[c] = 0; t2[c] = 0; }
-  const double* d1 = s.row(D1);
-  const double* d2 = s.row(D2);
-  for(int j = 0; j < s.m; ++j)
+  Control_matrix Xr, T1, T2;
+  Eigen::VectorXd c;   // quadrature weight times sqrt(det G) at each point
+};
+
+/// Fills ws.c with w_q sqrt(det G(xi_q)) for face f (metric from all kappa columns of X).
+inline void face_area_elements(const Patch_cache& cache, std::size_t f, const Control_matrix& X,
+                               Face_metric_workspace& ws)
+{
+  const int m = cache.ring_size(f);
+  const int* ring = cache.ring(f);
+  const int cat = cache.category(f);
+  ws.Xr.resize(m, X.cols());
+  for(int k = 0; k < m; ++k) ws.Xr.row(k) = X.row(ring[k]);
+  ws.T1.noalias() = cache.quadrature_rows(cat, D1) * ws.Xr;
+  ws.T2.noalias() = cache.quadrature_rows(cat, D2) * ws.Xr;
+  const Eigen::VectorXd& w = cache.quadrature_weights(cat);
+  ws.c.resize(w.size());
+  for(Eigen::Index q = 0; q < w.size(); ++q)
   {
-    const double* x = X.data() + std::size_t(ring[j]) * kappa;
-    for(Eigen::Index c = 0; c < kappa; ++c) { t1[c] += d1[j] * x[c]; t2[c] += d2[j] * x[c]; }
+    const double g11 = ws.T1.row(q).squaredNorm(), g22 = ws.T2.row(q).squaredNorm();
+    const double g12 = ws.T1.row(q).dot(ws.T2.row(q));
+    const double det = g11 * g22 - g12 * g12;
+    ws.c[q] = w[q] * (det > 0 ? std::sqrt(det) : 0.0);
   }
-  double g11 = 0, g12 = 0, g22 = 0;
-  for(Eigen::Index c = 0; c < kappa; ++c) { g11 += t1[c] * t1[c]; g12 += t1[c] * t2[c]; g22 += t2[c] * t2[c]; }
-  const double det = g11 * g22 - g12 * g12;
-  return det > 0 ? std::sqrt(det) : 0.0;
 }
 
 /// Limit-surface area by the prepared quadrature.
 inline double limit_surface_area(const Patch_cache& cache, const Control_matrix& X)
 {
-  std::vector<double> t1(X.cols()), t2(X.cols());
+  Face_metric_workspace ws;
   double area = 0;
   for(std::size_t f = 0; f < cache.number_of_faces(); ++f)
-    for(const Quadrature_point& q : cache.quadrature_points(cache.category(f)))
-      area += q.weight * area_element(q.stencil, cache.ring(f), X, t1.data(), t2.data());
+  {
+    face_area_elements(cache, f, X, ws);
+    area += ws.c.sum();
+  }
   return area;
 }
 
@@ -85,34 +96,19 @@ inline double assemble_mass_matrix(const Patch_cache& cache, const Control_matri
                                    Eigen::SparseMatrix<double>& M)
 {
   std::fill(M.valuePtr(), M.valuePtr() + M.nonZeros(), 0.0);
-  const Eigen::Index kappa = X.cols();
-  Control_matrix Xr, T1, T2;
+  Face_metric_workspace ws;
   Eigen::MatrixXd B, local;
-  Eigen::VectorXd c;
   std::vector<int> order;
   double area = 0;
   for(std::size_t f = 0; f < cache.number_of_faces(); ++f)
   {
     const int m = cache.ring_size(f);
-    const int* ring = cache.ring(f);
-    const int cat = cache.category(f);
-    Xr.resize(m, kappa);
-    for(int k = 0; k < m; ++k) Xr.row(k) = X.row(ring[k]);
-    T1.noalias() = cache.quadrature_rows(cat, D1) * Xr;
-    T2.noalias() = cache.quadrature_rows(cat, D2) * Xr;
-    const Eigen::VectorXd& w = cache.quadrature_weights(cat);
-    c.resize(w.size());
-    for(Eigen::Index q = 0; q < w.size(); ++q)
-    {
-      const double g11 = T1.row(q).squaredNorm(), g22 = T2.row(q).squaredNorm(), g12 = T1.row(q).dot(T2.row(q));
-      const double det = g11 * g22 - g12 * g12;
-      c[q] = w[q] * (det > 0 ? std::sqrt(det) : 0.0);
-    }
-    area += c.sum();
-    B.noalias() = c.cwiseSqrt().asDiagonal() * cache.quadrature_rows(cat, VALUE);
+    face_area_elements(cache, f, X, ws);
+    area += ws.c.sum();
+    B.noalias() = ws.c.cwiseSqrt().asDiagonal() * cache.quadrature_rows(cache.category(f), VALUE);
     local.setZero(m, m);
     local.selfadjointView<Eigen::Lower>().rankUpdate(B.transpose());   // lower triangle of B^T B
-    scatter_local_matrix(local, ring, m, order, M);
+    scatter_local_matrix(local, cache.ring(f), m, order, M);
   }
   return area;
 }

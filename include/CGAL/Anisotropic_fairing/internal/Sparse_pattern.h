@@ -60,15 +60,6 @@ inline Eigen::SparseMatrix<double> ring_sparsity_pattern(const Patch_cache& cach
   return M;
 }
 
-/// Position of entry (i, j) in the value array of a compressed column-major matrix (must exist).
-inline Eigen::Index sparse_entry_position(const Eigen::SparseMatrix<double>& M, int i, int j)
-{
-  const int* rows = M.innerIndexPtr();
-  const int* b = rows + M.outerIndexPtr()[j];
-  const int* e = rows + M.outerIndexPtr()[j + 1];
-  return Eigen::Index(std::lower_bound(b, e, i) - rows);
-}
-
 } // namespace internal
 } // namespace Anisotropic_fairing
 } // namespace CGAL
