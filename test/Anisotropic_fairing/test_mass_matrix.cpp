@@ -12,6 +12,7 @@
 #include "test_support/cgal_loop_reference.h"
 #include "test_support/check.h"
 #include "test_support/mesh_generators.h"
+#include "test_support/interpolating_sphere.h"
 
 #include <Eigen/Dense>
 #include <Eigen/SparseCholesky>
@@ -47,32 +48,6 @@ void check_mass_matrix(const M& mesh, const std::string& name, int degree, int t
     std::printf("  eigenvalues of M in [%.3g, %.3g], cond %.1f\n", lmin, lmax, lmax / lmin);
     AF_CHECK(lmin > 0, "smallest eigenvalue of M is positive, " + label);
   }
-}
-
-// Control points whose limit surface interpolates the unit-sphere vertices: X = Lambda^-1 P with
-// Lambda the limit-mask matrix (built here independently from the CGAL oracle's weights).
-void make_interpolating_icosphere(Mesh& mesh, int levels)
-{
-  AF_test::make_icosphere(mesh, levels);
-  const std::size_t n = num_vertices(mesh);
-  std::vector<Eigen::Triplet<double>> t;
-  Eigen::MatrixXd P(n, 3);
-  for(auto v : vertices(mesh))
-  {
-    const std::size_t i = std::size_t(v);
-    const std::size_t val = CGAL::halfedges_around_target(v, mesh).size();
-    const double chi = AF_test::loop_limit_weight(val);
-    t.emplace_back(i, i, 1 - double(val) * chi);
-    for(auto w : CGAL::vertices_around_target(v, mesh)) t.emplace_back(i, std::size_t(w), chi);
-    const auto& p = mesh.point(v);
-    P.row(i) << p.x(), p.y(), p.z();
-  }
-  Eigen::SparseMatrix<double> L(n, n);
-  L.setFromTriplets(t.begin(), t.end());
-  Eigen::SparseLU<Eigen::SparseMatrix<double>> lu(L);
-  const Eigen::MatrixXd X = lu.solve(P);
-  for(auto v : vertices(mesh))
-    mesh.point(v) = K::Point_3(X(std::size_t(v), 0), X(std::size_t(v), 1), X(std::size_t(v), 2));
 }
 
 int main(int argc, char** argv)

@@ -14,6 +14,7 @@
 #include <Eigen/Dense>
 #include <Eigen/SparseCore>
 
+#include <algorithm>
 #include <cmath>
 #include <vector>
 
@@ -65,29 +66,36 @@ inline double limit_surface_area(const Patch_cache& cache, const Control_matrix&
   return area;
 }
 
-/// Adds the symmetric local matrix whose lower triangle is `local` (ring x ring) into M, which
-/// carries the ring pattern. Reading one triangle only keeps M exactly symmetric.
-/// Rows of a column are sorted, so each local column is merged into the global one in one pass.
-inline void scatter_local_matrix(const Eigen::MatrixXd& local, const int* ring, int m,
-                                 std::vector<int>& order, Eigen::SparseMatrix<double>& M)
+/// Adds N symmetric local matrices, given by their lower triangles (ring x ring), into N value arrays
+/// sharing one compressed column pattern (outer, rows) that contains the ring's pairs. Reading one
+/// triangle only keeps the results exactly symmetric. Rows of a column are sorted, so each local
+/// column is merged into the global one in one pass.
+template <int N>
+void scatter_local_matrices(const Eigen::MatrixXd* const (&local)[N], const int* ring, int m, std::vector<int>& order,
+                            const int* outer, const int* rows, double* const (&values)[N])
 {
   order.resize(std::size_t(m));
   for(int k = 0; k < m; ++k) order[std::size_t(k)] = k;
   std::sort(order.begin(), order.end(), [ring](int a, int b) { return ring[a] < ring[b]; });
-  const int* outer = M.outerIndexPtr();
-  const int* rows = M.innerIndexPtr();
-  double* values = M.valuePtr();
   for(int s = 0; s < m; ++s)
   {
-    const int j = ring[s];
-    int p = outer[j];
+    int p = outer[ring[s]];
     for(int k = 0; k < m; ++k)
     {
       const int r = order[std::size_t(k)];
       while(rows[p] < ring[r]) ++p;
-      values[p] += (r >= s) ? local(r, s) : local(s, r);
+      for(int i = 0; i < N; ++i) values[i][p] += (r >= s) ? (*local[i])(r, s) : (*local[i])(s, r);
     }
   }
+}
+
+/// One local matrix into a sparse matrix carrying the ring pattern.
+inline void scatter_local_matrix(const Eigen::MatrixXd& local, const int* ring, int m,
+                                 std::vector<int>& order, Eigen::SparseMatrix<double>& M)
+{
+  const Eigen::MatrixXd* const locals[1] = { &local };
+  double* const values[1] = { M.valuePtr() };
+  scatter_local_matrices<1>(locals, ring, m, order, M.outerIndexPtr(), M.innerIndexPtr(), values);
 }
 
 /// Fills the values of M (which must carry ring_sparsity_pattern) with the mass matrix and returns

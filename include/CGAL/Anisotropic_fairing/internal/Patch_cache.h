@@ -46,6 +46,8 @@ class Patch_cache
 {
 public:
   typedef Loop_local_patch::Tri Tri;
+  /// the Loop element has second-derivative stencils (mean curvature at quadrature points)
+  static constexpr bool has_second_derivatives = true;
 
   explicit Patch_cache(const Triangle_topology& topo)
   {

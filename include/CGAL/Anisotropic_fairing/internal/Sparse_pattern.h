@@ -21,7 +21,9 @@ namespace internal {
 
 /// Returns an n x n compressed, symmetric matrix whose structural non-zeros are all pairs of
 /// vertices sharing a triangle ring, with zero values.
-inline Eigen::SparseMatrix<double> ring_sparsity_pattern(const Patch_cache& cache, std::size_t n)
+/// `Cache` is any element cache (Patch_cache, Linear_element_cache) exposing faces and their rings.
+template <typename Cache>
+Eigen::SparseMatrix<double> ring_sparsity_pattern(const Cache& cache, std::size_t n)
 {
   // faces whose ring contains each vertex (CSR)
   std::vector<std::size_t> start(n + 1, 0);

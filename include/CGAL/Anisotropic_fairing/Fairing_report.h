@@ -1,0 +1,117 @@
+// Copyright (c) 2026 Anisotropic_fairing developers.
+// SPDX-License-Identifier: GPL-3.0-or-later
+//
+// What anisotropic_fairing() returns: how the run ended and the statistics of every step.
+
+#ifndef CGAL_ANISOTROPIC_FAIRING_FAIRING_REPORT_H
+#define CGAL_ANISOTROPIC_FAIRING_FAIRING_REPORT_H
+
+#include <cstddef>
+#include <string>
+#include <vector>
+
+namespace CGAL {
+namespace Anisotropic_fairing {
+
+/// \ingroup PkgAnisotropicFairingRef
+/// How a fairing run ended. Anything but `SUCCESS` leaves the mesh and the maps untouched.
+enum class Fairing_status {
+  SUCCESS,            ///< the result was written back
+  SOLVER_FAILED,      ///< the linear solver failed (no convergence, or factorisation failure)
+  NON_FINITE_VALUE,   ///< a NaN or infinite value appeared in the solution
+  DEGENERATE_METRIC,  ///< the surface pinched: \f$\sqrt{\det G} \le 0\f$ (or not finite) at a quadrature point
+  COLLAPSED           ///< the surface shrank to (almost) nothing: area below \f$10^{-8}\f$ of the initial one
+};
+
+/// \ingroup PkgAnisotropicFairingRef
+/// Why the run stopped.
+enum class Stop_reason {
+  MAXIMUM_STEPS,        ///< `number_of_iterations` steps were taken
+  CURVATURE_RATE_RATIO, ///< criterion (27)
+  CURVATURE_RATE,       ///< criterion (28)
+  DISPLACEMENT,         ///< criterion (29)
+  STEADY_STATE,         ///< the flow stopped moving
+  CALLBACK,             ///< the callback asked to stop
+  FAILURE               ///< see `Fairing_report::status`
+};
+
+/// \ingroup PkgAnisotropicFairingRef
+/// Short snake_case name of a stop reason (as written in the command-line tool's JSON report).
+inline const char* to_string(Stop_reason r)
+{
+  switch(r)
+  {
+    case Stop_reason::MAXIMUM_STEPS: return "max_steps";
+    case Stop_reason::CURVATURE_RATE_RATIO: return "curvature_rate_ratio";
+    case Stop_reason::CURVATURE_RATE: return "curvature_rate";
+    case Stop_reason::DISPLACEMENT: return "displacement";
+    case Stop_reason::STEADY_STATE: return "steady_state";
+    case Stop_reason::CALLBACK: return "callback";
+    default: return "failure";
+  }
+}
+
+/// \ingroup PkgAnisotropicFairingRef
+/// Short snake_case name of a status.
+inline const char* to_string(Fairing_status s)
+{
+  switch(s)
+  {
+    case Fairing_status::SUCCESS: return "success";
+    case Fairing_status::SOLVER_FAILED: return "solver_failed";
+    case Fairing_status::NON_FINITE_VALUE: return "non_finite_value";
+    case Fairing_status::DEGENERATE_METRIC: return "degenerate_metric";
+    default: return "collapsed";
+  }
+}
+
+/*!
+\ingroup PkgAnisotropicFairingRef
+Statistics of one time step \f$t_{n-1} \to t_n\f$; the geometric quantities are those of the surface
+\f$M(t_n)\f$ reached by the step (area, energy and \f$\int|H|^2\f$ of step 0 are in `Fairing_report::initial`).
+*/
+struct Fairing_step
+{
+  std::size_t step = 0;         ///< n (1 for the first step)
+  double time = 0;              ///< \f$t_n = n\tau\f$, model units
+  int solver_iterations = 0;    ///< CG iterations (the largest over the columns), 1 for a direct solve
+  double residual = 0;          ///< largest relative residual \f$\|b - AX\|/\|b\|\f$ over the columns
+  double area = 0;              ///< area of the surface
+  double energy = 0;            ///< \f$\mathrm{trace}(X^T L(D) X)\f$: the Dirichlet energy (2 area when D = I)
+  double H_integral = 0;        ///< \f$\int |H|^2 dA\f$ (mean-curvature vector H, \f$\Delta x = 2H\f$)
+  double max_displacement = 0;  ///< \f$\max_i |x_i(t_n) - x_i(0)|\f$ over the control points, model units
+  double step_displacement = 0; ///< \f$\max_i |x_i(t_n) - x_i(t_{n-1})|\f$, model units
+  double assemble_seconds = 0;  ///< wall time to assemble the system of this step
+  double solve_seconds = 0;     ///< wall time to solve it
+};
+
+/*!
+\ingroup PkgAnisotropicFairingRef
+The result of `anisotropic_fairing()`.
+*/
+struct Fairing_report
+{
+  Fairing_status status = Fairing_status::SUCCESS; ///< how the run ended
+  Stop_reason stop_reason = Stop_reason::MAXIMUM_STEPS; ///< why it ended
+  std::string message;            ///< a one-line explanation of a failure (empty on success)
+  std::vector<Fairing_step> steps;///< one entry per completed step
+  Fairing_step initial;           ///< area, energy and \f$\int|H|^2\f$ of the input surface (step 0)
+  double scale = 0;               ///< \f$\ell = \sqrt{\mathrm{Area}(M(0))/4\pi}\f$, the length unit of relative parameters
+  double time_step = 0;           ///< \f$\tau\f$ in model units
+  double fidelity_weight = 0;     ///< \f$\omega\f$ in model units (1/time)
+  double mean_edge_length = 0;    ///< h of the input mesh; \f$\tau/h^2\f$ governs the linear solver's work
+  bool used_cholesky = false;     ///< which solver ran
+  std::size_t vertices = 0;       ///< number of vertices
+  std::size_t faces = 0;          ///< number of faces
+  std::size_t constrained_vertices = 0; ///< vertices held fixed
+  double setup_seconds = 0;       ///< element and pattern set-up
+  double total_seconds = 0;       ///< the whole call
+
+  /// true when the result was written back
+  bool succeeded() const { return status == Fairing_status::SUCCESS; }
+};
+
+} // namespace Anisotropic_fairing
+} // namespace CGAL
+
+#endif // CGAL_ANISOTROPIC_FAIRING_FAIRING_REPORT_H

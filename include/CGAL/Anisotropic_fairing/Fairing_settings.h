@@ -1,0 +1,86 @@
+// Copyright (c) 2026 Anisotropic_fairing developers.
+// SPDX-License-Identifier: GPL-3.0-or-later
+//
+// The choices a caller of anisotropic_fairing() makes besides plain numbers: which element, which
+// positions to write back, which linear solver, and when to stop. Passed as named parameters.
+
+#ifndef CGAL_ANISOTROPIC_FAIRING_FAIRING_SETTINGS_H
+#define CGAL_ANISOTROPIC_FAIRING_FAIRING_SETTINGS_H
+
+namespace CGAL {
+namespace Anisotropic_fairing {
+
+/// \ingroup PkgAnisotropicFairingRef
+/// The finite element that discretises the diffusion (named parameter `finite_element`).
+enum class Finite_element {
+  LOOP,   ///< Loop-subdivision limit-surface elements (Bajaj & Xu): smooth, the default
+  LINEAR  ///< piecewise-linear (P1) hat functions on the mesh itself: consistent mass, cotangent stiffness (Clarenz et al.)
+};
+
+/// \ingroup PkgAnisotropicFairingRef
+/// What is written into the point map after fairing (named parameter `output_positions`).
+enum class Output_positions {
+  /// the points of the faired smooth surface at the vertices (the Loop limit points; the vertices
+  /// themselves for the linear element). The default: the output mesh interpolates the faired surface.
+  LIMIT_SURFACE,
+  /// the faired control points: the mesh whose Loop limit surface is the faired surface.
+  /// Choose this to subdivide, resample or fair again without shrinking by the limit masks.
+  CONTROL_POINTS
+};
+
+/// \ingroup PkgAnisotropicFairingRef
+/// The solver of the symmetric positive definite system of each step (named parameter `linear_solver`).
+enum class Linear_solver {
+  /// conjugate gradients preconditioned by the diagonal, warm-started from the previous step, all
+  /// columns in one block; linear cost per step
+  CONJUGATE_GRADIENT,
+  /// sparse LDL^T (Eigen's `SimplicialLDLT`); the symbolic analysis is done once, only the numeric
+  /// factorisation is repeated; exact, but its cost grows faster than linearly with the mesh size
+  CHOLESKY,
+  /// `CHOLESKY` up to `automatic_cholesky_limit` free vertices, `CONJUGATE_GRADIENT` above (the default)
+  AUTOMATIC
+};
+
+/// \ingroup PkgAnisotropicFairingRef
+/// Below this number of free vertices `Linear_solver::AUTOMATIC` factorises (measured cross-over, see the user manual).
+constexpr int automatic_cholesky_limit = 6000;
+
+/*!
+\ingroup PkgAnisotropicFairingRef
+The stopping criteria (27)-(29) of Bajaj & Xu and a steady-state test (named parameter `stopping_criteria`).
+
+The run ends after `number_of_iterations` steps or as soon as one enabled criterion holds after a step.
+With \f$\mathcal{H}(t) = \int_{M(t)} |H|^2 dA / \int_{M(0)} |H|^2 dA\f$ and its backward difference
+\f$\mathcal{H}'\f$ (so \f$\mathcal{H}'(0)\f$ is the first difference):
+- (27) \f$|\mathcal{H}'(t)/\mathcal{H}'(0)| \le\f$ `curvature_rate_ratio` (from the second step on);
+- (28) \f$|\mathcal{H}'(t)| \le\f$ `curvature_rate`;
+- (29) \f$\max_i |x_i(t) - x_i(0)| \ge\f$ `displacement` (control points);
+- steady state: \f$\max_i |x_i(t_{n+1}) - x_i(t_n)| / \tau \le\f$ `steady_speed` (the flow has stopped, e.g. balanced by the fidelity term).
+
+A criterion is disabled by a value \f$\le 0\f$. With `relative_units` (the default) the scale-dependent
+thresholds are measured with the model's scale \f$\ell = \sqrt{\mathrm{Area}(M(0))/4\pi}\f$ (the radius of
+the sphere of equal area): `displacement` in units of \f$\ell\f$, and time in units of \f$\ell^2\f$, so
+`curvature_rate` is per unit of \f$t/\ell^2\f$ and `steady_speed` in \f$\ell\f$ per unit of \f$t/\ell^2\f$.
+The defaults are the paper's values read on a unit-size model. With `relative_units = false` they are in model units.
+*/
+struct Stopping_criteria
+{
+  double curvature_rate_ratio = 0.005; ///< epsilon_1 of (27)
+  double curvature_rate = 8.0;         ///< epsilon_2 of (28)
+  double displacement = 0.2;           ///< epsilon_3 of (29)
+  double steady_speed = 1e-4;          ///< steady-state speed
+  bool relative_units = true;          ///< thresholds relative to the model's scale
+
+  /// no criterion: exactly `number_of_iterations` steps are taken (unless a failure or the callback stops the run)
+  static Stopping_criteria none()
+  {
+    Stopping_criteria s;
+    s.curvature_rate_ratio = s.curvature_rate = s.displacement = s.steady_speed = 0;
+    return s;
+  }
+};
+
+} // namespace Anisotropic_fairing
+} // namespace CGAL
+
+#endif // CGAL_ANISOTROPIC_FAIRING_FAIRING_SETTINGS_H

@@ -1,0 +1,197 @@
+// Copyright (c) 2026 Anisotropic_fairing developers.
+// SPDX-License-Identifier: GPL-3.0-or-later
+
+#ifndef CGAL_ANISOTROPIC_FAIRING_ANISOTROPIC_FAIRING_H
+#define CGAL_ANISOTROPIC_FAIRING_ANISOTROPIC_FAIRING_H
+
+#include <CGAL/Anisotropic_fairing/Fairing_report.h>
+#include <CGAL/Anisotropic_fairing/Fairing_settings.h>
+#include <CGAL/Anisotropic_fairing/Input_error.h>
+#include <CGAL/Anisotropic_fairing/Isotropic_diffusion_tensor.h>
+#include <CGAL/Anisotropic_fairing/named_function_parameters.h>
+#include <CGAL/Anisotropic_fairing/internal/Fairing_driver.h>
+
+#include <CGAL/boost/graph/properties.h>
+
+#include <type_traits>
+
+namespace CGAL {
+namespace Anisotropic_fairing {
+
+/*!
+\ingroup PkgAnisotropicFairingFunctions
+
+fairs the surface of `tm`, and the per-vertex attribute `attr_map` with it, by geometric diffusion
+discretised with Loop-subdivision finite elements (Bajaj & Xu 2003). Each step solves
+\f[ \big((1+\tau\omega) M + \tau L(D)\big)\, X_{n+1} = M\,(X_n + \tau\omega X_0) \f]
+where the control points \f$X\f$ are the vertices of `tm`, \f$M_{ij} = \int \phi_i\phi_j\,dA\f$ and
+\f$L_{ij} = \int D\nabla\phi_i\cdot\nabla\phi_j\,dA\f$ are integrated over the current limit
+surface \f$M(t_n)\f$, and \f$\omega\f$ pulls towards the input. With the default isotropic tensor the
+geometry follows mean-curvature flow \f$\partial_t x = \Delta_M x = 2H\f$. The attribute is carried
+along with the geometry's operator (every component solved with the same matrix).
+
+The result is written into `vpm` and `attr_map` only if the run succeeds; on failure (see
+`Fairing_report::status`) the mesh and maps are left exactly as they were.
+
+<b>Units.</b> By default the time step and the fidelity weight are relative to the model's scale
+\f$\ell = \sqrt{\mathrm{Area}/4\pi}\f$ of the input's limit surface (the radius of the sphere of equal
+area): \f$\tau = \tau_{rel}\,\ell^2\f$, \f$\omega = \omega_{rel}/\ell^2\f$. So the same parameters do
+the same thing to a model at any scale; with \f$\tau_{rel} = 10^{-3}\f$ a unit sphere loses about 0.4%
+of its area per step. `time_step` and `fidelity_weight` give them in model units instead, as in the paper.
+
+\tparam TriangleMesh a model of `FaceListGraph` (e.g. `CGAL::Surface_mesh`, `CGAL::Polyhedron_3`)
+\tparam VertexPointMap a model of `ReadWritePropertyMap` with `boost::graph_traits<TriangleMesh>::%vertex_descriptor`
+        as key and a CGAL `Point_3` as value
+\tparam VertexAttributeMap a model of `ReadWritePropertyMap` with the same key and a value type that
+        has a `Vector_attribute_traits` (numbers, `std::array`, Eigen vectors, CGAL points and vectors, `CGAL::IO::Color`)
+\tparam NamedParameters a sequence of named parameters, started from `CGAL::Anisotropic_fairing::parameters`
+        (which also accepts CGAL's own names)
+
+\param tm the mesh: closed, 2-manifold, triangles, every valence at least 3
+\param vpm its vertex positions, read and written
+\param attr_map per-vertex data faired with the geometry
+\param np optional named parameters among:
+
+\cgalNamedParamsBegin
+  \cgalParamNBegin{relative_time_step}
+    \cgalParamDescription{the time step \f$\tau\f$ in units of \f$\ell^2\f$}
+    \cgalParamType{double > 0} \cgalParamDefault{`1e-3`}
+  \cgalParamNEnd
+  \cgalParamNBegin{time_step}
+    \cgalParamDescription{the time step \f$\tau\f$ in model units (length squared); excludes `relative_time_step`}
+    \cgalParamType{double > 0} \cgalParamDefault{unused}
+  \cgalParamNEnd
+  \cgalParamNBegin{number_of_iterations}
+    \cgalParamDescription{the largest number of time steps; `stopping_criteria` may end the run earlier}
+    \cgalParamType{unsigned int} \cgalParamDefault{`10`}
+  \cgalParamNEnd
+  \cgalParamNBegin{relative_fidelity_weight}
+    \cgalParamDescription{\f$\omega\f$ in units of \f$1/\ell^2\f$ (0: pure diffusion). A sphere of radius \f$r_0\f$
+                          settles at \f$r^* = (r_0 + \sqrt{r_0^2 - 8/\omega})/2\f$ if \f$\omega \ge 8/r_0^2\f$ and collapses otherwise}
+    \cgalParamType{double >= 0} \cgalParamDefault{`0`}
+  \cgalParamNEnd
+  \cgalParamNBegin{fidelity_weight}
+    \cgalParamDescription{\f$\omega\f$ in model units (1/time); excludes `relative_fidelity_weight`}
+    \cgalParamType{double >= 0} \cgalParamDefault{unused}
+  \cgalParamNEnd
+  \cgalParamNBegin{stopping_criteria}
+    \cgalParamDescription{the criteria (27)-(29) and a steady-state test, relative to \f$\ell\f$ by default}
+    \cgalParamType{`Stopping_criteria`; `Stopping_criteria::none()` runs exactly `number_of_iterations` steps}
+    \cgalParamDefault{`Stopping_criteria()`: the paper's thresholds 0.005, 8 and 0.2 read at unit scale}
+  \cgalParamNEnd
+  \cgalParamNBegin{diffusion_tensor}
+    \cgalParamDescription{the tensor \f$D\f$}
+    \cgalParamType{a model of `DiffusionTensor`}
+    \cgalParamDefault{`Isotropic_diffusion_tensor()`}
+  \cgalParamNEnd
+  \cgalParamNBegin{vertex_is_constrained_map}
+    \cgalParamDescription{vertices that must not move (their control points and attributes are kept, and
+                          they are written back unchanged whatever `output_positions` says)}
+    \cgalParamType{a `ReadablePropertyMap` with `vertex_descriptor` key and `bool` value}
+    \cgalParamDefault{no vertex is constrained}
+  \cgalParamNEnd
+  \cgalParamNBegin{finite_element}
+    \cgalParamDescription{Loop limit-surface elements, or linear (P1) elements on the mesh itself}
+    \cgalParamType{`Finite_element`} \cgalParamDefault{`Finite_element::LOOP`}
+  \cgalParamNEnd
+  \cgalParamNBegin{output_positions}
+    \cgalParamDescription{what is written back: points of the faired limit surface at the vertices, or the faired control points}
+    \cgalParamType{`Output_positions`} \cgalParamDefault{`Output_positions::LIMIT_SURFACE`}
+  \cgalParamNEnd
+  \cgalParamNBegin{linear_solver}
+    \cgalParamDescription{the solver of each step's symmetric positive definite system}
+    \cgalParamType{`Linear_solver`} \cgalParamDefault{`Linear_solver::AUTOMATIC`}
+  \cgalParamNEnd
+  \cgalParamNBegin{solver_tolerance}
+    \cgalParamDescription{relative residual at which conjugate gradients stop}
+    \cgalParamType{double in (0, 1)} \cgalParamDefault{`1e-10`}
+  \cgalParamNEnd
+  \cgalParamNBegin{solver_maximum_iterations}
+    \cgalParamDescription{conjugate-gradient iterations after which the step fails}
+    \cgalParamType{int >= 1} \cgalParamDefault{`10000`}
+  \cgalParamNEnd
+  \cgalParamNBegin{callback}
+    \cgalParamDescription{called after every step with its `Fairing_step`; returning `false` ends the run (successfully)}
+    \cgalParamType{a functor `bool(const Fairing_step&)`} \cgalParamDefault{none}
+  \cgalParamNEnd
+  \cgalParamNBegin{verbose}
+    \cgalParamDescription{prints one line per step on `std::cerr`}
+    \cgalParamType{bool} \cgalParamDefault{`false`}
+  \cgalParamNEnd
+  \cgalParamNBegin{quadrature_degree}
+    \cgalParamDescription{degree of the Gauss rule on each face (Loop element)}
+    \cgalParamType{int, 4, 6 or 8} \cgalParamDefault{`8`}
+  \cgalParamNEnd
+  \cgalParamNBegin{quadrature_tiling_depth}
+    \cgalParamDescription{adaptive quadrature near extraordinary vertices (see `Loop_limit_surface`)}
+    \cgalParamType{int in [0, 12]} \cgalParamDefault{`0`}
+  \cgalParamNEnd
+\cgalNamedParamsEnd
+
+\returns a `Fairing_report`: the status, why the run stopped, and per step the solver's iterations and
+         residual, the area, energy, \f$\int|H|^2\f$, displacement and timings.
+\throws Input_error, before anything is modified, if the mesh is not a closed 2-manifold triangle mesh
+        with valences \f$\geq 3\f$, if a coordinate or attribute is not finite, if attribute dimensions differ,
+        or if a parameter is out of range.
+*/
+template <typename TriangleMesh, typename VertexPointMap, typename VertexAttributeMap,
+          typename NamedParameters = parameters::Default_named_parameters>
+#ifdef DOXYGEN_RUNNING
+Fairing_report
+#else
+typename std::enable_if<!internal::is_named_parameters<VertexAttributeMap>::value, Fairing_report>::type
+#endif
+anisotropic_fairing(TriangleMesh& tm, VertexPointMap vpm, VertexAttributeMap attr_map,
+                    const NamedParameters& np = parameters::default_values())
+{
+  static_assert(parameters::is_default_parameter<NamedParameters, CGAL::internal_np::vertex_point_t>::value,
+                "the point map is the second argument: do not also pass vertex_point_map");
+  return internal::fair(tm, vpm, attr_map, np);
+}
+
+/*!
+\ingroup PkgAnisotropicFairingFunctions
+as above, with the point map given by the named parameter `vertex_point_map`
+(default: `get(CGAL::vertex_point, tm)`).
+*/
+template <typename TriangleMesh, typename VertexAttributeMap,
+          typename NamedParameters = parameters::Default_named_parameters>
+#ifdef DOXYGEN_RUNNING
+Fairing_report
+#else
+typename std::enable_if<!internal::is_named_parameters<VertexAttributeMap>::value &&
+                        internal::is_named_parameters<NamedParameters>::value, Fairing_report>::type
+#endif
+anisotropic_fairing(TriangleMesh& tm, VertexAttributeMap attr_map,
+                    const NamedParameters& np = parameters::default_values())
+{
+  using parameters::choose_parameter;
+  using parameters::get_parameter;
+  return internal::fair(tm, choose_parameter(get_parameter(np, CGAL::internal_np::vertex_point),
+                                             get_property_map(CGAL::vertex_point, tm)), attr_map, np);
+}
+
+/*!
+\ingroup PkgAnisotropicFairingFunctions
+fairs the geometry only; the point map is given by the named parameter `vertex_point_map`
+(default: `get(CGAL::vertex_point, tm)`). Other parameters, result and errors as above.
+*/
+template <typename TriangleMesh, typename NamedParameters = parameters::Default_named_parameters>
+#ifdef DOXYGEN_RUNNING
+Fairing_report
+#else
+typename std::enable_if<internal::is_named_parameters<NamedParameters>::value, Fairing_report>::type
+#endif
+anisotropic_fairing(TriangleMesh& tm, const NamedParameters& np = parameters::default_values())
+{
+  using parameters::choose_parameter;
+  using parameters::get_parameter;
+  return internal::fair(tm, choose_parameter(get_parameter(np, CGAL::internal_np::vertex_point),
+                                             get_property_map(CGAL::vertex_point, tm)),
+                        internal::No_attributes(), np);
+}
+
+} // namespace Anisotropic_fairing
+} // namespace CGAL
+
+#endif // CGAL_ANISOTROPIC_FAIRING_ANISOTROPIC_FAIRING_H

@@ -1,0 +1,183 @@
+// Copyright (c) 2026 Anisotropic_fairing developers.
+// SPDX-License-Identifier: GPL-3.0-or-later
+//
+// Everything anisotropic_fairing() does between reading the named parameters and returning:
+// validate, read the maps into matrices, pick the element, run the time stepper, and write the
+// result back only if the run succeeded.
+
+#ifndef CGAL_ANISOTROPIC_FAIRING_INTERNAL_FAIRING_DRIVER_H
+#define CGAL_ANISOTROPIC_FAIRING_INTERNAL_FAIRING_DRIVER_H
+
+#include <CGAL/Anisotropic_fairing/Fairing_report.h>
+#include <CGAL/Anisotropic_fairing/Fairing_settings.h>
+#include <CGAL/Anisotropic_fairing/Input_error.h>
+#include <CGAL/Anisotropic_fairing/Isotropic_diffusion_tensor.h>
+#include <CGAL/Anisotropic_fairing/Vector_attribute_traits.h>
+#include <CGAL/Anisotropic_fairing/named_function_parameters.h>
+#include <CGAL/Anisotropic_fairing/internal/Indexed_mesh.h>
+#include <CGAL/Anisotropic_fairing/internal/Linear_element_cache.h>
+#include <CGAL/Anisotropic_fairing/internal/Patch_cache.h>
+#include <CGAL/Anisotropic_fairing/internal/Time_stepper.h>
+#include <CGAL/Anisotropic_fairing/internal/Vertex_limit_masks.h>
+
+#include <CGAL/property_map.h>
+
+#include <boost/graph/graph_traits.hpp>
+#include <boost/property_map/property_map.hpp>
+
+#include <cmath>
+#include <string>
+#include <type_traits>
+#include <utility>
+#include <vector>
+
+namespace CGAL {
+namespace Anisotropic_fairing {
+namespace internal {
+
+/// True for CGAL named-parameter packs (ours derive from CGAL's).
+template <typename T, typename Tag, typename Base>
+std::true_type named_parameters_test(const CGAL::Named_function_parameters<T, Tag, Base>*);
+std::false_type named_parameters_test(...);
+template <typename X>
+struct is_named_parameters : decltype(named_parameters_test(static_cast<const X*>(nullptr))) {};
+
+/// Stands for "no attribute map" (geometry-only fairing).
+struct No_attributes {};
+
+template <typename Mesh>
+Control_matrix read_attribute_columns(const Indexed_mesh<Mesh>&, No_attributes) { return Control_matrix(); }
+template <typename Mesh, typename AttributeMap>
+Control_matrix read_attribute_columns(const Indexed_mesh<Mesh>& im, AttributeMap map) { return im.read_attributes(map); }
+
+template <typename Mesh>
+void write_attribute_columns(const Indexed_mesh<Mesh>&, No_attributes, const Control_matrix&, Eigen::Index, const std::vector<bool>&) {}
+template <typename Mesh, typename AttributeMap>
+void write_attribute_columns(const Indexed_mesh<Mesh>& im, AttributeMap map, const Control_matrix& X, Eigen::Index first,
+                             const std::vector<bool>& keep)
+{
+  typedef typename boost::property_traits<AttributeMap>::value_type Value;
+  std::vector<Value> values;
+  values.reserve(im.number_of_vertices());
+  for(std::size_t i = 0; i < im.number_of_vertices(); ++i)
+    values.push_back(Vector_attribute_traits<Value>::make(get(map, im.vertex(i)), X.row(Eigen::Index(i)).data() + first));
+  for(std::size_t i = 0; i < im.number_of_vertices(); ++i)
+    if(!keep[i]) put(map, im.vertex(i), values[i]);
+}
+
+inline void check_parameter(bool ok, const std::string& message)
+{
+  if(!ok) throw Input_error(Input_error::INVALID_PARAMETER, Input_error::no_element, message);
+}
+
+template <typename Cache, typename Tensor, typename Callback>
+Fairing_report run_stepper(const Cache& cache, Control_matrix& X, const std::vector<bool>& constrained,
+                           const Tensor& tensor, const Stepper_settings& s, Callback& callback)
+{
+  Time_stepper<Cache> stepper(cache, std::size_t(X.rows()), constrained);
+  return stepper.run(X, 3, tensor, s, callback);
+}
+
+template <typename TriangleMesh, typename VertexPointMap, typename AttributeMap, typename NamedParameters>
+Fairing_report fair(TriangleMesh& tm, VertexPointMap vpm, AttributeMap attributes, const NamedParameters& np)
+{
+  using parameters::choose_parameter;
+  using parameters::get_parameter;
+  using parameters::is_default_parameter;
+  typedef typename boost::graph_traits<TriangleMesh>::vertex_descriptor vertex_descriptor;
+  typedef typename boost::property_traits<VertexPointMap>::value_type Point;
+  Stopwatch total;
+
+  // parameters
+  Stepper_settings s;
+  const bool absolute_tau = !is_default_parameter<NamedParameters, internal_np::time_step_t>::value;
+  const bool relative_tau = !is_default_parameter<NamedParameters, internal_np::relative_time_step_t>::value;
+  check_parameter(!(absolute_tau && relative_tau), "give either time_step or relative_time_step, not both");
+  s.relative_time_step = !absolute_tau;
+  s.time_step = absolute_tau ? double(choose_parameter(get_parameter(np, internal_np::time_step), 0.0))
+                             : double(choose_parameter(get_parameter(np, internal_np::relative_time_step), 1e-3));
+  check_parameter(std::isfinite(s.time_step) && s.time_step > 0, "the time step must be positive and finite");
+  const bool absolute_w = !is_default_parameter<NamedParameters, internal_np::fidelity_weight_t>::value;
+  const bool relative_w = !is_default_parameter<NamedParameters, internal_np::relative_fidelity_weight_t>::value;
+  check_parameter(!(absolute_w && relative_w), "give either fidelity_weight or relative_fidelity_weight, not both");
+  s.relative_fidelity = !absolute_w;
+  s.fidelity_weight = absolute_w ? double(choose_parameter(get_parameter(np, internal_np::fidelity_weight), 0.0))
+                                 : double(choose_parameter(get_parameter(np, internal_np::relative_fidelity_weight), 0.0));
+  check_parameter(std::isfinite(s.fidelity_weight) && s.fidelity_weight >= 0, "the fidelity weight must be finite and >= 0");
+  s.maximum_steps = std::size_t(choose_parameter(get_parameter(np, CGAL::internal_np::number_of_iterations), 10u));
+  s.stopping = choose_parameter(get_parameter(np, internal_np::stopping_criteria), Stopping_criteria());
+  check_parameter(std::isfinite(s.stopping.curvature_rate_ratio) && std::isfinite(s.stopping.curvature_rate) &&
+                  std::isfinite(s.stopping.displacement) && std::isfinite(s.stopping.steady_speed),
+                  "stopping thresholds must be finite");
+  s.solver = choose_parameter(get_parameter(np, internal_np::linear_solver), Linear_solver::AUTOMATIC);
+  s.solver_tolerance = choose_parameter(get_parameter(np, internal_np::solver_tolerance), 1e-10);
+  check_parameter(s.solver_tolerance > 0 && s.solver_tolerance < 1, "the solver tolerance must lie in (0, 1)");
+  s.solver_maximum_iterations = choose_parameter(get_parameter(np, internal_np::solver_maximum_iterations), 10000);
+  check_parameter(s.solver_maximum_iterations >= 1, "the solver needs at least one iteration");
+  s.verbose = choose_parameter(get_parameter(np, CGAL::internal_np::verbose), false);
+  const Finite_element element = choose_parameter(get_parameter(np, internal_np::finite_element), Finite_element::LOOP);
+  const Output_positions output = choose_parameter(get_parameter(np, internal_np::output_positions), Output_positions::LIMIT_SURFACE);
+  Quadrature_spec spec;
+  spec.degree = choose_parameter(get_parameter(np, internal_np::quadrature_degree), 8);
+  spec.tiling_depth = choose_parameter(get_parameter(np, internal_np::quadrature_tiling_depth), 0);
+  const auto tensor = choose_parameter(get_parameter(np, internal_np::diffusion_tensor), Isotropic_diffusion_tensor());
+  auto vcm = choose_parameter(get_parameter(np, CGAL::internal_np::vertex_is_constrained),
+                              CGAL::Static_boolean_property_map<vertex_descriptor, false>());
+  auto callback = choose_parameter(get_parameter(np, CGAL::internal_np::callback),
+                                   [](const Fairing_step&) { return true; });
+
+  // input, read and checked before anything is touched
+  const Indexed_mesh<TriangleMesh> im(tm);
+  Control_matrix P = im.read_points(vpm);
+  const Control_matrix A = read_attribute_columns(im, attributes);
+  const std::size_t n = im.number_of_vertices();
+  Control_matrix X(Eigen::Index(n), 3 + A.cols());
+  X.leftCols(3) = P;
+  if(A.cols() > 0) X.rightCols(A.cols()) = A;
+  std::vector<bool> constrained(n);
+  for(std::size_t i = 0; i < n; ++i) constrained[i] = bool(get(vcm, im.vertex(i)));
+
+  Stopwatch setup;
+  Fairing_report report;
+  double setup_seconds = 0;
+  if(element == Finite_element::LOOP)
+  {
+    Patch_cache cache(im.topology());
+    cache.prepare_quadrature(spec);
+    setup_seconds = setup.seconds();
+    report = run_stepper(cache, X, constrained, tensor, s, callback);
+    if(report.succeeded() && output == Output_positions::LIMIT_SURFACE)
+    {
+      Control_matrix limit(X.rows(), X.cols());
+      for(std::size_t i = 0; i < n; ++i) vertex_limit_value(im.topology(), X, int(i), limit.row(Eigen::Index(i)).data());
+      X.swap(limit);
+    }
+  }
+  else
+  {
+    Linear_element_cache cache(im.topology());
+    setup_seconds = setup.seconds();
+    report = run_stepper(cache, X, constrained, tensor, s, callback);
+  }
+  report.faces = im.number_of_faces();
+  report.setup_seconds = setup_seconds;
+
+  if(report.succeeded())
+  {
+    for(std::size_t i = 0; i < n; ++i)
+      if(!constrained[i])
+      {
+        const Eigen::Index r = Eigen::Index(i);
+        put(vpm, im.vertex(i), Point(X(r, 0), X(r, 1), X(r, 2)));
+      }
+    write_attribute_columns(im, attributes, X, 3, constrained);
+  }
+  report.total_seconds = total.seconds();
+  return report;
+}
+
+} // namespace internal
+} // namespace Anisotropic_fairing
+} // namespace CGAL
+
+#endif // CGAL_ANISOTROPIC_FAIRING_INTERNAL_FAIRING_DRIVER_H

@@ -1,0 +1,240 @@
+// Copyright (c) 2026 Anisotropic_fairing developers.
+// SPDX-License-Identifier: GPL-3.0-or-later
+//
+// One pass over the faces of the current surface assembles the mass matrix M_ij = (phi_i, phi_j),
+// the stiffness L_ij = (D grad phi_i, grad phi_j) (integrand d phi_i^T A_q d phi_j, Bajaj & Xu eq. 25)
+// and the diagnostics of the step: area, Dirichlet energy trace(X^T L X), int |H|^2, and whether the
+// metric degenerated. It works on any element cache (Loop patches or P1 faces) and any diffusion
+// tensor; both matrices share the fixed ring pattern, so only their values are written.
+
+#ifndef CGAL_ANISOTROPIC_FAIRING_INTERNAL_FEM_ASSEMBLY_H
+#define CGAL_ANISOTROPIC_FAIRING_INTERNAL_FEM_ASSEMBLY_H
+
+#include <CGAL/Anisotropic_fairing/Quadrature_point_geometry.h>
+#include <CGAL/Anisotropic_fairing/internal/Mass_assembly.h>
+#include <CGAL/Anisotropic_fairing/internal/Sparse_pattern.h>
+
+#ifdef CGAL_LINKED_WITH_TBB
+#include <tbb/parallel_for.h>
+#include <tbb/task_arena.h>
+#endif
+
+#include <Eigen/Dense>
+#include <Eigen/SparseCore>
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <vector>
+
+namespace CGAL {
+namespace Anisotropic_fairing {
+namespace internal {
+
+struct Assembly_statistics
+{
+  double area = 0;
+  double energy = 0;       // trace(X^T L X) over the metric columns = sum_q c_q tr(A_q G_q)
+  double H_integral = 0;   // int |H|^2 dA
+  bool degenerate = false; // sqrt(det G) <= 0 or not finite somewhere
+  std::size_t degenerate_face = 0;
+
+  void add(const Assembly_statistics& o)
+  {
+    area += o.area; energy += o.energy; H_integral += o.H_integral;
+    if(o.degenerate && !degenerate) { degenerate = true; degenerate_face = o.degenerate_face; }
+  }
+};
+
+template <typename Cache>
+class Fem_assembler
+{
+public:
+  Fem_assembler(const Cache& cache, std::size_t number_of_vertices)
+    : cache_(cache), pattern_(ring_sparsity_pattern(cache, number_of_vertices))
+  {
+#ifdef CGAL_LINKED_WITH_TBB
+    chunks_ = std::max(1, tbb::this_task_arena::max_concurrency());
+#endif
+    chunks_ = int(std::min<std::size_t>(std::size_t(chunks_), std::max<std::size_t>(1, cache.number_of_faces() / 256)));
+    partial_.resize(std::size_t(chunks_ - 1) * 2);
+  }
+
+  /// The symmetric pattern (all values zero) that M and L fill: value arrays index its non-zeros.
+  const Eigen::SparseMatrix<double>& pattern() const { return pattern_; }
+  std::size_t number_of_nonzeros() const { return std::size_t(pattern_.nonZeros()); }
+
+  /// Assembles M and L (value arrays over pattern()) on the surface whose control points are the
+  /// first `metric_columns` columns of X.
+  template <typename Tensor>
+  Assembly_statistics assemble(const Control_matrix& X, int metric_columns, const Tensor& tensor,
+                               std::vector<double>& M, std::vector<double>& L)
+  {
+    const std::size_t nnz = number_of_nonzeros(), nf = cache_.number_of_faces();
+    M.assign(nnz, 0.0);
+    L.assign(nnz, 0.0);
+    std::vector<Assembly_statistics> stats{ std::size_t(chunks_) };
+    auto run_chunk = [&](int k) {
+      double* mv = M.data();
+      double* lv = L.data();
+      if(k > 0)
+      {
+        std::vector<double>& pm = partial_[2 * std::size_t(k - 1)];
+        std::vector<double>& pl = partial_[2 * std::size_t(k - 1) + 1];
+        pm.assign(nnz, 0.0); pl.assign(nnz, 0.0);
+        mv = pm.data(); lv = pl.data();
+      }
+      Workspace ws;
+      const std::size_t begin = nf * std::size_t(k) / std::size_t(chunks_);
+      const std::size_t end = nf * std::size_t(k + 1) / std::size_t(chunks_);
+      for(std::size_t f = begin; f < end; ++f)
+        assemble_face(f, X, metric_columns, tensor, ws, mv, lv, stats[std::size_t(k)]);
+    };
+#ifdef CGAL_LINKED_WITH_TBB
+    if(chunks_ > 1)
+      tbb::parallel_for(0, chunks_, run_chunk);
+    else
+#endif
+      for(int k = 0; k < chunks_; ++k) run_chunk(k);
+    for(int k = 1; k < chunks_; ++k)
+    {
+      const std::vector<double>& pm = partial_[2 * std::size_t(k - 1)];
+      const std::vector<double>& pl = partial_[2 * std::size_t(k - 1) + 1];
+      for(std::size_t p = 0; p < nnz; ++p) { M[p] += pm[p]; L[p] += pl[p]; }
+    }
+    Assembly_statistics total;
+    for(const Assembly_statistics& s : stats) total.add(s);
+    if(!Cache::has_second_derivatives) total.H_integral = discrete_H_integral(X, metric_columns, M, L);
+    return total;
+  }
+
+private:
+  struct Workspace
+  {
+    Control_matrix Xr, T[5];
+    Eigen::MatrixXd Bm, Bl, localM, localL;
+    std::vector<int> order;
+  };
+
+  template <typename Tensor>
+  void assemble_face(std::size_t f, const Control_matrix& X, int kappa, const Tensor& tensor, Workspace& ws,
+                     double* mv, double* lv, Assembly_statistics& stats) const
+  {
+    const int m = cache_.ring_size(f);
+    const int* ring = cache_.ring(f);
+    const int cat = cache_.category(f);
+    ws.Xr.resize(m, kappa);
+    for(int k = 0; k < m; ++k) ws.Xr.row(k) = X.row(ring[k]).head(kappa);
+    const int derivative_rows = Cache::has_second_derivatives ? 5 : 2;
+    for(int r = 0; r < derivative_rows; ++r) ws.T[r].noalias() = cache_.quadrature_rows(cat, D1 + r) * ws.Xr;
+    const auto& S0 = cache_.quadrature_rows(cat, VALUE);
+    const auto& S1 = cache_.quadrature_rows(cat, D1);
+    const auto& S2 = cache_.quadrature_rows(cat, D2);
+    const Eigen::VectorXd& w = cache_.quadrature_weights(cat);
+    const Eigen::Index nq = w.size();
+    ws.Bm.resize(nq, m);
+    ws.Bl.resize(2 * nq, m);
+    static const double zero[16] = { 0 };
+    std::vector<double> zeros;
+    if(!Cache::has_second_derivatives && kappa > 16) zeros.assign(std::size_t(kappa), 0.0);
+    const double* no_second = (kappa > 16) ? zeros.data() : zero;
+
+    Quadrature_point_geometry g;
+    g.face = f; g.dimension = kappa; g.ring = ring; g.ring_size = m;
+    for(Eigen::Index q = 0; q < nq; ++q)
+    {
+      const double* t1 = ws.T[0].row(q).data();
+      const double* t2 = ws.T[1].row(q).data();
+      double g11 = 0, g12 = 0, g22 = 0;
+      for(int c = 0; c < kappa; ++c) { g11 += t1[c] * t1[c]; g12 += t1[c] * t2[c]; g22 += t2[c] * t2[c]; }
+      const double det = g11 * g22 - g12 * g12;
+      if(!(det > 0) || !std::isfinite(det))
+      {
+        if(!stats.degenerate) { stats.degenerate = true; stats.degenerate_face = f; }
+        ws.Bm.row(q).setZero(); ws.Bl.row(2 * q).setZero(); ws.Bl.row(2 * q + 1).setZero();
+        continue;
+      }
+      const double c = w[q] * std::sqrt(det);
+      g.point = int(q); g.t1 = t1; g.t2 = t2;
+      g.t11 = Cache::has_second_derivatives ? ws.T[2].row(q).data() : no_second;
+      g.t12 = Cache::has_second_derivatives ? ws.T[3].row(q).data() : no_second;
+      g.t22 = Cache::has_second_derivatives ? ws.T[4].row(q).data() : no_second;
+      g.g11 = g11; g.g12 = g12; g.g22 = g22; g.det = det;
+      g.basis = S0.row(q).data();
+      const Parametric_tensor A = tensor(g);
+
+      stats.area += c;
+      stats.energy += c * (A.a11 * g11 + 2 * A.a12 * g12 + A.a22 * g22);
+      if(Cache::has_second_derivatives) stats.H_integral += c * mean_curvature_squared(g);
+
+      ws.Bm.row(q) = std::sqrt(c) * S0.row(q);
+      // c A = R R^T (2x2 Cholesky; A is positive semi-definite), then d phi^T (cA) d phi = |R^T d phi|^2
+      const double b11 = c * A.a11, b12 = c * A.a12, b22 = c * A.a22;
+      const double r11 = b11 > 0 ? std::sqrt(b11) : 0.0;
+      const double r21 = r11 > 0 ? b12 / r11 : 0.0;
+      const double r22 = std::sqrt(std::max(0.0, b22 - r21 * r21));
+      ws.Bl.row(2 * q) = r11 * S1.row(q) + r21 * S2.row(q);
+      ws.Bl.row(2 * q + 1) = r22 * S2.row(q);
+    }
+    ws.localM.setZero(m, m);
+    ws.localM.template selfadjointView<Eigen::Lower>().rankUpdate(ws.Bm.transpose());
+    ws.localL.setZero(m, m);
+    ws.localL.template selfadjointView<Eigen::Lower>().rankUpdate(ws.Bl.transpose());
+    const Eigen::MatrixXd* const locals[2] = { &ws.localM, &ws.localL };
+    double* const values[2] = { mv, lv };
+    scatter_local_matrices<2>(locals, ring, m, ws.order, pattern_.outerIndexPtr(), pattern_.innerIndexPtr(), values);
+  }
+
+  // |H|^2 with H = Q (g22 t11 + g11 t22 - 2 g12 t12) / (2 det G), Q the projection on the normal space
+  static double mean_curvature_squared(const Quadrature_point_geometry& g)
+  {
+    const int k = g.dimension;
+    double v[16];
+    std::vector<double> big;
+    double* h = v;
+    if(k > 16) { big.resize(std::size_t(k)); h = big.data(); }
+    double d1 = 0, d2 = 0;
+    for(int c = 0; c < k; ++c)
+    {
+      h[c] = (g.g22 * g.t11[c] + g.g11 * g.t22[c] - 2 * g.g12 * g.t12[c]) / (2 * g.det);
+      d1 += g.t1[c] * h[c]; d2 += g.t2[c] * h[c];
+    }
+    const double a1 = (g.g22 * d1 - g.g12 * d2) / g.det, a2 = (g.g11 * d2 - g.g12 * d1) / g.det;
+    double s = 0;
+    for(int c = 0; c < k; ++c) { const double n = h[c] - a1 * g.t1[c] - a2 * g.t2[c]; s += n * n; }
+    return s;
+  }
+
+  // Without second derivatives (P1): the discrete mean-curvature vector at vertex i is
+  // H_i = -(L X)_i / (2 A_i) with A_i = sum_j M_ij, so int |H|^2 ~ sum_i |(L X)_i|^2 / (4 A_i).
+  double discrete_H_integral(const Control_matrix& X, int kappa, const std::vector<double>& M,
+                             const std::vector<double>& L) const
+  {
+    const Eigen::Index n = pattern_.cols();
+    const int* outer = pattern_.outerIndexPtr();
+    const int* rows = pattern_.innerIndexPtr();
+    Eigen::MatrixXd LX = Eigen::MatrixXd::Zero(n, kappa);
+    Eigen::VectorXd area = Eigen::VectorXd::Zero(n);
+    for(Eigen::Index j = 0; j < n; ++j)
+      for(int p = outer[j]; p < outer[j + 1]; ++p)
+      {
+        area[rows[p]] += M[std::size_t(p)];
+        LX.row(rows[p]) += L[std::size_t(p)] * X.row(j).head(kappa);
+      }
+    double s = 0;
+    for(Eigen::Index i = 0; i < n; ++i)
+      if(area[i] > 0) s += LX.row(i).squaredNorm() / (4 * area[i]);
+    return s;
+  }
+
+  const Cache& cache_;
+  Eigen::SparseMatrix<double> pattern_;
+  int chunks_ = 1;
+  std::vector<std::vector<double>> partial_;
+};
+
+} // namespace internal
+} // namespace Anisotropic_fairing
+} // namespace CGAL
+
+#endif // CGAL_ANISOTROPIC_FAIRING_INTERNAL_FEM_ASSEMBLY_H

@@ -1,0 +1,218 @@
+// Copyright (c) 2026 Anisotropic_fairing developers.
+// SPDX-License-Identifier: GPL-3.0-or-later
+//
+// The two solvers of the symmetric positive definite system of a time step, behind one interface:
+// block conjugate gradients with a diagonal preconditioner (every column shares each product with
+// the matrix), and a sparse LDL^T whose symbolic analysis is done once because the pattern is fixed
+// by the topology. Both solve for the step's displacement, whose right-hand side does not depend on
+// where the model sits in space, so a relative residual means the same on every model.
+
+#ifndef CGAL_ANISOTROPIC_FAIRING_INTERNAL_SPD_SOLVERS_H
+#define CGAL_ANISOTROPIC_FAIRING_INTERNAL_SPD_SOLVERS_H
+
+#include <Eigen/Core>
+#include <Eigen/SparseCholesky>
+#include <Eigen/SparseCore>
+
+#ifdef CGAL_LINKED_WITH_TBB
+#include <tbb/blocked_range.h>
+#include <tbb/parallel_for.h>
+#endif
+
+#include <algorithm>
+#include <cmath>
+#include <string>
+#include <vector>
+
+namespace CGAL {
+namespace Anisotropic_fairing {
+namespace internal {
+
+typedef Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, Eigen::RowMajor> Dense_block;
+
+struct Solve_statistics
+{
+  bool ok = true;
+  int iterations = 0;
+  double residual = 0;   // largest relative residual over the columns
+  std::string message;
+};
+
+/// Y = A X for a symmetric matrix stored in full (column j = row j), X and Y with one row per unknown.
+inline void symmetric_product(const Eigen::SparseMatrix<double>& A, const Dense_block& X, Dense_block& Y)
+{
+  Y.resize(X.rows(), X.cols());
+  const int* outer = A.outerIndexPtr();
+  const int* rows = A.innerIndexPtr();
+  const double* values = A.valuePtr();
+  const Eigen::Index k = X.cols();
+  auto range = [&](Eigen::Index begin, Eigen::Index end) {
+    for(Eigen::Index i = begin; i < end; ++i)
+    {
+      double* y = Y.row(i).data();
+      std::fill(y, y + k, 0.0);
+      for(int p = outer[i]; p < outer[i + 1]; ++p)
+      {
+        const double a = values[p];
+        const double* x = X.row(rows[p]).data();
+        for(Eigen::Index c = 0; c < k; ++c) y[c] += a * x[c];
+      }
+    }
+  };
+#ifdef CGAL_LINKED_WITH_TBB
+  if(X.rows() > 20000)
+  {
+    tbb::parallel_for(tbb::blocked_range<Eigen::Index>(0, X.rows(), 4096),
+                      [&](const tbb::blocked_range<Eigen::Index>& r) { range(r.begin(), r.end()); });
+    return;
+  }
+#endif
+  range(0, X.rows());
+}
+
+class Spd_solver
+{
+public:
+  virtual ~Spd_solver() {}
+  /// Solves A X = B; X holds the initial guess on entry (used by iterative solvers).
+  virtual Solve_statistics solve(const Eigen::SparseMatrix<double>& A, const Dense_block& B, Dense_block& X) = 0;
+};
+
+/// Jacobi-preconditioned conjugate gradients on all columns at once; a column stops updating once
+/// its residual is below tolerance * |b|.
+class Block_conjugate_gradient : public Spd_solver
+{
+public:
+  Block_conjugate_gradient(double tolerance, int max_iterations)
+    : tolerance_(tolerance), max_iterations_(max_iterations) {}
+
+  Solve_statistics solve(const Eigen::SparseMatrix<double>& A, const Dense_block& B, Dense_block& X) override
+  {
+    Solve_statistics st;
+    const Eigen::Index n = B.rows(), k = B.cols();
+    Eigen::VectorXd inv_diag(n);
+    for(Eigen::Index i = 0; i < n; ++i)
+    {
+      const double d = A.coeff(i, i);
+      if(!(d > 0))
+      {
+        st.ok = false;
+        st.message = "the system matrix has a non-positive diagonal entry at unknown " + std::to_string(i);
+        return st;
+      }
+      inv_diag[i] = 1.0 / d;
+    }
+    symmetric_product(A, X, AP_);
+    R_ = B - AP_;
+    Z_ = inv_diag.asDiagonal() * R_;
+    P_ = Z_;
+    const std::size_t kk = std::size_t(k);
+    std::vector<double> bnorm(kk), rz(kk), rnorm(kk);
+    std::vector<bool> active(kk, true);
+    for(Eigen::Index c = 0; c < k; ++c)
+    {
+      bnorm[std::size_t(c)] = B.col(c).norm();
+      rz[std::size_t(c)] = R_.col(c).dot(Z_.col(c));
+      rnorm[std::size_t(c)] = R_.col(c).norm();
+    }
+    auto converged = [&](Eigen::Index c) {
+      return rnorm[std::size_t(c)] <= tolerance_ * bnorm[std::size_t(c)] || rnorm[std::size_t(c)] == 0;
+    };
+    int it = 0;
+    for(;;)
+    {
+      bool any = false;
+      for(Eigen::Index c = 0; c < k; ++c)
+        if(active[std::size_t(c)] && converged(c)) active[std::size_t(c)] = false;
+        else any = any || active[std::size_t(c)];
+      if(!any) break;
+      if(it == max_iterations_)
+      {
+        st.ok = false;
+        st.message = "conjugate gradients did not converge in " + std::to_string(max_iterations_) + " iterations";
+        break;
+      }
+      ++it;
+      symmetric_product(A, P_, AP_);
+      for(Eigen::Index c = 0; c < k; ++c)
+      {
+        if(!active[std::size_t(c)]) continue;
+        const double pap = P_.col(c).dot(AP_.col(c));
+        if(!(pap > 0) || !std::isfinite(pap))
+        {
+          st.ok = false;
+          st.message = "conjugate gradients broke down (the matrix is not positive definite)";
+          return finish(st, A, B, X, bnorm, it);
+        }
+        const double alpha = rz[std::size_t(c)] / pap;
+        X.col(c) += alpha * P_.col(c);
+        R_.col(c) -= alpha * AP_.col(c);
+        Z_.col(c) = inv_diag.cwiseProduct(R_.col(c));
+        const double rz_new = R_.col(c).dot(Z_.col(c));
+        P_.col(c) = Z_.col(c) + (rz_new / rz[std::size_t(c)]) * P_.col(c);
+        rz[std::size_t(c)] = rz_new;
+        rnorm[std::size_t(c)] = R_.col(c).norm();
+      }
+    }
+    return finish(st, A, B, X, bnorm, it);
+  }
+
+private:
+  // the reported residual is recomputed from scratch, not the recurrence's
+  Solve_statistics& finish(Solve_statistics& st, const Eigen::SparseMatrix<double>& A, const Dense_block& B,
+                           const Dense_block& X, const std::vector<double>& bnorm, int it)
+  {
+    st.iterations = it;
+    symmetric_product(A, X, AP_);
+    for(Eigen::Index c = 0; c < B.cols(); ++c)
+    {
+      const double r = (B.col(c) - AP_.col(c)).norm();
+      st.residual = std::max(st.residual, bnorm[std::size_t(c)] > 0 ? r / bnorm[std::size_t(c)] : r);
+    }
+    return st;
+  }
+
+  double tolerance_;
+  int max_iterations_;
+  Dense_block R_, Z_, P_, AP_;
+};
+
+/// Sparse LDL^T (fill-reducing ordering and symbolic analysis on the first call, numeric
+/// factorisation on every call).
+class Sparse_cholesky : public Spd_solver
+{
+public:
+  Solve_statistics solve(const Eigen::SparseMatrix<double>& A, const Dense_block& B, Dense_block& X) override
+  {
+    Solve_statistics st;
+    if(!analysed_) { ldlt_.analyzePattern(A); analysed_ = true; }
+    ldlt_.factorize(A);
+    if(ldlt_.info() != Eigen::Success || !(ldlt_.vectorD().minCoeff() > 0))
+    {
+      st.ok = false;
+      st.message = "the sparse LDL^T factorisation failed (the matrix is not positive definite)";
+      return st;
+    }
+    Eigen::MatrixXd b = B, x(B.rows(), B.cols());
+    x = ldlt_.solve(b);
+    X = x;
+    st.iterations = 1;
+    const Eigen::MatrixXd r = b - A.selfadjointView<Eigen::Lower>() * x;
+    for(Eigen::Index c = 0; c < B.cols(); ++c)
+    {
+      const double bn = b.col(c).norm();
+      st.residual = std::max(st.residual, bn > 0 ? r.col(c).norm() / bn : r.col(c).norm());
+    }
+    return st;
+  }
+
+private:
+  Eigen::SimplicialLDLT<Eigen::SparseMatrix<double>, Eigen::Lower> ldlt_;
+  bool analysed_ = false;
+};
+
+} // namespace internal
+} // namespace Anisotropic_fairing
+} // namespace CGAL
+
+#endif // CGAL_ANISOTROPIC_FAIRING_INTERNAL_SPD_SOLVERS_H

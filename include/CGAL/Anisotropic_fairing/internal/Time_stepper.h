@@ -1,0 +1,258 @@
+// Copyright (c) 2026 Anisotropic_fairing developers.
+// SPDX-License-Identifier: GPL-3.0-or-later
+//
+// The semi-implicit step ((1 + tau w) M + tau L(D)) X_{n+1} = M (X_n + tau w X_0) of Bajaj & Xu
+// (eq. 26 with the fidelity term written consistently, loop-fem.md section 8), repeated until a
+// stopping criterion (27)-(29) holds, with the monitoring that makes failure loud. It knows nothing
+// of the element: any cache the Fem_assembler accepts will do (Loop patches or P1 faces).
+//
+// Constrained vertices are eliminated: the unknowns are the displacements of the free vertices,
+//   A_FF dX_F = tau (w M (X_0 - X_n) - L X_n)_F,
+// so the system stays symmetric positive definite and its right-hand side does not depend on the
+// model's position in space.
+
+#ifndef CGAL_ANISOTROPIC_FAIRING_INTERNAL_TIME_STEPPER_H
+#define CGAL_ANISOTROPIC_FAIRING_INTERNAL_TIME_STEPPER_H
+
+#include <CGAL/Anisotropic_fairing/Fairing_report.h>
+#include <CGAL/Anisotropic_fairing/Fairing_settings.h>
+#include <CGAL/Anisotropic_fairing/internal/Fem_assembly.h>
+#include <CGAL/Anisotropic_fairing/internal/Spd_solvers.h>
+
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <iostream>
+#include <memory>
+#include <string>
+#include <vector>
+
+namespace CGAL {
+namespace Anisotropic_fairing {
+namespace internal {
+
+struct Stepper_settings
+{
+  double time_step = 1e-3;          // tau, relative or absolute
+  bool relative_time_step = true;   // tau = time_step * scale^2
+  double fidelity_weight = 0;       // omega, relative (omega = w / scale^2) or absolute
+  bool relative_fidelity = true;
+  std::size_t maximum_steps = 10;
+  Stopping_criteria stopping;
+  Linear_solver solver = Linear_solver::AUTOMATIC;
+  double solver_tolerance = 1e-10;
+  int solver_maximum_iterations = 10000;
+  bool verbose = false;
+};
+
+/// Milliseconds-resolution wall clock.
+class Stopwatch
+{
+public:
+  Stopwatch() : start_(std::chrono::steady_clock::now()) {}
+  double seconds() const { return std::chrono::duration<double>(std::chrono::steady_clock::now() - start_).count(); }
+private:
+  std::chrono::steady_clock::time_point start_;
+};
+
+template <typename Cache>
+class Time_stepper
+{
+public:
+  /// `constrained[i]` holds vertex i fixed.
+  Time_stepper(const Cache& cache, std::size_t n, const std::vector<bool>& constrained)
+    : assembler_(cache, n), free_index_(n, -1)
+  {
+    for(std::size_t i = 0; i < n; ++i)
+      if(!constrained[i]) { free_index_[i] = int(free_.size()); free_.push_back(int(i)); }
+    // the free-free block of the pattern, and where each of its entries comes from
+    const Eigen::SparseMatrix<double>& P = assembler_.pattern();
+    const Eigen::Index nfree = Eigen::Index(free_.size());
+    A_.resize(nfree, nfree);
+    std::vector<int> nnz(free_.size(), 0);
+    for(std::size_t k = 0; k < free_.size(); ++k)
+      for(int p = P.outerIndexPtr()[free_[k]]; p < P.outerIndexPtr()[free_[k] + 1]; ++p)
+        if(free_index_[std::size_t(P.innerIndexPtr()[p])] >= 0) ++nnz[k];
+    A_.reserve(nnz);
+    for(std::size_t k = 0; k < free_.size(); ++k)
+      for(int p = P.outerIndexPtr()[free_[k]]; p < P.outerIndexPtr()[free_[k] + 1]; ++p)
+      {
+        const int r = free_index_[std::size_t(P.innerIndexPtr()[p])];
+        if(r >= 0) { A_.insert(r, Eigen::Index(k)) = 0.0; source_.push_back(p); }
+      }
+    A_.makeCompressed();
+  }
+
+  std::size_t number_of_free_vertices() const { return free_.size(); }
+  const Fem_assembler<Cache>& assembler() const { return assembler_; }
+
+  /// Runs the flow from X (n x kappa; the first `metric_columns` columns define the surface, the
+  /// others are carried along with the same operator). On success X holds the faired control points.
+  /// On failure X is unspecified and the report says why.
+  template <typename Tensor, typename Callback>
+  Fairing_report run(Control_matrix& X, int metric_columns, const Tensor& tensor,
+                     const Stepper_settings& s, Callback& callback)
+  {
+    Stopwatch total;
+    Fairing_report report;
+    report.vertices = std::size_t(X.rows());
+    report.constrained_vertices = std::size_t(X.rows()) - free_.size();
+    report.used_cholesky = s.solver == Linear_solver::CHOLESKY ||
+                           (s.solver == Linear_solver::AUTOMATIC && int(free_.size()) <= automatic_cholesky_limit);
+    std::unique_ptr<Spd_solver> solver;
+    if(report.used_cholesky) solver.reset(new Sparse_cholesky());
+    else solver.reset(new Block_conjugate_gradient(s.solver_tolerance, s.solver_maximum_iterations));
+
+    const Control_matrix X0 = X;
+    Stopwatch clock;
+    Assembly_statistics a = assembler_.assemble(X, metric_columns, tensor, M_, L_);
+    double assemble_seconds = clock.seconds();
+    report.initial.area = a.area;
+    report.initial.energy = a.energy;
+    report.initial.H_integral = a.H_integral;
+    if(a.degenerate) return fail(report, Fairing_status::DEGENERATE_METRIC, degenerate_message(a, 0), total);
+
+    const double scale = std::sqrt(a.area / (4 * 3.14159265358979323846));
+    const double tau = s.relative_time_step ? s.time_step * scale * scale : s.time_step;
+    const double omega = s.relative_fidelity ? s.fidelity_weight / (scale * scale) : s.fidelity_weight;
+    report.scale = scale;
+    report.time_step = tau;
+    report.fidelity_weight = omega;
+    const Stopping_criteria& c = s.stopping;
+    const double time_unit = c.relative_units ? scale * scale : 1.0;   // (28) and steady speed per this much time
+    const double length_unit = c.relative_units ? scale : 1.0;
+    const double H0 = a.H_integral;
+    double H_prev = 1.0, rate0 = 0;
+
+    const Eigen::Index n = X.rows(), k = X.cols(), nfree = Eigen::Index(free_.size());
+    Dense_block R(n, k), B(nfree, k), dX = Dense_block::Zero(nfree, k);
+    for(std::size_t step = 1; step <= s.maximum_steps && nfree > 0; ++step)
+    {
+      Fairing_step st;
+      st.step = step;
+      st.time = double(step) * tau;
+      // system and right-hand side at X_n
+      clock = Stopwatch();
+      double* av = A_.valuePtr();
+      for(std::size_t e = 0; e < source_.size(); ++e)
+        av[e] = (1 + tau * omega) * M_[std::size_t(source_[e])] + tau * L_[std::size_t(source_[e])];
+      residual_rhs(X, X0, tau, omega, R);
+      for(Eigen::Index i = 0; i < nfree; ++i) B.row(i) = R.row(free_[std::size_t(i)]);
+      st.assemble_seconds = assemble_seconds + clock.seconds();
+
+      clock = Stopwatch();
+      const Solve_statistics sol = solver->solve(A_, B, dX);   // warm start: the previous displacement
+      st.solve_seconds = clock.seconds();
+      st.solver_iterations = sol.iterations;
+      st.residual = sol.residual;
+      if(!sol.ok) return fail(report, Fairing_status::SOLVER_FAILED, "step " + std::to_string(step) + ": " + sol.message, total);
+      if(!dX.allFinite())
+        return fail(report, Fairing_status::NON_FINITE_VALUE, "step " + std::to_string(step) + ": the solution is not finite", total);
+
+      double moved = 0;
+      for(Eigen::Index i = 0; i < nfree; ++i)
+      {
+        X.row(free_[std::size_t(i)]) += dX.row(i);
+        moved = std::max(moved, dX.row(i).head(metric_columns).norm());
+      }
+      st.step_displacement = moved;
+      for(Eigen::Index i = 0; i < n; ++i)
+        st.max_displacement = std::max(st.max_displacement, (X.row(i) - X0.row(i)).head(metric_columns).norm());
+
+      // the new surface: diagnostics now, and the matrices of the next step
+      clock = Stopwatch();
+      a = assembler_.assemble(X, metric_columns, tensor, M_, L_);
+      assemble_seconds = clock.seconds();
+      st.area = a.area; st.energy = a.energy; st.H_integral = a.H_integral;
+      report.steps.push_back(st);
+      if(s.verbose) print(st);
+      if(a.degenerate) return fail(report, Fairing_status::DEGENERATE_METRIC, degenerate_message(a, step), total);
+      if(!std::isfinite(a.area) || !std::isfinite(a.H_integral) || !std::isfinite(a.energy))
+        return fail(report, Fairing_status::NON_FINITE_VALUE, "step " + std::to_string(step) + ": the surface's area or curvature is not finite", total);
+      if(a.area < 1e-8 * report.initial.area)
+        return fail(report, Fairing_status::COLLAPSED, "step " + std::to_string(step) + ": the surface collapsed (area " +
+                    std::to_string(a.area / report.initial.area) + " of the initial one)", total);
+
+      // stopping criteria (27)-(29) and the steady state
+      bool stop = false;
+      if(H0 > 0)
+      {
+        const double H = a.H_integral / H0;
+        const double rate = (H - H_prev) / (tau / time_unit);
+        if(step == 1) rate0 = rate;
+        H_prev = H;
+        if(step >= 2 && c.curvature_rate_ratio > 0 && rate0 != 0 && std::abs(rate / rate0) <= c.curvature_rate_ratio)
+        { report.stop_reason = Stop_reason::CURVATURE_RATE_RATIO; stop = true; }
+        else if(c.curvature_rate > 0 && std::abs(rate) <= c.curvature_rate)
+        { report.stop_reason = Stop_reason::CURVATURE_RATE; stop = true; }
+      }
+      if(!stop && c.displacement > 0 && st.max_displacement >= c.displacement * length_unit)
+      { report.stop_reason = Stop_reason::DISPLACEMENT; stop = true; }
+      if(!stop && c.steady_speed > 0 && (moved / length_unit) / (tau / time_unit) <= c.steady_speed)
+      { report.stop_reason = Stop_reason::STEADY_STATE; stop = true; }
+      if(!callback(report.steps.back()) && !stop) { report.stop_reason = Stop_reason::CALLBACK; stop = true; }
+      if(stop) break;
+    }
+    report.total_seconds = total.seconds();
+    return report;
+  }
+
+private:
+  // R = tau (omega M (X0 - X) - L X), all rows
+  void residual_rhs(const Control_matrix& X, const Control_matrix& X0, double tau, double omega, Dense_block& R) const
+  {
+    const Eigen::SparseMatrix<double>& P = assembler_.pattern();
+    const int* outer = P.outerIndexPtr();
+    const int* rows = P.innerIndexPtr();
+    const Eigen::Index k = X.cols();
+    for(Eigen::Index i = 0; i < X.rows(); ++i)
+    {
+      double* r = R.row(i).data();
+      std::fill(r, r + k, 0.0);
+      for(int p = outer[i]; p < outer[i + 1]; ++p)
+      {
+        const Eigen::Index j = rows[p];
+        const double l = L_[std::size_t(p)], m = omega * M_[std::size_t(p)];
+        for(Eigen::Index col = 0; col < k; ++col) r[col] += m * (X0(j, col) - X(j, col)) - l * X(j, col);
+      }
+      for(Eigen::Index col = 0; col < k; ++col) r[col] *= tau;
+    }
+  }
+
+  static std::string degenerate_message(const Assembly_statistics& a, std::size_t step)
+  {
+    return (step == 0 ? std::string("the input surface") : "after step " + std::to_string(step) + " the surface") +
+           " is degenerate (sqrt(det G) <= 0) on face " + std::to_string(a.degenerate_face) +
+           ": it pinched; use a smaller time step or fewer steps";
+  }
+
+  static Fairing_report& fail(Fairing_report& r, Fairing_status status, const std::string& message, const Stopwatch& total)
+  {
+    r.status = status;
+    r.stop_reason = Stop_reason::FAILURE;
+    r.message = message;
+    r.total_seconds = total.seconds();
+    return r;
+  }
+
+  static void print(const Fairing_step& st)
+  {
+    char line[256];
+    std::snprintf(line, sizeof line, "step %zu  t=%.4g  area=%.6g  int|H|^2=%.6g  max disp=%.3g  %d its (res %.1e)  %.3fs + %.3fs\n",
+                  st.step, st.time, st.area, st.H_integral, st.max_displacement, st.solver_iterations,
+                  st.residual, st.assemble_seconds, st.solve_seconds);
+    std::cerr << line;
+  }
+
+  Fem_assembler<Cache> assembler_;
+  std::vector<int> free_index_, free_;
+  std::vector<int> source_;
+  Eigen::SparseMatrix<double> A_;
+  std::vector<double> M_, L_;
+};
+
+} // namespace internal
+} // namespace Anisotropic_fairing
+} // namespace CGAL
+
+#endif // CGAL_ANISOTROPIC_FAIRING_INTERNAL_TIME_STEPPER_H
