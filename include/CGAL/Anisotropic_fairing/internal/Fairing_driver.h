@@ -65,6 +65,16 @@ void write_attribute_columns(const Indexed_mesh<Mesh>& im, AttributeMap map, con
     if(!keep[i]) put(map, im.vertex(i), values[i]);
 }
 
+/// Mean length of the mesh's edges (each interior edge seen from both sides, so equally weighted).
+inline double mean_edge_length(const Triangle_topology& topo, const Control_matrix& P)
+{
+  double sum = 0;
+  for(std::size_t f = 0; f < topo.number_of_faces(); ++f)
+    for(int k = 0; k < 3; ++k)
+      sum += (P.row(topo.face(f)[k]) - P.row(topo.face(f)[(k + 1) % 3])).norm();
+  return topo.number_of_faces() > 0 ? sum / double(3 * topo.number_of_faces()) : 0.0;
+}
+
 inline void check_parameter(bool ok, const std::string& message)
 {
   if(!ok) throw Input_error(Input_error::INVALID_PARAMETER, Input_error::no_element, message);
@@ -161,6 +171,7 @@ Fairing_report fair(TriangleMesh& tm, VertexPointMap vpm, AttributeMap attribute
   }
   report.faces = im.number_of_faces();
   report.setup_seconds = setup_seconds;
+  report.mean_edge_length = mean_edge_length(im.topology(), P);
 
   if(report.succeeded())
   {
