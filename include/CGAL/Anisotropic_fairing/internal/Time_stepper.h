@@ -170,8 +170,8 @@ public:
       if(!std::isfinite(a.area) || !std::isfinite(a.H_integral) || !std::isfinite(a.energy))
         return fail(report, Fairing_status::NON_FINITE_VALUE, "step " + std::to_string(step) + ": the surface's area or curvature is not finite", total);
       if(a.area < 1e-8 * report.initial.area)
-        return fail(report, Fairing_status::COLLAPSED, "step " + std::to_string(step) + ": the surface collapsed (area " +
-                    std::to_string(a.area / report.initial.area) + " of the initial one)", total);
+        return fail(report, Fairing_status::COLLAPSED, "step " + std::to_string(step) + ": the surface collapsed to a point (area " +
+                    ratio_text(a.area / report.initial.area) + " of the initial one): mean-curvature flow shrinks closed surfaces to points; use fewer steps or a larger fidelity weight", total);
 
       // stopping criteria (27)-(29) and the steady state
       bool stop = false;
@@ -221,9 +221,18 @@ private:
 
   static std::string degenerate_message(const Assembly_statistics& a, std::size_t step)
   {
-    return (step == 0 ? std::string("the input surface") : "after step " + std::to_string(step) + " the surface") +
-           " is degenerate (sqrt(det G) <= 0) on face " + std::to_string(a.degenerate_face) +
-           ": it pinched; use a smaller time step or fewer steps";
+    if(step == 0)
+      return "the input's limit surface is degenerate (sqrt(det G) <= 0) on face " + std::to_string(a.degenerate_face) +
+             ": its control points do not span a surface there";
+    return "after step " + std::to_string(step) + " the surface is degenerate (sqrt(det G) <= 0) on face " +
+           std::to_string(a.degenerate_face) + ": it pinched; use a smaller time step or fewer steps";
+  }
+
+  static std::string ratio_text(double x)
+  {
+    char b[32];
+    std::snprintf(b, sizeof b, "%.3g", x);
+    return b;
   }
 
   static Fairing_report& fail(Fairing_report& r, Fairing_status status, const std::string& message, const Stopwatch& total)

@@ -1,0 +1,308 @@
+// anisotropic_fairing() as a user calls it: the fidelity steady state and collapse of the sphere
+// (loop-fem.md section 11c), constrained vertices, Surface_mesh = Polyhedron_3, failures that leave
+// the mesh byte-identical, relative units (a model scaled by 10 is faired identically), the stopping
+// criteria (27)-(29) against the report's own numbers, the callback, and the P1 variant's shrink
+// rate on the sphere against its discretisation error.
+
+#include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
+#include <CGAL/Polyhedron_3.h>
+#include <CGAL/Surface_mesh.h>
+#include <CGAL/boost/graph/IO/polygon_mesh_io.h>
+
+#include <CGAL/Anisotropic_fairing/anisotropic_fairing.h>
+
+#include "test_support/check.h"
+#include "test_support/interpolating_sphere.h"
+#include "test_support/mesh_generators.h"
+
+#include <cmath>
+#include <cstdio>
+#include <cstring>
+#include <limits>
+#include <string>
+#include <vector>
+
+typedef CGAL::Exact_predicates_inexact_constructions_kernel K;
+typedef CGAL::Surface_mesh<K::Point_3> Mesh;
+typedef CGAL::Polyhedron_3<K> Polyhedron;
+namespace AF = CGAL::Anisotropic_fairing;
+const double pi = 3.14159265358979323846;
+
+template <class M>
+std::vector<double> coordinates(const M& m)
+{
+  std::vector<double> c;
+  for(auto v : vertices(m))
+  {
+    const K::Point_3& p = get(CGAL::vertex_point, m, v);
+    c.push_back(p.x()); c.push_back(p.y()); c.push_back(p.z());
+  }
+  return c;
+}
+
+bool byte_identical(const std::vector<double>& a, const std::vector<double>& b)
+{
+  return a.size() == b.size() && std::memcmp(a.data(), b.data(), a.size() * sizeof(double)) == 0;
+}
+
+double max_abs_difference(const std::vector<double>& a, const std::vector<double>& b)
+{
+  double d = a.size() == b.size() ? 0.0 : HUGE_VAL;
+  for(std::size_t i = 0; i < a.size() && i < b.size(); ++i) d = std::max(d, std::abs(a[i] - b[i]));
+  return d;
+}
+
+void fidelity_steady_state()
+{
+  // r* = (r0 + sqrt(r0^2 - 8/w))/2 for w >= 8/r0^2 (loop-fem.md 11c), reached by time stepping
+  for(double w : { 10.0, 20.0 })
+  {
+    Mesh sphere;
+    AF_test::make_interpolating_icosphere(sphere, 2);
+    AF::Stopping_criteria only_steady = AF::Stopping_criteria::none();
+    only_steady.steady_speed = 1e-7;
+    const AF::Fairing_report r = AF::anisotropic_fairing(sphere,
+        AF::parameters::time_step(0.01).fidelity_weight(w).number_of_iterations(2000u).stopping_criteria(only_steady)
+                       .output_positions(AF::Output_positions::CONTROL_POINTS));
+    AF_CHECK(r.succeeded(), "fidelity run succeeds: " + r.message);
+    AF_CHECK(r.stop_reason == AF::Stop_reason::STEADY_STATE, "the run ends in the steady state");
+    if(r.steps.empty()) continue;
+    const double r0 = std::sqrt(r.initial.area / (4 * pi)), rs = std::sqrt(r.steps.back().area / (4 * pi));
+    const double exact = (1 + std::sqrt(1 - 8 / w)) / 2;
+    std::printf("fidelity w = %g: r*/r0 = %.6f after %zu steps (exact %.6f)\n", w, rs / r0, r.steps.size(), exact);
+    AF_CHECK_CLOSE(rs / r0, exact, 2e-3, "sphere with fidelity w settles at (r0 + sqrt(r0^2 - 8/w))/2");
+  }
+  // w = 5 < 8/r0^2: the sphere collapses; the run must say so and leave the mesh as it was
+  Mesh sphere;
+  AF_test::make_interpolating_icosphere(sphere, 2);
+  const std::vector<double> before = coordinates(sphere);
+  const std::size_t properties = sphere.properties<Mesh::Vertex_index>().size();
+  const AF::Fairing_report r = AF::anisotropic_fairing(sphere,
+      AF::parameters::time_step(0.01).fidelity_weight(5.0).number_of_iterations(1000u)
+                     .stopping_criteria(AF::Stopping_criteria::none()));
+  std::printf("fidelity w = 5: status %s after %zu steps: %s\n", AF::to_string(r.status), r.steps.size(), r.message.c_str());
+  AF_CHECK(!r.succeeded() && (r.status == AF::Fairing_status::COLLAPSED || r.status == AF::Fairing_status::DEGENERATE_METRIC),
+           "w = 5 collapses with a clear status");
+  AF_CHECK(r.stop_reason == AF::Stop_reason::FAILURE && !r.message.empty(), "a failure carries a message");
+  AF_CHECK(byte_identical(before, coordinates(sphere)), "collapse leaves the mesh byte-identical");
+  AF_CHECK(properties == sphere.properties<Mesh::Vertex_index>().size(), "no property added to the mesh");
+}
+
+void constrained_vertices(const Mesh& input)
+{
+  for(AF::Output_positions out : { AF::Output_positions::LIMIT_SURFACE, AF::Output_positions::CONTROL_POINTS })
+  {
+    Mesh m = input;
+    auto fixed = m.add_property_map<Mesh::Vertex_index, bool>("v:fixed", false).first;
+    std::size_t count = 0;
+    for(auto v : vertices(m)) if(std::size_t(v) % 7 == 0) { put(fixed, v, true); ++count; }
+    const std::vector<double> before = coordinates(m);
+    const AF::Fairing_report r = AF::anisotropic_fairing(m,
+        AF::parameters::number_of_iterations(5u).vertex_is_constrained_map(fixed).output_positions(out)
+                       .stopping_criteria(AF::Stopping_criteria::none()));
+    AF_CHECK(r.succeeded() && r.constrained_vertices == count, "constrained run succeeds");
+    const std::vector<double> after = coordinates(m);
+    bool fixed_kept = true;
+    std::size_t moved = 0;
+    for(auto v : vertices(m))
+    {
+      const std::size_t i = 3 * std::size_t(v);
+      const bool same = std::memcmp(&before[i], &after[i], 3 * sizeof(double)) == 0;
+      if(get(fixed, v)) fixed_kept = fixed_kept && same;
+      else if(!same) ++moved;
+    }
+    std::printf("constrained vertices (%zu of %zu): kept exactly %d, free vertices moved %zu\n", count,
+                num_vertices(m), int(fixed_kept), moved);
+    AF_CHECK(fixed_kept, "constrained vertices stay put (byte-identical)");
+    AF_CHECK(moved == num_vertices(m) - count, "every free vertex moves");
+  }
+}
+
+void surface_mesh_equals_polyhedron(const std::string& file)
+{
+  Mesh sm;
+  Polyhedron poly;
+  CGAL::IO::read_polygon_mesh(file, sm);
+  CGAL::IO::read_polygon_mesh(file, poly);
+  for(AF::Finite_element e : { AF::Finite_element::LOOP, AF::Finite_element::LINEAR })
+  {
+    Mesh a = sm;
+    Polyhedron b = poly;
+    const auto np = AF::parameters::number_of_iterations(4u).finite_element(e).stopping_criteria(AF::Stopping_criteria::none());
+    const AF::Fairing_report ra = AF::anisotropic_fairing(a, np);
+    const AF::Fairing_report rb = AF::anisotropic_fairing(b, np);
+    const double d = max_abs_difference(coordinates(a), coordinates(b));
+    std::printf("Surface_mesh vs Polyhedron_3 (%s): max |difference| %.3g\n", e == AF::Finite_element::LOOP ? "Loop" : "P1", d);
+    AF_CHECK(ra.succeeded() && rb.succeeded(), "both runs succeed");
+    AF_CHECK(d <= 1e-14, "Surface_mesh and Polyhedron_3 give the same result");
+  }
+}
+
+void failures_leave_mesh_unchanged(const Mesh& input)
+{
+  {
+    Mesh m = input;
+    const std::vector<double> before = coordinates(m);
+    const AF::Fairing_report r = AF::anisotropic_fairing(m,
+        AF::parameters::linear_solver(AF::Linear_solver::CONJUGATE_GRADIENT).solver_maximum_iterations(2));
+    std::printf("CG limited to 2 iterations: %s: %s\n", AF::to_string(r.status), r.message.c_str());
+    AF_CHECK(r.status == AF::Fairing_status::SOLVER_FAILED, "a solver failure is reported");
+    AF_CHECK(byte_identical(before, coordinates(m)), "a solver failure leaves the mesh byte-identical");
+  }
+  {
+    // long mean-curvature flow shrinks bumpy to a point at t ~ l^2/4 (like a sphere of radius l): the
+    // run must end with a failure status, not silently write a speck
+    Mesh m = input;
+    const std::vector<double> before = coordinates(m);
+    const AF::Fairing_report r = AF::anisotropic_fairing(m,
+        AF::parameters::relative_time_step(6.3e-3).number_of_iterations(60u).stopping_criteria(AF::Stopping_criteria::none()));
+    std::printf("bumpy under long mean-curvature flow: %s after %zu steps (t / l^2 = %.3f): %s\n", AF::to_string(r.status),
+                r.steps.size(), r.steps.empty() ? 0.0 : r.steps.back().time / (r.scale * r.scale), r.message.c_str());
+    AF_CHECK(r.status == AF::Fairing_status::COLLAPSED || r.status == AF::Fairing_status::DEGENERATE_METRIC,
+             "shrinking to a point is reported as a failure");
+    AF_CHECK(byte_identical(before, coordinates(m)), "and leaves the mesh byte-identical");
+  }
+  {
+    // a surface with zero metric (every control point at one place) is degenerate from the start
+    Mesh m = input;
+    for(auto v : vertices(m)) m.point(v) = K::Point_3(1, 2, 3);
+    const std::vector<double> before = coordinates(m);
+    const AF::Fairing_report r = AF::anisotropic_fairing(m);
+    std::printf("all vertices at one point: %s: %s\n", AF::to_string(r.status), r.message.c_str());
+    AF_CHECK(r.status == AF::Fairing_status::DEGENERATE_METRIC && r.steps.empty(), "a zero metric is reported as degenerate");
+    AF_CHECK(byte_identical(before, coordinates(m)), "and leaves the mesh byte-identical");
+  }
+  {
+    Mesh m = input;
+    m.point(*std::next(vertices(m).begin(), 10)) = K::Point_3(std::numeric_limits<double>::quiet_NaN(), 0, 0);
+    const std::vector<double> before = coordinates(m);
+    bool thrown = false;
+    try { AF::anisotropic_fairing(m); }
+    catch(const AF::Input_error& e) { thrown = e.kind() == AF::Input_error::NON_FINITE_COORDINATE && e.element() == 10; }
+    AF_CHECK(thrown, "a NaN coordinate throws Input_error naming the vertex");
+    const std::vector<double> after = coordinates(m);
+    AF_CHECK(std::memcmp(before.data(), after.data(), before.size() * sizeof(double)) == 0, "and the mesh is untouched");
+  }
+  {
+    Mesh m = input;
+    bool thrown = false;
+    try { AF::anisotropic_fairing(m, AF::parameters::time_step(1.0).relative_time_step(1.0)); }
+    catch(const AF::Input_error& e) { thrown = e.kind() == AF::Input_error::INVALID_PARAMETER; }
+    AF_CHECK(thrown, "time_step and relative_time_step together are refused");
+    thrown = false;
+    try { AF::anisotropic_fairing(m, AF::parameters::relative_time_step(-1.0)); }
+    catch(const AF::Input_error& e) { thrown = e.kind() == AF::Input_error::INVALID_PARAMETER; }
+    AF_CHECK(thrown, "a negative time step is refused");
+  }
+}
+
+void relative_units(const Mesh& input)
+{
+  Mesh a = input, b = input;
+  const double s = 10.0;
+  for(auto v : vertices(b)) { const K::Point_3& p = b.point(v); b.point(v) = K::Point_3(s * p.x(), s * p.y(), s * p.z()); }
+  const auto np = AF::parameters::number_of_iterations(100u);   // default criteria and time step
+  const AF::Fairing_report ra = AF::anisotropic_fairing(a, np), rb = AF::anisotropic_fairing(b, np);
+  std::vector<double> ca = coordinates(a), cb = coordinates(b);
+  double err = 0, size = 0;
+  for(std::size_t i = 0; i < ca.size(); ++i) { err = std::max(err, std::abs(s * ca[i] - cb[i])); size = std::max(size, std::abs(cb[i])); }
+  std::printf("bumpy and bumpy x 10, default parameters: %zu and %zu steps (%s, %s), max relative difference %.3g\n",
+              ra.steps.size(), rb.steps.size(), AF::to_string(ra.stop_reason), AF::to_string(rb.stop_reason), err / size);
+  AF_CHECK(ra.succeeded() && rb.succeeded(), "both scales fair");
+  AF_CHECK(ra.steps.size() == rb.steps.size() && ra.stop_reason == rb.stop_reason, "the same steps at both scales");
+  AF_CHECK(ra.stop_reason != AF::Stop_reason::MAXIMUM_STEPS, "the default criteria end the run on bumpy");
+  AF_CHECK(err <= 1e-9 * size, "a scaled model is faired into the scaled result (relative units)");
+  AF_CHECK_REL(rb.time_step, s * s * ra.time_step, 1e-12, "the absolute time step scales with the square of the size");
+}
+
+// Recomputes the criteria from the report's numbers: the stop happens at the first step where one holds.
+void stopping_criteria(const Mesh& input)
+{
+  struct Case { const char* name; AF::Stopping_criteria c; AF::Stop_reason expected; };
+  // the first step's rate of the curvature functional, to set a (28) threshold that the run must reach
+  Mesh probe = input;
+  const AF::Fairing_report first_step = AF::anisotropic_fairing(probe, AF::parameters::number_of_iterations(1u)
+      .stopping_criteria(AF::Stopping_criteria::none()));
+  const double rate1 = (first_step.steps[0].H_integral / first_step.initial.H_integral - 1) /
+                       (first_step.time_step / (first_step.scale * first_step.scale));
+  const double threshold28 = std::abs(rate1) / 3;
+  std::printf("bumpy: first-step rate of int |H|^2 / int |H0|^2 per unit of t / l^2: %.4g\n", rate1);
+  AF::Stopping_criteria only27 = AF::Stopping_criteria::none(); only27.curvature_rate_ratio = 0.3;
+  AF::Stopping_criteria only28 = AF::Stopping_criteria::none(); only28.curvature_rate = threshold28;
+  AF::Stopping_criteria only29 = AF::Stopping_criteria::none(); only29.displacement = 0.05;
+  const Case cases[] = { { "(27)", only27, AF::Stop_reason::CURVATURE_RATE_RATIO },
+                         { "(28)", only28, AF::Stop_reason::CURVATURE_RATE },
+                         { "(29)", only29, AF::Stop_reason::DISPLACEMENT } };
+  for(const Case& k : cases)
+  {
+    Mesh m = input;
+    const AF::Fairing_report r = AF::anisotropic_fairing(m, AF::parameters::number_of_iterations(200u).stopping_criteria(k.c));
+    AF_CHECK(r.succeeded() && r.stop_reason == k.expected, std::string("criterion ") + k.name + " ends the run");
+    // first step at which the criterion holds, from the report
+    const double L = r.scale, tau_rel = r.time_step / (L * L);
+    double prev = 1, rate0 = 0;
+    std::size_t first = 0;
+    for(const AF::Fairing_step& s : r.steps)
+    {
+      const double H = s.H_integral / r.initial.H_integral, rate = (H - prev) / tau_rel;
+      if(s.step == 1) rate0 = rate;
+      prev = H;
+      const bool holds = k.expected == AF::Stop_reason::CURVATURE_RATE_RATIO ? (s.step >= 2 && std::abs(rate / rate0) <= 0.3)
+                       : k.expected == AF::Stop_reason::CURVATURE_RATE ? std::abs(rate) <= threshold28
+                       : s.max_displacement >= 0.05 * L;
+      if(holds && first == 0) first = s.step;
+    }
+    std::printf("criterion %s alone: stopped after step %zu, first step where it holds (from the report) %zu\n", k.name,
+                r.steps.size(), first);
+    AF_CHECK(first == r.steps.size() && first > 1, std::string("criterion ") + k.name + " stops exactly where it first holds");
+  }
+  // the callback ends a run
+  Mesh m = input;
+  std::size_t seen = 0;
+  const AF::Fairing_report r = AF::anisotropic_fairing(m, AF::parameters::number_of_iterations(50u)
+      .stopping_criteria(AF::Stopping_criteria::none())
+      .callback([&seen](const AF::Fairing_step& s) { seen = s.step; return s.step < 3; }));
+  AF_CHECK(r.succeeded() && r.stop_reason == AF::Stop_reason::CALLBACK && r.steps.size() == 3 && seen == 3,
+           "the callback sees every step and stops the run after step 3");
+}
+
+// P1 elements on the polyhedral icosphere: the shrink rate d(A/4pi)/dt of mean-curvature flow is -4
+// up to the element's own error, which is of the order of the polyhedron's area deficit and falls as h^2.
+void linear_element_sphere()
+{
+  double previous = 0;
+  for(int level = 2; level <= 4; ++level)
+  {
+    Mesh sphere;
+    AF_test::make_icosphere(sphere, level);
+    const double tau = 1e-4;
+    const AF::Fairing_report r = AF::anisotropic_fairing(sphere,
+        AF::parameters::finite_element(AF::Finite_element::LINEAR).time_step(tau).number_of_iterations(10u)
+                       .stopping_criteria(AF::Stopping_criteria::none()));
+    AF_CHECK(r.succeeded() && r.steps.size() == 10, "P1 sphere flow runs");
+    if(r.steps.size() != 10) continue;
+    const double rate = (r.steps.back().area - r.initial.area) / (4 * pi * r.steps.back().time);
+    const double r2 = r.initial.area / (4 * pi);
+    const double err = std::abs(rate / -4.0 - 1), deficit = 1 - r2;
+    std::printf("P1 icosphere(%d): d(A/4pi)/dt = %.6f (exact -4), relative error %.3g, area deficit 1 - A/4pi = %.3g\n", level,
+                rate, err, deficit);
+    AF_CHECK(err <= 2 * deficit, "P1 shrink rate within its discretisation error (2 x area deficit)");
+    if(previous > 0) AF_CHECK(err < previous / 3, "P1 shrink-rate error falls like h^2 under refinement");
+    previous = err;
+  }
+}
+
+int main(int argc, char** argv)
+{
+  const std::string data = argc > 1 ? argv[1] : "data";
+  Mesh bumpy;
+  AF_CHECK(CGAL::IO::read_polygon_mesh(data + "/bumpy.off", bumpy), "read bumpy.off");
+  fidelity_steady_state();
+  constrained_vertices(bumpy);
+  surface_mesh_equals_polyhedron(data + "/bumpy.off");
+  failures_leave_mesh_unchanged(bumpy);
+  relative_units(bumpy);
+  stopping_criteria(bumpy);
+  linear_element_sphere();
+  return AF_test::report();
+}
