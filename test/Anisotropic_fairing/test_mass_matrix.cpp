@@ -98,7 +98,7 @@ int main(int argc, char** argv)
   // A closed surface enclosing the ball of radius r_min has area at least 4 pi r_min^2.
   {
     Mesh sphere;
-    make_interpolating_icosphere(sphere, 3);
+    AF_test::make_interpolating_icosphere(sphere, 3);
     AF::Loop_limit_surface<Mesh> s(sphere, AF::parameters::quadrature_degree(6));
     const double ratio = s.area() / (4 * CGAL_PI);
     std::printf("interpolating icosphere, %zu vertices, point degree 6: area / 4 pi = %.9f\n",

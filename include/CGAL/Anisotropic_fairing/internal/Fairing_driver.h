@@ -16,6 +16,7 @@
 #include <CGAL/Anisotropic_fairing/named_function_parameters.h>
 #include <CGAL/Anisotropic_fairing/internal/Indexed_mesh.h>
 #include <CGAL/Anisotropic_fairing/internal/Linear_element_cache.h>
+#include <CGAL/Anisotropic_fairing/internal/Locality_ordering.h>
 #include <CGAL/Anisotropic_fairing/internal/Patch_cache.h>
 #include <CGAL/Anisotropic_fairing/internal/Time_stepper.h>
 #include <CGAL/Anisotropic_fairing/internal/Vertex_limit_masks.h>
@@ -81,10 +82,12 @@ inline void check_parameter(bool ok, const std::string& message)
 }
 
 template <typename Cache, typename Tensor, typename Callback>
-Fairing_report run_stepper(const Cache& cache, Control_matrix& X, const std::vector<bool>& constrained,
-                           const Tensor& tensor, const Stepper_settings& s, Callback& callback)
+Fairing_report run_stepper(const Cache& cache, const Locality_ordering& ordering, Control_matrix& X,
+                           const std::vector<bool>& constrained, const Tensor& tensor, const Stepper_settings& s,
+                           Callback& callback)
 {
   Time_stepper<Cache> stepper(cache, std::size_t(X.rows()), constrained);
+  stepper.assembler().use_original_indices(&ordering.old_of_new_vertex, &ordering.old_of_new_face);
   return stepper.run(X, 3, tensor, s, callback);
 }
 
@@ -120,7 +123,7 @@ Fairing_report fair(TriangleMesh& tm, VertexPointMap vpm, AttributeMap attribute
                   std::isfinite(s.stopping.displacement) && std::isfinite(s.stopping.steady_speed),
                   "stopping thresholds must be finite");
   s.solver = choose_parameter(get_parameter(np, internal_np::linear_solver), Linear_solver::AUTOMATIC);
-  s.solver_tolerance = choose_parameter(get_parameter(np, internal_np::solver_tolerance), 1e-10);
+  s.solver_tolerance = choose_parameter(get_parameter(np, internal_np::solver_tolerance), 1e-8);
   check_parameter(s.solver_tolerance > 0 && s.solver_tolerance < 1, "the solver tolerance must lie in (0, 1)");
   s.solver_maximum_iterations = choose_parameter(get_parameter(np, internal_np::solver_maximum_iterations), 10000);
   check_parameter(s.solver_maximum_iterations >= 1, "the solver needs at least one iteration");
@@ -141,33 +144,41 @@ Fairing_report fair(TriangleMesh& tm, VertexPointMap vpm, AttributeMap attribute
   Control_matrix P = im.read_points(vpm);
   const Control_matrix A = read_attribute_columns(im, attributes);
   const std::size_t n = im.number_of_vertices();
-  Control_matrix X(Eigen::Index(n), 3 + A.cols());
-  X.leftCols(3) = P;
-  if(A.cols() > 0) X.rightCols(A.cols()) = A;
-  std::vector<bool> constrained(n);
-  for(std::size_t i = 0; i < n; ++i) constrained[i] = bool(get(vcm, im.vertex(i)));
 
   Stopwatch setup;
+  // the solver works in a private, cache-friendly numbering (row i of X is vertex old_of_new_vertex[i])
+  const Locality_ordering ordering = make_locality_ordering(im.topology());
+  const Triangle_topology& topology = *ordering.topology;
+  Control_matrix X(Eigen::Index(n), 3 + A.cols());
+  std::vector<bool> constrained(n);
+  for(std::size_t i = 0; i < n; ++i)
+  {
+    const Eigen::Index old = ordering.old_of_new_vertex[i];
+    X.row(Eigen::Index(i)).head(3) = P.row(old);
+    if(A.cols() > 0) X.row(Eigen::Index(i)).tail(A.cols()) = A.row(old);
+    constrained[i] = bool(get(vcm, im.vertex(std::size_t(old))));
+  }
+
   Fairing_report report;
   double setup_seconds = 0;
   if(element == Finite_element::LOOP)
   {
-    Patch_cache cache(im.topology());
+    Patch_cache cache(topology);
     cache.prepare_quadrature(spec);
     setup_seconds = setup.seconds();
-    report = run_stepper(cache, X, constrained, tensor, s, callback);
+    report = run_stepper(cache, ordering, X, constrained, tensor, s, callback);
     if(report.succeeded() && output == Output_positions::LIMIT_SURFACE)
     {
       Control_matrix limit(X.rows(), X.cols());
-      for(std::size_t i = 0; i < n; ++i) vertex_limit_value(im.topology(), X, int(i), limit.row(Eigen::Index(i)).data());
+      for(std::size_t i = 0; i < n; ++i) vertex_limit_value(topology, X, int(i), limit.row(Eigen::Index(i)).data());
       X.swap(limit);
     }
   }
   else
   {
-    Linear_element_cache cache(im.topology());
+    Linear_element_cache cache(topology);
     setup_seconds = setup.seconds();
-    report = run_stepper(cache, X, constrained, tensor, s, callback);
+    report = run_stepper(cache, ordering, X, constrained, tensor, s, callback);
   }
   report.faces = im.number_of_faces();
   report.setup_seconds = setup_seconds;
@@ -175,13 +186,16 @@ Fairing_report fair(TriangleMesh& tm, VertexPointMap vpm, AttributeMap attribute
 
   if(report.succeeded())
   {
+    Control_matrix result(X.rows(), X.cols());   // back to the order of vertices(tm)
+    for(std::size_t i = 0; i < n; ++i) result.row(ordering.old_of_new_vertex[i]) = X.row(Eigen::Index(i));
+    std::vector<bool> keep(n);
     for(std::size_t i = 0; i < n; ++i)
-      if(!constrained[i])
-      {
-        const Eigen::Index r = Eigen::Index(i);
-        put(vpm, im.vertex(i), Point(X(r, 0), X(r, 1), X(r, 2)));
-      }
-    write_attribute_columns(im, attributes, X, 3, constrained);
+    {
+      keep[i] = bool(get(vcm, im.vertex(i)));
+      const Eigen::Index r = Eigen::Index(i);
+      if(!keep[i]) put(vpm, im.vertex(i), Point(result(r, 0), result(r, 1), result(r, 2)));
+    }
+    write_attribute_columns(im, attributes, result, 3, keep);
   }
   report.total_seconds = total.seconds();
   return report;

@@ -25,6 +25,7 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <type_traits>
 #include <vector>
 
 namespace CGAL {
@@ -58,6 +59,14 @@ public:
 #endif
     chunks_ = int(std::min<std::size_t>(std::size_t(chunks_), std::max<std::size_t>(1, cache.number_of_faces() / 256)));
     partial_.resize(std::size_t(chunks_ - 1) * 2);
+  }
+
+  /// Indices reported to the tensor (Quadrature_point_geometry::face and ring) and in statistics are
+  /// translated through these maps when the cache works in a private numbering.
+  void use_original_indices(const std::vector<int>* vertex_of, const std::vector<std::size_t>* face_of)
+  {
+    original_vertex_ = vertex_of;
+    original_face_ = face_of;
   }
 
   /// The symmetric pattern (all values zero) that M and L fill: value arrays index its non-zeros.
@@ -109,11 +118,30 @@ public:
   }
 
 private:
+  // Per-face buffers with compile-time sizes where known (ring size M, points NQ, coordinates K),
+  // so the common faces run unrolled, allocation-free products; Dynamic covers every other face.
+  template <int M, int NQ, int K>
+  struct Face_buffers
+  {
+    static constexpr bool fixed = M != Eigen::Dynamic && NQ != Eigen::Dynamic && K != Eigen::Dynamic;
+    static constexpr int NQ2 = NQ == Eigen::Dynamic ? Eigen::Dynamic : 2 * NQ;
+    typedef Eigen::Matrix<double, NQ, M, Eigen::RowMajor> Stencil_rows;
+    Eigen::Matrix<double, M, K, (K == 1 ? Eigen::ColMajor : Eigen::RowMajor)> Xr;
+    Eigen::Matrix<double, NQ, K, (K == 1 ? Eigen::ColMajor : Eigen::RowMajor)> T[5];
+    Eigen::Matrix<double, NQ, M, Eigen::RowMajor> Bm;
+    Eigen::Matrix<double, NQ2, M, Eigen::RowMajor> Bl;
+    Eigen::Matrix<double, M, M> localM, localL;
+  };
+  typedef Face_buffers<12, 16, 3> Regular_loop_buffers;   // valence-6 patch, degree-8 rule, geometry
+  typedef Face_buffers<3, 3, 3> Linear_buffers;           // P1 face, geometry
+  typedef Face_buffers<Eigen::Dynamic, Eigen::Dynamic, Eigen::Dynamic> Any_buffers;
+
   struct Workspace
   {
-    Control_matrix Xr, T[5];
-    Eigen::MatrixXd Bm, Bl, localM, localL;
-    std::vector<int> order;
+    Regular_loop_buffers regular;
+    Linear_buffers linear;
+    Any_buffers any;
+    std::vector<int> order, original_ring;
   };
 
   template <typename Tensor>
@@ -121,44 +149,65 @@ private:
                      double* mv, double* lv, Assembly_statistics& stats) const
   {
     const int m = cache_.ring_size(f);
+    const Eigen::Index nq = cache_.quadrature_weights(cache_.category(f)).size();
+    if(kappa == 3 && m == 12 && nq == 16) assemble_face_with(ws.regular, f, X, kappa, tensor, ws, mv, lv, stats);
+    else if(kappa == 3 && m == 3 && nq == 3) assemble_face_with(ws.linear, f, X, kappa, tensor, ws, mv, lv, stats);
+    else assemble_face_with(ws.any, f, X, kappa, tensor, ws, mv, lv, stats);
+  }
+
+  template <typename Buffers, typename Tensor>
+  void assemble_face_with(Buffers& b, std::size_t f, const Control_matrix& X, int kappa, const Tensor& tensor,
+                          Workspace& ws, double* mv, double* lv, Assembly_statistics& stats) const
+  {
+    typedef Eigen::Map<const typename Buffers::Stencil_rows> Rows;
+    const int m = cache_.ring_size(f);
     const int* ring = cache_.ring(f);
     const int cat = cache_.category(f);
-    ws.Xr.resize(m, kappa);
-    for(int k = 0; k < m; ++k) ws.Xr.row(k) = X.row(ring[k]).head(kappa);
-    const int derivative_rows = Cache::has_second_derivatives ? 5 : 2;
-    for(int r = 0; r < derivative_rows; ++r) ws.T[r].noalias() = cache_.quadrature_rows(cat, D1 + r) * ws.Xr;
-    const auto& S0 = cache_.quadrature_rows(cat, VALUE);
-    const auto& S1 = cache_.quadrature_rows(cat, D1);
-    const auto& S2 = cache_.quadrature_rows(cat, D2);
     const Eigen::VectorXd& w = cache_.quadrature_weights(cat);
     const Eigen::Index nq = w.size();
-    ws.Bm.resize(nq, m);
-    ws.Bl.resize(2 * nq, m);
+    const Rows S0(cache_.quadrature_rows(cat, VALUE).data(), nq, m);
+    const Rows S1(cache_.quadrature_rows(cat, D1).data(), nq, m);
+    const Rows S2(cache_.quadrature_rows(cat, D2).data(), nq, m);
+    b.Xr.resize(m, kappa);
+    for(int k = 0; k < m; ++k)
+      for(int c = 0; c < kappa; ++c) b.Xr(k, c) = X(ring[k], c);
+    const int derivative_rows = Cache::has_second_derivatives ? 5 : 2;
+    for(int r = 0; r < derivative_rows; ++r)
+      b.T[r].noalias() = Rows(cache_.quadrature_rows(cat, D1 + r).data(), nq, m).lazyProduct(b.Xr);
+    b.Bm.resize(nq, m);
+    b.Bl.resize(2 * nq, m);
     static const double zero[16] = { 0 };
     std::vector<double> zeros;
     if(!Cache::has_second_derivatives && kappa > 16) zeros.assign(std::size_t(kappa), 0.0);
     const double* no_second = (kappa > 16) ? zeros.data() : zero;
 
     Quadrature_point_geometry g;
-    g.face = f; g.dimension = kappa; g.ring = ring; g.ring_size = m;
+    g.face = original_face_ ? (*original_face_)[f] : f;
+    g.dimension = kappa; g.ring = ring; g.ring_size = m;
+    if(original_vertex_)
+    {
+      ws.original_ring.resize(std::size_t(m));
+      for(int k = 0; k < m; ++k) ws.original_ring[std::size_t(k)] = (*original_vertex_)[std::size_t(ring[k])];
+      g.ring = ws.original_ring.data();
+    }
     for(Eigen::Index q = 0; q < nq; ++q)
     {
-      const double* t1 = ws.T[0].row(q).data();
-      const double* t2 = ws.T[1].row(q).data();
+      const double* t1 = b.T[0].row(q).data();
+      const double* t2 = b.T[1].row(q).data();
       double g11 = 0, g12 = 0, g22 = 0;
       for(int c = 0; c < kappa; ++c) { g11 += t1[c] * t1[c]; g12 += t1[c] * t2[c]; g22 += t2[c] * t2[c]; }
       const double det = g11 * g22 - g12 * g12;
       if(!(det > 0) || !std::isfinite(det))
       {
-        if(!stats.degenerate) { stats.degenerate = true; stats.degenerate_face = f; }
-        ws.Bm.row(q).setZero(); ws.Bl.row(2 * q).setZero(); ws.Bl.row(2 * q + 1).setZero();
+        if(!stats.degenerate) { stats.degenerate = true; stats.degenerate_face = g.face; }
+        b.Bm.row(q).setZero(); b.Bl.row(2 * q).setZero(); b.Bl.row(2 * q + 1).setZero();
         continue;
       }
       const double c = w[q] * std::sqrt(det);
       g.point = int(q); g.t1 = t1; g.t2 = t2;
-      g.t11 = Cache::has_second_derivatives ? ws.T[2].row(q).data() : no_second;
-      g.t12 = Cache::has_second_derivatives ? ws.T[3].row(q).data() : no_second;
-      g.t22 = Cache::has_second_derivatives ? ws.T[4].row(q).data() : no_second;
+      g.t11 = Cache::has_second_derivatives ? b.T[2].row(q).data() : no_second;
+      g.t12 = Cache::has_second_derivatives ? b.T[3].row(q).data() : no_second;
+      g.t22 = Cache::has_second_derivatives ? b.T[4].row(q).data() : no_second;
       g.g11 = g11; g.g12 = g12; g.g22 = g22; g.det = det;
       g.basis = S0.row(q).data();
       const Parametric_tensor A = tensor(g);
@@ -167,20 +216,30 @@ private:
       stats.energy += c * (A.a11 * g11 + 2 * A.a12 * g12 + A.a22 * g22);
       if(Cache::has_second_derivatives) stats.H_integral += c * mean_curvature_squared(g);
 
-      ws.Bm.row(q) = std::sqrt(c) * S0.row(q);
+      b.Bm.row(q) = std::sqrt(c) * S0.row(q);
       // c A = R R^T (2x2 Cholesky; A is positive semi-definite), then d phi^T (cA) d phi = |R^T d phi|^2
       const double b11 = c * A.a11, b12 = c * A.a12, b22 = c * A.a22;
       const double r11 = b11 > 0 ? std::sqrt(b11) : 0.0;
       const double r21 = r11 > 0 ? b12 / r11 : 0.0;
       const double r22 = std::sqrt(std::max(0.0, b22 - r21 * r21));
-      ws.Bl.row(2 * q) = r11 * S1.row(q) + r21 * S2.row(q);
-      ws.Bl.row(2 * q + 1) = r22 * S2.row(q);
+      b.Bl.row(2 * q) = r11 * S1.row(q) + r21 * S2.row(q);
+      b.Bl.row(2 * q + 1) = r22 * S2.row(q);
     }
-    ws.localM.setZero(m, m);
-    ws.localM.template selfadjointView<Eigen::Lower>().rankUpdate(ws.Bm.transpose());
-    ws.localL.setZero(m, m);
-    ws.localL.template selfadjointView<Eigen::Lower>().rankUpdate(ws.Bl.transpose());
-    const Eigen::MatrixXd* const locals[2] = { &ws.localM, &ws.localL };
+    // local matrices B^T B (only the lower triangle is read by the scatter, so symmetry is exact)
+    if(Buffers::fixed)
+    {
+      b.localM.noalias() = b.Bm.transpose().lazyProduct(b.Bm);
+      b.localL.noalias() = b.Bl.transpose().lazyProduct(b.Bl);
+    }
+    else
+    {
+      b.localM.setZero(m, m);
+      b.localM.template selfadjointView<Eigen::Lower>().rankUpdate(b.Bm.transpose());
+      b.localL.setZero(m, m);
+      b.localL.template selfadjointView<Eigen::Lower>().rankUpdate(b.Bl.transpose());
+    }
+    typedef typename std::remove_reference<decltype(b.localM)>::type Local;
+    const Local* const locals[2] = { &b.localM, &b.localL };
     double* const values[2] = { mv, lv };
     scatter_local_matrices<2>(locals, ring, m, ws.order, pattern_.outerIndexPtr(), pattern_.innerIndexPtr(), values);
   }
@@ -231,6 +290,8 @@ private:
   Eigen::SparseMatrix<double> pattern_;
   int chunks_ = 1;
   std::vector<std::vector<double>> partial_;
+  const std::vector<int>* original_vertex_ = nullptr;
+  const std::vector<std::size_t>* original_face_ = nullptr;
 };
 
 } // namespace internal

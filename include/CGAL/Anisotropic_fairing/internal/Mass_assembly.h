@@ -70,8 +70,8 @@ inline double limit_surface_area(const Patch_cache& cache, const Control_matrix&
 /// sharing one compressed column pattern (outer, rows) that contains the ring's pairs. Reading one
 /// triangle only keeps the results exactly symmetric. Rows of a column are sorted, so each local
 /// column is merged into the global one in one pass.
-template <int N>
-void scatter_local_matrices(const Eigen::MatrixXd* const (&local)[N], const int* ring, int m, std::vector<int>& order,
+template <int N, typename Local>
+void scatter_local_matrices(const Local* const (&local)[N], const int* ring, int m, std::vector<int>& order,
                             const int* outer, const int* rows, double* const (&values)[N])
 {
   order.resize(std::size_t(m));
@@ -95,7 +95,7 @@ inline void scatter_local_matrix(const Eigen::MatrixXd& local, const int* ring, 
 {
   const Eigen::MatrixXd* const locals[1] = { &local };
   double* const values[1] = { M.valuePtr() };
-  scatter_local_matrices<1>(locals, ring, m, order, M.outerIndexPtr(), M.innerIndexPtr(), values);
+  scatter_local_matrices<1, Eigen::MatrixXd>(locals, ring, m, order, M.outerIndexPtr(), M.innerIndexPtr(), values);
 }
 
 /// Fills the values of M (which must carry ring_sparsity_pattern) with the mass matrix and returns

@@ -40,7 +40,7 @@ struct Stepper_settings
   std::size_t maximum_steps = 10;
   Stopping_criteria stopping;
   Linear_solver solver = Linear_solver::AUTOMATIC;
-  double solver_tolerance = 1e-10;
+  double solver_tolerance = 1e-8;
   int solver_maximum_iterations = 10000;
   bool verbose = false;
 };
@@ -84,7 +84,7 @@ public:
   }
 
   std::size_t number_of_free_vertices() const { return free_.size(); }
-  const Fem_assembler<Cache>& assembler() const { return assembler_; }
+  Fem_assembler<Cache>& assembler() { return assembler_; }
 
   /// Runs the flow from X (n x kappa; the first `metric_columns` columns define the surface, the
   /// others are carried along with the same operator). On success X holds the faired control points.
