@@ -13,7 +13,7 @@
 namespace CGAL {
 namespace Anisotropic_fairing {
 
-/// \ingroup PkgAnisotropicFairingRef
+/// \ingroup PkgAnisotropicFairingFunctions
 /// How a fairing run ended. Anything but `SUCCESS` leaves the mesh and the maps untouched.
 enum class Fairing_status {
   SUCCESS,            ///< the result was written back
@@ -23,7 +23,7 @@ enum class Fairing_status {
   COLLAPSED           ///< the surface shrank to (almost) nothing: area below \f$10^{-8}\f$ of the initial one
 };
 
-/// \ingroup PkgAnisotropicFairingRef
+/// \ingroup PkgAnisotropicFairingFunctions
 /// Why the run stopped.
 enum class Stop_reason {
   MAXIMUM_STEPS,        ///< `number_of_iterations` steps were taken
@@ -35,7 +35,7 @@ enum class Stop_reason {
   FAILURE               ///< see `Fairing_report::status`
 };
 
-/// \ingroup PkgAnisotropicFairingRef
+/// \ingroup PkgAnisotropicFairingFunctions
 /// Short snake_case name of a stop reason (as written in the command-line tool's JSON report).
 inline const char* to_string(Stop_reason r)
 {
@@ -51,7 +51,7 @@ inline const char* to_string(Stop_reason r)
   }
 }
 
-/// \ingroup PkgAnisotropicFairingRef
+/// \ingroup PkgAnisotropicFairingFunctions
 /// Short snake_case name of a status.
 inline const char* to_string(Fairing_status s)
 {
@@ -66,7 +66,7 @@ inline const char* to_string(Fairing_status s)
 }
 
 /*!
-\ingroup PkgAnisotropicFairingRef
+\ingroup PkgAnisotropicFairingFunctions
 Statistics of one time step \f$t_{n-1} \to t_n\f$; the geometric quantities are those of the surface
 \f$M(t_n)\f$ reached by the step (area, energy and \f$\int|H|^2\f$ of step 0 are in `Fairing_report::initial`).
 */
@@ -86,7 +86,7 @@ struct Fairing_step
 };
 
 /*!
-\ingroup PkgAnisotropicFairingRef
+\ingroup PkgAnisotropicFairingFunctions
 The result of `anisotropic_fairing()`.
 */
 struct Fairing_report

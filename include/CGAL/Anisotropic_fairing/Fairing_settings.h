@@ -10,14 +10,14 @@
 namespace CGAL {
 namespace Anisotropic_fairing {
 
-/// \ingroup PkgAnisotropicFairingRef
+/// \ingroup PkgAnisotropicFairingFunctions
 /// The finite element that discretises the diffusion (named parameter `finite_element`).
 enum class Finite_element {
   LOOP,   ///< Loop-subdivision limit-surface elements (Bajaj & Xu): smooth, the default
   LINEAR  ///< piecewise-linear (P1) hat functions on the mesh itself: consistent mass, cotangent stiffness (Clarenz et al.)
 };
 
-/// \ingroup PkgAnisotropicFairingRef
+/// \ingroup PkgAnisotropicFairingFunctions
 /// What is written into the point map after fairing (named parameter `output_positions`).
 enum class Output_positions {
   /// the points of the faired smooth surface at the vertices (the Loop limit points; the vertices
@@ -28,7 +28,7 @@ enum class Output_positions {
   CONTROL_POINTS
 };
 
-/// \ingroup PkgAnisotropicFairingRef
+/// \ingroup PkgAnisotropicFairingFunctions
 /// The solver of the symmetric positive definite system of each step (named parameter `linear_solver`).
 enum class Linear_solver {
   /// conjugate gradients preconditioned by the diagonal, warm-started from the previous step, all
@@ -41,12 +41,12 @@ enum class Linear_solver {
   AUTOMATIC
 };
 
-/// \ingroup PkgAnisotropicFairingRef
+/// \ingroup PkgAnisotropicFairingFunctions
 /// Below this number of free vertices `Linear_solver::AUTOMATIC` factorises (measured cross-over, see the user manual).
 constexpr int automatic_cholesky_limit = 6000;
 
 /*!
-\ingroup PkgAnisotropicFairingRef
+\ingroup PkgAnisotropicFairingFunctions
 The stopping criteria (27)-(29) of Bajaj & Xu and a steady-state test (named parameter `stopping_criteria`).
 
 The run ends after `number_of_iterations` steps or as soon as one enabled criterion holds after a step.

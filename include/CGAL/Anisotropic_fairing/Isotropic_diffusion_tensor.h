@@ -13,7 +13,7 @@ namespace CGAL {
 namespace Anisotropic_fairing {
 
 /*!
-\ingroup PkgAnisotropicFairingRef
+\ingroup PkgAnisotropicFairingFunctions
 \cgalModels `DiffusionTensor`
 
 The identity tensor: \f$(D\nabla\phi_i, \nabla\phi_j) = \nabla\phi_i\cdot\nabla\phi_j\f$, i.e.

@@ -14,7 +14,7 @@ namespace CGAL {
 namespace Anisotropic_fairing {
 
 /*!
-\ingroup PkgAnisotropicFairingRef
+\ingroup PkgAnisotropicFairingFunctions
 The local geometry of the surface \f$x(\xi_1,\xi_2)\f$ in \f$\mathbb{R}^\kappa\f$ at a quadrature point
 of a face, as passed to a diffusion tensor. Pointers are valid during the call only.
 */
@@ -35,7 +35,7 @@ struct Quadrature_point_geometry
   int ring_size;           ///< number of entries of `ring` and `basis`
 };
 
-/// \ingroup PkgAnisotropicFairingRef
+/// \ingroup PkgAnisotropicFairingFunctions
 /// A symmetric 2x2 matrix in the face's parameters: \f$A = [[a_{11}, a_{12}], [a_{12}, a_{22}]]\f$.
 struct Parametric_tensor
 {
