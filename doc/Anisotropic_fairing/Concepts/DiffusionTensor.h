@@ -12,7 +12,8 @@ enters only through the symmetric \f$2\times 2\f$ matrix \f$A = G^{-1}T^T D T G^
 parameters: \f$(D\nabla\phi_i)\cdot\nabla\phi_j = \partial\phi_i^T A\,\partial\phi_j\f$. A model
 returns \f$A\f$, which must be positive semi-definite (for \f$D = I\f$, \f$A = G^{-1}\f$).
 
-The object is copied into the named-parameter pack; pass `std::cref(t)` for a heavy one.
+The object is copied into the named-parameter pack; pass `std::cref(t)` for a heavy one. With TBB,
+`operator()` is called concurrently from several threads, so it must not modify shared state.
 
 \cgalHasModel `CGAL::Anisotropic_fairing::Isotropic_diffusion_tensor`
 */
