@@ -3,7 +3,7 @@
 #
 #   bash scripts/af.sh deps    install the missing Debian 12 packages (as root, or through sudo)
 #   bash scripts/af.sh build   deps, then configure (Release) and build everything into build/
-#   bash scripts/af.sh main    build, then run the main example on examples/.../data/bumpy.off
+#   bash scripts/af.sh main    build, then fair the bundled noisy fandisk with build/bin/anisotropic_fairing
 #   bash scripts/af.sh test    build, then run all CTest tests (non-zero exit on failure)
 #
 # Works from any current directory.
@@ -17,10 +17,12 @@ JOBS=2
 DEB_PACKAGES=(libcgal-dev libeigen3-dev libboost-dev libtbb-dev cmake g++)
 
 # The main program: the one place to change what `af.sh main` runs.
-MAIN_EXE="$BUILD_DIR/examples/Anisotropic_fairing/loop_limit_surface"
-MAIN_INPUT="examples/Anisotropic_fairing/data/bumpy.off"
-MAIN_OUTPUT="$BUILD_DIR/bumpy_limit.off"
-MAIN_EXTRA_ARGS=(2)
+# Fairs the noisy fandisk of the denoising benchmark (6475 vertices, closed): five steps of
+# tau = 1e-4 l^2 (l = sqrt(area/4pi)), the default stopping criteria; report in build/fandisk_faired.json.
+MAIN_EXE="$BUILD_DIR/bin/anisotropic_fairing"
+MAIN_INPUT="examples/Anisotropic_fairing/data/fandisk_noisy.obj"
+MAIN_OUTPUT="$BUILD_DIR/fandisk_faired.off"
+MAIN_EXTRA_ARGS=(--relative-time-step 1e-4 --steps 5 --report "$BUILD_DIR/fandisk_faired.json")
 
 log() { printf '[af] %s\n' "$*" >&2; }
 die() { printf '[af] error: %s\n' "$*" >&2; exit 1; }
