@@ -292,6 +292,39 @@ void linear_element_sphere()
   }
 }
 
+// Linear_solver::AUTOMATIC: a CG failure is retried by the factorisation; a slow CG step makes the
+// next step a timed factorised trial. Results agree with the explicit solvers.
+void automatic_solver(const std::string& data)
+{
+  Mesh bunny;
+  CGAL::IO::read_polygon_mesh(data + "/bunny.off", bunny);
+  Mesh a = bunny, b = bunny, c = bunny;
+  const auto np = AF::parameters::relative_time_step(2e-2).number_of_iterations(4u)
+                     .stopping_criteria(AF::Stopping_criteria::none()).output_positions(AF::Output_positions::CONTROL_POINTS);
+  const AF::Fairing_report rc = AF::anisotropic_fairing(c, np.linear_solver(AF::Linear_solver::CHOLESKY));
+  const AF::Fairing_report ra = AF::anisotropic_fairing(a, np.solver_maximum_iterations(20));   // AUTOMATIC
+  std::printf("AUTOMATIC with CG capped at 20 iterations: %s, direct steps %d%d%d\n", AF::to_string(ra.status),
+              int(ra.steps.size() > 0 && ra.steps[0].direct_solve), int(ra.steps.size() > 1 && ra.steps[1].direct_solve),
+              int(ra.steps.size() > 2 && ra.steps[2].direct_solve));
+  AF_CHECK(ra.succeeded() && ra.steps.size() == 4 && ra.steps[0].direct_solve && ra.used_cholesky,
+           "AUTOMATIC retries a step whose CG fails with the factorisation");
+  const double d = max_abs_difference(coordinates(a), coordinates(c));
+  AF_CHECK(d == 0.0, "the retried steps equal the factorised run");
+  const AF::Fairing_report rb = AF::anisotropic_fairing(b, np);
+  std::size_t slow = 0;
+  for(const AF::Fairing_step& s : rb.steps)
+  {
+    std::printf("  AUTOMATIC step %zu: %s, %d iterations, %.4f s\n", s.step, s.direct_solve ? "factorised" : "CG",
+                s.solver_iterations, s.solve_seconds);
+    if(!slow && !s.direct_solve && s.solver_iterations > AF::automatic_cholesky_trial_iterations) slow = s.step;
+  }
+  AF_CHECK(rb.succeeded() && slow > 0 && slow < rb.steps.size() && rb.steps[slow].direct_solve,
+           "after a CG step above the trial threshold, the next step is a factorised trial");
+  const double e = max_abs_difference(coordinates(b), coordinates(c));
+  std::printf("AUTOMATIC vs CHOLESKY: max |difference| %.3g (bunny size ~0.15)\n", e);
+  AF_CHECK(e < 1e-7, "AUTOMATIC agrees with the factorised run to the CG tolerance");
+}
+
 int main(int argc, char** argv)
 {
   const std::string data = argc > 1 ? argv[1] : "data";
@@ -304,5 +337,6 @@ int main(int argc, char** argv)
   relative_units(bumpy);
   stopping_criteria(bumpy);
   linear_element_sphere();
+  automatic_solver(data);
   return AF_test::report();
 }

@@ -83,6 +83,7 @@ struct Fairing_step
   double step_displacement = 0; ///< \f$\max_i |x_i(t_n) - x_i(t_{n-1})|\f$, model units
   double assemble_seconds = 0;  ///< wall time to assemble the system of this step
   double solve_seconds = 0;     ///< wall time to solve it
+  bool direct_solve = false;    ///< solved by the sparse factorisation (else by conjugate gradients)
 };
 
 /*!
@@ -100,7 +101,7 @@ struct Fairing_report
   double time_step = 0;           ///< \f$\tau\f$ in model units
   double fidelity_weight = 0;     ///< \f$\omega\f$ in model units (1/time)
   double mean_edge_length = 0;    ///< h of the input mesh; \f$\tau/h^2\f$ governs the linear solver's work
-  bool used_cholesky = false;     ///< which solver ran
+  bool used_cholesky = false;     ///< whether any step was solved by the sparse factorisation
   std::size_t vertices = 0;       ///< number of vertices
   std::size_t faces = 0;          ///< number of faces
   std::size_t constrained_vertices = 0; ///< vertices held fixed

@@ -37,13 +37,21 @@ enum class Linear_solver {
   /// sparse LDL^T (Eigen's `SimplicialLDLT`); the symbolic analysis is done once, only the numeric
   /// factorisation is repeated; exact, but its cost grows faster than linearly with the mesh size
   CHOLESKY,
-  /// `CHOLESKY` up to `automatic_cholesky_limit` free vertices, `CONJUGATE_GRADIENT` above (the default)
+  /// the default: conjugate gradients, measured against the factorisation when they become slow. When a
+  /// step needs more than `automatic_cholesky_trial_iterations` iterations (large \f$\tau/h^2\f$, poorly shaped
+  /// meshes), the next step is solved by `CHOLESKY`, which is kept from then on if it was faster. A step whose
+  /// iterations fail to converge is solved again by `CHOLESKY`. Factorisation is only tried up to
+  /// `automatic_cholesky_limit` free vertices (its fill grows faster than linearly).
   AUTOMATIC
 };
 
 /// \ingroup PkgAnisotropicFairingFunctions
-/// Below this number of free vertices `Linear_solver::AUTOMATIC` factorises (measured cross-over, see the user manual).
-constexpr int automatic_cholesky_limit = 6000;
+/// The most free vertices for which `Linear_solver::AUTOMATIC` tries the factorisation.
+constexpr int automatic_cholesky_limit = 50000;
+
+/// \ingroup PkgAnisotropicFairingFunctions
+/// Conjugate-gradient iterations in a step above which `Linear_solver::AUTOMATIC` times the factorisation.
+constexpr int automatic_cholesky_trial_iterations = 100;
 
 /*!
 \ingroup PkgAnisotropicFairingFunctions

@@ -74,19 +74,24 @@ public:
   std::size_t number_of_nonzeros() const { return std::size_t(pattern_.nonZeros()); }
 
   /// Assembles M and L (value arrays over pattern()) on the surface whose control points are the
-  /// first `metric_columns` columns of X.
+  /// first `metric_columns` columns of X. With `with_matrices == false` only the statistics are
+  /// computed (when the element gives curvature at points) and M, L are left as they are.
   template <typename Tensor>
   Assembly_statistics assemble(const Control_matrix& X, int metric_columns, const Tensor& tensor,
-                               std::vector<double>& M, std::vector<double>& L)
+                               std::vector<double>& M, std::vector<double>& L, bool with_matrices = true)
   {
     const std::size_t nnz = number_of_nonzeros(), nf = cache_.number_of_faces();
-    M.assign(nnz, 0.0);
-    L.assign(nnz, 0.0);
+    if(!Cache::has_second_derivatives) with_matrices = true;   // the curvature integral needs them
+    if(with_matrices)
+    {
+      M.assign(nnz, 0.0);
+      L.assign(nnz, 0.0);
+    }
     std::vector<Assembly_statistics> stats{ std::size_t(chunks_) };
     auto run_chunk = [&](int k) {
       double* mv = M.data();
       double* lv = L.data();
-      if(k > 0)
+      if(k > 0 && with_matrices)
       {
         std::vector<double>& pm = partial_[2 * std::size_t(k - 1)];
         std::vector<double>& pl = partial_[2 * std::size_t(k - 1) + 1];
@@ -97,7 +102,7 @@ public:
       const std::size_t begin = nf * std::size_t(k) / std::size_t(chunks_);
       const std::size_t end = nf * std::size_t(k + 1) / std::size_t(chunks_);
       for(std::size_t f = begin; f < end; ++f)
-        assemble_face(f, X, metric_columns, tensor, ws, mv, lv, stats[std::size_t(k)]);
+        assemble_face(f, X, metric_columns, tensor, ws, with_matrices ? mv : nullptr, lv, stats[std::size_t(k)]);
     };
 #ifdef CGAL_LINKED_WITH_TBB
     if(chunks_ > 1)
@@ -105,7 +110,7 @@ public:
     else
 #endif
       for(int k = 0; k < chunks_; ++k) run_chunk(k);
-    for(int k = 1; k < chunks_; ++k)
+    for(int k = 1; k < chunks_ && with_matrices; ++k)
     {
       const std::vector<double>& pm = partial_[2 * std::size_t(k - 1)];
       const std::vector<double>& pl = partial_[2 * std::size_t(k - 1) + 1];
@@ -155,6 +160,7 @@ private:
     else assemble_face_with(ws.any, f, X, kappa, tensor, ws, mv, lv, stats);
   }
 
+  // mv == nullptr: statistics only
   template <typename Buffers, typename Tensor>
   void assemble_face_with(Buffers& b, std::size_t f, const Control_matrix& X, int kappa, const Tensor& tensor,
                           Workspace& ws, double* mv, double* lv, Assembly_statistics& stats) const
@@ -215,6 +221,7 @@ private:
       stats.area += c;
       stats.energy += c * (A.a11 * g11 + 2 * A.a12 * g12 + A.a22 * g22);
       if(Cache::has_second_derivatives) stats.H_integral += c * mean_curvature_squared(g);
+      if(!mv) continue;
 
       b.Bm.row(q) = std::sqrt(c) * S0.row(q);
       // c A = R R^T (2x2 Cholesky; A is positive semi-definite), then d phi^T (cA) d phi = |R^T d phi|^2
@@ -225,6 +232,7 @@ private:
       b.Bl.row(2 * q) = r11 * S1.row(q) + r21 * S2.row(q);
       b.Bl.row(2 * q + 1) = r22 * S2.row(q);
     }
+    if(!mv) return;
     // local matrices B^T B (only the lower triangle is read by the scatter, so symmetry is exact)
     if(Buffers::fixed)
     {

@@ -21,6 +21,16 @@ namespace internal {
 
 /// Returns an n x n compressed, symmetric matrix whose structural non-zeros are all pairs of
 /// vertices sharing a triangle ring, with zero values.
+/// A compressed column-major matrix with the given structure and zero values.
+inline Eigen::SparseMatrix<double> sparse_matrix_from_pattern(Eigen::Index rows, Eigen::Index cols,
+                                                             const std::vector<int>& outer, const std::vector<int>& inner)
+{
+  std::vector<double> zeros(inner.size(), 0.0);
+  const Eigen::Map<const Eigen::SparseMatrix<double>> view(rows, cols, Eigen::Index(inner.size()), outer.data(),
+                                                          inner.data(), zeros.data());
+  return Eigen::SparseMatrix<double>(view);
+}
+
 /// `Cache` is any element cache (Patch_cache, Linear_element_cache) exposing faces and their rings.
 template <typename Cache>
 Eigen::SparseMatrix<double> ring_sparsity_pattern(const Cache& cache, std::size_t n)
@@ -35,31 +45,25 @@ Eigen::SparseMatrix<double> ring_sparsity_pattern(const Cache& cache, std::size_
   for(std::size_t f = 0; f < cache.number_of_faces(); ++f)
     for(int k = 0; k < cache.ring_size(f); ++k) faces_of[fill[cache.ring(f)[k]]++] = int(f);
 
-  const Eigen::Index size = Eigen::Index(n);
-  Eigen::SparseMatrix<double> M(size, size);
-  std::vector<int> nnz(n, 0);
-  std::vector<int> mark(n, -1);
-  std::vector<std::vector<int>> cols(n);
+  // column j: every vertex of every ring that contains j (sorted), written straight into CSC arrays
+  std::vector<int> outer(n + 1, 0), inner, mark(n, -1);
+  inner.reserve(n * 40);
   for(std::size_t j = 0; j < n; ++j)
   {
-    std::vector<int>& c = cols[j];
+    const std::size_t begin = inner.size();
     for(std::size_t p = start[j]; p < start[j + 1]; ++p)
     {
       const int f = faces_of[p];
-      for(int k = 0; k < cache.ring_size(f); ++k)
+      for(int k = 0; k < cache.ring_size(std::size_t(f)); ++k)
       {
-        const int i = cache.ring(f)[k];
-        if(mark[i] != int(j)) { mark[i] = int(j); c.push_back(i); }
+        const int i = cache.ring(std::size_t(f))[k];
+        if(mark[std::size_t(i)] != int(j)) { mark[std::size_t(i)] = int(j); inner.push_back(i); }
       }
     }
-    std::sort(c.begin(), c.end());
-    nnz[j] = int(c.size());
+    std::sort(inner.begin() + std::ptrdiff_t(begin), inner.end());
+    outer[j + 1] = int(inner.size());
   }
-  M.reserve(nnz);
-  for(std::size_t j = 0; j < n; ++j)
-    for(int i : cols[j]) M.insert(i, Eigen::Index(j)) = 0.0;
-  M.makeCompressed();
-  return M;
+  return sparse_matrix_from_pattern(Eigen::Index(n), Eigen::Index(n), outer, inner);
 }
 
 } // namespace internal

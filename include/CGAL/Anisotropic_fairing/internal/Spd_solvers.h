@@ -20,6 +20,7 @@
 #endif
 
 #include <algorithm>
+#include <chrono>
 #include <cmath>
 #include <string>
 #include <vector>
@@ -35,6 +36,7 @@ struct Solve_statistics
   bool ok = true;
   int iterations = 0;
   double residual = 0;   // largest relative residual over the columns
+  double analysis_seconds = 0;   // one-off symbolic work included in this call
   std::string message;
 };
 
@@ -185,7 +187,13 @@ public:
   Solve_statistics solve(const Eigen::SparseMatrix<double>& A, const Dense_block& B, Dense_block& X) override
   {
     Solve_statistics st;
-    if(!analysed_) { ldlt_.analyzePattern(A); analysed_ = true; }
+    if(!analysed_)
+    {
+      const auto start = std::chrono::steady_clock::now();
+      ldlt_.analyzePattern(A);
+      analysed_ = true;
+      st.analysis_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    }
     ldlt_.factorize(A);
     if(ldlt_.info() != Eigen::Success || !(ldlt_.vectorD().minCoeff() > 0))
     {

@@ -55,6 +55,54 @@ private:
   std::chrono::steady_clock::time_point start_;
 };
 
+/// Which solver runs each step. AUTOMATIC starts with conjugate gradients; when a step needs many
+/// iterations it times one factorised step and keeps whichever was faster (bench_step_speed: CG wins
+/// per step on every mesh tried at tau/h^2 <= 1, the factorisation wins by up to 5x once CG needs
+/// hundreds of iterations on a few thousand vertices).
+class Solver_choice
+{
+public:
+  Solver_choice(Linear_solver requested, std::size_t free_vertices)
+    : automatic_(requested == Linear_solver::AUTOMATIC),
+      may_factorise_(requested == Linear_solver::CHOLESKY ||
+                     (automatic_ && free_vertices <= std::size_t(automatic_cholesky_limit))),
+      mode_(requested == Linear_solver::CHOLESKY ? FACTORISE : ITERATE)
+  {}
+
+  bool factorise_now() const { return mode_ != ITERATE; }
+  bool may_fall_back() const { return automatic_ && may_factorise_; }
+  Sparse_cholesky& cholesky()
+  {
+    if(!cholesky_) cholesky_.reset(new Sparse_cholesky());
+    return *cholesky_;
+  }
+
+  void record(bool direct, const Solve_statistics& sol, double seconds)
+  {
+    if(!automatic_) return;
+    if(direct && !sol.ok) { mode_ = ITERATE; tried_ = true; return; }
+    if(direct && mode_ == ITERATE) { mode_ = FACTORISE; tried_ = true; return; }   // CG had failed
+    if(mode_ == TRIAL)
+    {
+      tried_ = true;
+      mode_ = (seconds - sol.analysis_seconds < iterate_seconds_) ? FACTORISE : ITERATE;
+    }
+    else if(mode_ == ITERATE && !tried_ && may_factorise_ && sol.iterations > automatic_cholesky_trial_iterations)
+    {
+      iterate_seconds_ = seconds;
+      mode_ = TRIAL;
+    }
+  }
+
+private:
+  enum Mode { ITERATE, TRIAL, FACTORISE };
+  bool automatic_, may_factorise_;
+  Mode mode_;
+  bool tried_ = false;
+  double iterate_seconds_ = 0;
+  std::unique_ptr<Sparse_cholesky> cholesky_;
+};
+
 template <typename Cache>
 class Time_stepper
 {
@@ -67,20 +115,19 @@ public:
       if(!constrained[i]) { free_index_[i] = int(free_.size()); free_.push_back(int(i)); }
     // the free-free block of the pattern, and where each of its entries comes from
     const Eigen::SparseMatrix<double>& P = assembler_.pattern();
-    const Eigen::Index nfree = Eigen::Index(free_.size());
-    A_.resize(nfree, nfree);
-    std::vector<int> nnz(free_.size(), 0);
+    std::vector<int> outer(1, 0), inner;
+    inner.reserve(std::size_t(P.nonZeros()));
+    source_.reserve(std::size_t(P.nonZeros()));
     for(std::size_t k = 0; k < free_.size(); ++k)
-      for(int p = P.outerIndexPtr()[free_[k]]; p < P.outerIndexPtr()[free_[k] + 1]; ++p)
-        if(free_index_[std::size_t(P.innerIndexPtr()[p])] >= 0) ++nnz[k];
-    A_.reserve(nnz);
-    for(std::size_t k = 0; k < free_.size(); ++k)
+    {
       for(int p = P.outerIndexPtr()[free_[k]]; p < P.outerIndexPtr()[free_[k] + 1]; ++p)
       {
         const int r = free_index_[std::size_t(P.innerIndexPtr()[p])];
-        if(r >= 0) { A_.insert(r, Eigen::Index(k)) = 0.0; source_.push_back(p); }
+        if(r >= 0) { inner.push_back(r); source_.push_back(p); }   // rows stay sorted: free_ is increasing
       }
-    A_.makeCompressed();
+      outer.push_back(int(inner.size()));
+    }
+    A_ = sparse_matrix_from_pattern(Eigen::Index(free_.size()), Eigen::Index(free_.size()), outer, inner);
   }
 
   std::size_t number_of_free_vertices() const { return free_.size(); }
@@ -97,11 +144,8 @@ public:
     Fairing_report report;
     report.vertices = std::size_t(X.rows());
     report.constrained_vertices = std::size_t(X.rows()) - free_.size();
-    report.used_cholesky = s.solver == Linear_solver::CHOLESKY ||
-                           (s.solver == Linear_solver::AUTOMATIC && int(free_.size()) <= automatic_cholesky_limit);
-    std::unique_ptr<Spd_solver> solver;
-    if(report.used_cholesky) solver.reset(new Sparse_cholesky());
-    else solver.reset(new Block_conjugate_gradient(s.solver_tolerance, s.solver_maximum_iterations));
+    Block_conjugate_gradient cg(s.solver_tolerance, s.solver_maximum_iterations);
+    Solver_choice choice(s.solver, free_.size());
 
     const Control_matrix X0 = X;
     Stopwatch clock;
@@ -141,8 +185,23 @@ public:
       st.assemble_seconds = assemble_seconds + clock.seconds();
 
       clock = Stopwatch();
-      const Solve_statistics sol = solver->solve(A_, B, dX);   // warm start: the previous displacement
+      Solve_statistics sol;
+      st.direct_solve = choice.factorise_now();
+      if(st.direct_solve) sol = choice.cholesky().solve(A_, B, dX);
+      else
+      {
+        previous_dX_ = dX;
+        sol = cg.solve(A_, B, dX);   // warm start: the previous displacement
+        if(!sol.ok && choice.may_fall_back())
+        {
+          dX = previous_dX_;
+          st.direct_solve = true;
+          sol = choice.cholesky().solve(A_, B, dX);
+        }
+      }
       st.solve_seconds = clock.seconds();
+      choice.record(st.direct_solve, sol, st.solve_seconds);
+      report.used_cholesky = report.used_cholesky || st.direct_solve;
       st.solver_iterations = sol.iterations;
       st.residual = sol.residual;
       if(!sol.ok) return fail(report, Fairing_status::SOLVER_FAILED, "step " + std::to_string(step) + ": " + sol.message, total);
@@ -161,7 +220,7 @@ public:
 
       // the new surface: diagnostics now, and the matrices of the next step
       clock = Stopwatch();
-      a = assembler_.assemble(X, metric_columns, tensor, M_, L_);
+      a = assembler_.assemble(X, metric_columns, tensor, M_, L_, step < s.maximum_steps);  // the last: statistics only
       assemble_seconds = clock.seconds();
       st.area = a.area; st.energy = a.energy; st.H_integral = a.H_integral;
       report.steps.push_back(st);
@@ -258,6 +317,7 @@ private:
   std::vector<int> source_;
   Eigen::SparseMatrix<double> A_;
   std::vector<double> M_, L_;
+  Dense_block previous_dX_;
 };
 
 } // namespace internal
