@@ -100,7 +100,7 @@ const char* const usage_text =
 "solver, requested_solver, stop, max_steps, quadrature_degree, time_step, relative_time_step, scale,\n"
 "fidelity_weight, relative_fidelity_weight, mean_edge_length, normals, stop_reason, initial {area,\n"
 "energy, H_integral}, steps [{step, time, solver_iterations, residual, area, energy, H_integral,\n"
-"max_displacement, step_displacement, assemble_seconds, solve_seconds}], setup_seconds,\n"
+"max_displacement, step_displacement, assemble_seconds, solve_seconds, direct_solve}], setup_seconds,\n"
 "total_seconds (the fairing call), wall_seconds (the whole program). Unknown values are null.\n"
 "\n"
 "exit status: 0 success; 1 failure (unreadable input, a mesh that is not a closed 2-manifold triangle\n"
@@ -686,7 +686,8 @@ std::string report_json(const Options& o, const Run_record& r, double wall_secon
           << ", \"max_displacement\": " << json_number(s.max_displacement)
           << ", \"step_displacement\": " << json_number(s.step_displacement)
           << ", \"assemble_seconds\": " << json_number(s.assemble_seconds)
-          << ", \"solve_seconds\": " << json_number(s.solve_seconds) << "}";
+          << ", \"solve_seconds\": " << json_number(s.solve_seconds)
+          << ", \"direct_solve\": " << (s.direct_solve ? "true" : "false") << "}";
   }
   steps << (f.steps.empty() ? "]" : "\n  ]");
   kv("steps", steps.str());
@@ -753,8 +754,9 @@ int run(const Options& o, Run_record& r)
   const bool quiet = o.quiet;
   auto progress = [max_steps, quiet](const AF::Fairing_step& s) {
     if(!quiet)
-      std::fprintf(stderr, "step %zu/%u  t=%.6g  area=%.6g  int|H|^2=%.6g  max disp=%.6g  %d its  %.3fs+%.3fs\n",
+      std::fprintf(stderr, "step %zu/%u  t=%.6g  area=%.6g  int|H|^2=%.6g  max disp=%.6g  %d %s  %.3fs+%.3fs\n",
                    s.step, max_steps, s.time, s.area, s.H_integral, s.max_displacement, s.solver_iterations,
+                   s.direct_solve ? "factorisation" : "its",
                    s.assemble_seconds, s.solve_seconds);
     return true;
   };
