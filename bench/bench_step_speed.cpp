@@ -10,11 +10,12 @@
 //   (b) CG iterations per step, Loop vs P1, at tau/h^2 = 0.1, 1, 3 (h = mean edge length; absolute
 //       time_step), 4 steps, on bumpy.off, bunny.off and the 144k fertility.
 //   (c) CHOLESKY vs CONJUGATE_GRADIENT per-step solve time of the Loop system at 1k-35k vertices
-//       (small meshes Loop-subdivided), to place Linear_solver::AUTOMATIC's threshold; CG also at a
-//       ten times larger step, where its iterations grow.
+//       (small meshes Loop-subdivided), at tau_rel 1e-4, 1e-3 and 1e-2 (where CG's iterations grow),
+//       and what Linear_solver::AUTOMATIC makes of it (whole call, and which steps it factorised).
 //   (d) where a one-step Loop call's time goes on the 144k mesh, timed with the internal classes as
 //       the driver uses them (numbering, locality ordering, element set-up, stepper set-up, one
-//       assembly with TBB and with one thread, limit evaluation). Internal API: update with the driver.
+//       assembly with TBB and with one thread, the statistics-only assembly of the last step, limit
+//       evaluation). Internal API: update with the driver.
 //
 // (a) and (c) use the library's default solver tolerance; (b) sets 1e-8 explicitly.
 //
@@ -186,7 +187,7 @@ void part_step(const std::string& dir, int runs)
   std::printf("\n## (a) One step: isotropic Loop / P1 (CONJUGATE_GRADIENT) vs smooth_shape, median of %d runs, seconds\n", runs);
   std::printf("\nassemble, solve: the step's assemble_seconds (assembly at X_0 and forming the system) and solve_seconds;"
               " set-up: report.setup_seconds; rest = whole call - assemble - solve: numbering and validation, set-up,"
-              " the stepper's sparsity patterns, the assembly at X_1 for the step's diagnostics, the limit evaluation and the write-back.\n\n");
+              " the stepper's sparsity patterns, the statistics-only assembly at X_1, the limit evaluation and the write-back.\n\n");
   std::printf("| mesh | method | tau/h^2 | CG its | whole call | set-up | assemble | solve | rest |\n"
               "|---|---|---:|---:|---:|---:|---:|---:|---:|\n");
   struct Input { const char* file; int sub; };
@@ -304,10 +305,11 @@ void part_solvers(const std::string& dir, int runs)
   std::printf("\n## (c) Loop system: CHOLESKY (Eigen SimplicialLDLT) vs CONJUGATE_GRADIENT, %d steps of relative_time_step(tau_rel), seconds"
               " (median of %d runs below 20k vertices, 1 run above)\n\n", steps, runs);
   std::printf("CHOLESKY: step 1 includes the symbolic analysis; later steps factorise and solve. CG: mean over the %d steps."
-              " whole = the whole call with %d steps (AUTOMATIC currently picks CHOLESKY up to %d free vertices).\n\n",
-              steps, steps, AF::automatic_cholesky_limit);
-  std::printf("| mesh | V | tau_rel | tau/h^2 | CG its/step | CG solve/step | CHOL solve step 1 | CHOL solve later steps | CHOL/CG per step | whole CG | whole CHOL |\n"
-              "|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|\n");
+              " whole = the whole call with %d steps. AUTOMATIC: CG, a factorised trial step after a step of more than %d"
+              " iterations, up to %d free vertices; 'steps' lists the solver of each step (C = CG, D = direct).\n\n",
+              steps, steps, AF::automatic_cholesky_trial_iterations, AF::automatic_cholesky_limit);
+  std::printf("| mesh | V | tau_rel | tau/h^2 | CG its/step | CG solve/step | CHOL solve step 1 | CHOL solve later steps | CHOL/CG per step | whole CG | whole CHOL | whole AUTOMATIC (steps) |\n"
+              "|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---|\n");
   struct Input { const char* file; int sub; };
   for(const Input& in : {Input{"bumpy.off", 0}, Input{"bunny.off", 0}, Input{"fertility.off", 0}, Input{"bumpy.off", 1},
                          Input{"fandisk.off", 0}, Input{"bunny.off", 1}, Input{"fertility.off", 1}, Input{"bumpy.off", 2},
@@ -355,17 +357,33 @@ void part_solvers(const std::string& dir, int runs)
         for(const AF::Fairing_step& st : rep.steps) sum += st.solver_iterations;
         its.push_back(sum / double(rep.steps.size()));
       }
-      if(!failure.empty()) { std::printf("| %s | %zu | %g | | CG failed: %s | | | | | | |\n", s.name.c_str(), nv, tr, failure.c_str()); continue; }
+      if(!failure.empty()) { std::printf("| %s | %zu | %g | | CG failed: %s | | | | | | | |\n", s.name.c_str(), nv, tr, failure.c_str()); continue; }
+      std::vector<double> autow;
+      std::string auto_steps;
+      for(int r = 0; r < r_count; ++r)
+      {
+        Mesh m = s.mesh;
+        double wall = 0;
+        const AF::Fairing_report rep = run(m, AF::parameters::relative_time_step(tr).number_of_iterations(steps)
+                                                  .stopping_criteria(AF::Stopping_criteria::none())
+                                                  .linear_solver(AF::Linear_solver::AUTOMATIC), wall);
+        autow.push_back(wall);
+        auto_steps.clear();
+        for(const AF::Fairing_step& st : rep.steps) auto_steps += st.direct_solve ? 'D' : 'C';
+        if(!rep.succeeded()) auto_steps += std::string(" ") + AF::to_string(rep.status);
+      }
+      char auto_cell[96];
+      std::snprintf(auto_cell, sizeof auto_cell, "%.3f (%s)", median(autow), auto_steps.c_str());
       const bool chol_here = tr == 1e-3;
       if(chol_here && !chol_failure.empty())
-      { std::printf("| %s | %zu | %g | %.2f | %.0f | %.4f | CHOLESKY failed: %s | | | %.3f | |\n", s.name.c_str(), nv, tr, tau / (h * h),
-                    median(its), median(cg), chol_failure.c_str(), median(cgw)); continue; }
+      { std::printf("| %s | %zu | %g | %.2f | %.0f | %.4f | CHOLESKY failed: %s | | | %.3f | | %s |\n", s.name.c_str(), nv, tr, tau / (h * h),
+                    median(its), median(cg), chol_failure.c_str(), median(cgw), auto_cell); continue; }
       if(chol_here)
-        std::printf("| %s | %zu | %g | %.2f | %.0f | %.4f | %.4f | %.4f | %.2f | %.3f | %.3f |\n", s.name.c_str(), nv, tr, tau / (h * h),
-                    median(its), median(cg), median(ch1), median(chl), median(chl) / median(cg), median(cgw), median(chw));
+        std::printf("| %s | %zu | %g | %.2f | %.0f | %.4f | %.4f | %.4f | %.2f | %.3f | %.3f | %s |\n", s.name.c_str(), nv, tr, tau / (h * h),
+                    median(its), median(cg), median(ch1), median(chl), median(chl) / median(cg), median(cgw), median(chw), auto_cell);
       else
-        std::printf("| %s | %zu | %g | %.2f | %.0f | %.4f | (same) | (same) | %.2f | %.3f | |\n", s.name.c_str(), nv, tr, tau / (h * h),
-                    median(its), median(cg), median(chl) / median(cg), median(cgw));
+        std::printf("| %s | %zu | %g | %.2f | %.0f | %.4f | (same) | (same) | %.2f | %.3f | | %s |\n", s.name.c_str(), nv, tr, tau / (h * h),
+                    median(its), median(cg), median(chl) / median(cg), median(cgw), auto_cell);
       std::fflush(stdout);
     }
   }
@@ -378,7 +396,7 @@ void part_breakdown(const std::string& dir, int runs)
   namespace AFi = AF::internal;
   Named_mesh s;
   if(!load(dir, "fertility.off", 2, s)) return;
-  std::vector<double> t_index, t_order, t_cache, t_stepper, t_asm, t_asm1, t_limit;
+  std::vector<double> t_index, t_order, t_cache, t_stepper, t_asm, t_asm1, t_stats, t_limit;
   for(int r = 0; r < runs; ++r)
   {
     CGAL::Real_timer t;
@@ -407,6 +425,9 @@ void part_breakdown(const std::string& dir, int runs)
       t.reset();
       assembler.assemble(X, 3, AF::Isotropic_diffusion_tensor(), M, L);
       t_asm.push_back(t.time());
+      t.reset();
+      assembler.assemble(X, 3, AF::Isotropic_diffusion_tensor(), M, L, false);
+      t_stats.push_back(t.time());
     }
 #ifdef CGAL_LINKED_WITH_TBB
     tbb::task_arena one(1);
@@ -438,8 +459,9 @@ void part_breakdown(const std::string& dir, int runs)
 #endif
               median(t_asm));
   if(!t_asm1.empty()) std::printf("| one assembly, one thread | %.3f |\n", median(t_asm1));
+  std::printf("| statistics only (area, energy, int |H|^2; the last step's), TBB | %.3f |\n", median(t_stats));
   std::printf("| limit positions of all vertices | %.3f |\n", median(t_limit));
-  std::printf("\nA one-step call assembles twice: at X_0 for the step, and at X_1 for the step's diagnostics (area, energy, int |H|^2) and the stopping test.\n");
+  std::printf("\nA one-step call assembles at X_0 (matrices and statistics) and at X_1 (statistics only: the step's area, energy, int |H|^2 and the stopping test).\n");
 }
 
 int main(int argc, char** argv)
