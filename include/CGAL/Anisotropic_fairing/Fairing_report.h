@@ -81,7 +81,7 @@ struct Fairing_step
   double H_integral = 0;        ///< \f$\int |H|^2 dA\f$ (mean-curvature vector H, \f$\Delta x = 2H\f$)
   double max_displacement = 0;  ///< \f$\max_i |x_i(t_n) - x_i(0)|\f$ over the control points, model units
   double step_displacement = 0; ///< \f$\max_i |x_i(t_n) - x_i(t_{n-1})|\f$, model units
-  double assemble_seconds = 0;  ///< wall time to assemble the system of this step
+  double assemble_seconds = 0;  ///< wall time to assemble the system of this step (for the last step, plus the final surface's statistics)
   double solve_seconds = 0;     ///< wall time to solve it
   bool direct_solve = false;    ///< solved by the sparse factorisation (else by conjugate gradients)
 };
@@ -105,7 +105,7 @@ struct Fairing_report
   std::size_t vertices = 0;       ///< number of vertices
   std::size_t faces = 0;          ///< number of faces
   std::size_t constrained_vertices = 0; ///< vertices held fixed
-  double setup_seconds = 0;       ///< element and pattern set-up
+  double setup_seconds = 0;       ///< set-up: private numbering, element (patch categories, stencils), sparsity patterns
   double total_seconds = 0;       ///< the whole call
 
   /// true when the result was written back

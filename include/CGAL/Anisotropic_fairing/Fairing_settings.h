@@ -39,9 +39,11 @@ enum class Linear_solver {
   CHOLESKY,
   /// the default: conjugate gradients, measured against the factorisation when they become slow. When a
   /// step needs more than `automatic_cholesky_trial_iterations` iterations (large \f$\tau/h^2\f$, poorly shaped
-  /// meshes), the next step is solved by `CHOLESKY`, which is kept from then on if it was faster. A step whose
-  /// iterations fail to converge is solved again by `CHOLESKY`. Factorisation is only tried up to
-  /// `automatic_cholesky_limit` free vertices (its fill grows faster than linearly).
+  /// meshes), the next step is factorised and timed; from then on the run factorises whenever that is
+  /// faster than the next conjugate-gradient step is predicted to be (the last one's time, scaled by the
+  /// growth of the iteration count). A step whose iterations fail to converge is solved
+  /// again by `CHOLESKY`. Factorisation is only tried up to `automatic_cholesky_limit` free vertices
+  /// (its fill grows faster than linearly).
   AUTOMATIC
 };
 

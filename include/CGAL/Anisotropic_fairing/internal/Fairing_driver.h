@@ -84,10 +84,12 @@ inline void check_parameter(bool ok, const std::string& message)
 template <typename Cache, typename Tensor, typename Callback>
 Fairing_report run_stepper(const Cache& cache, const Locality_ordering& ordering, Control_matrix& X,
                            const std::vector<bool>& constrained, const Tensor& tensor, const Stepper_settings& s,
-                           Callback& callback)
+                           Callback& callback, double& setup_seconds)
 {
+  const Stopwatch clock;
   Time_stepper<Cache> stepper(cache, std::size_t(X.rows()), constrained);
   stepper.assembler().use_original_indices(&ordering.old_of_new_vertex, &ordering.old_of_new_face);
+  setup_seconds += clock.seconds();
   return stepper.run(X, 3, tensor, s, callback);
 }
 
@@ -166,7 +168,7 @@ Fairing_report fair(TriangleMesh& tm, VertexPointMap vpm, AttributeMap attribute
     Patch_cache cache(topology);
     cache.prepare_quadrature(spec);
     setup_seconds = setup.seconds();
-    report = run_stepper(cache, ordering, X, constrained, tensor, s, callback);
+    report = run_stepper(cache, ordering, X, constrained, tensor, s, callback, setup_seconds);
     if(report.succeeded() && output == Output_positions::LIMIT_SURFACE)
     {
       Control_matrix limit(X.rows(), X.cols());
@@ -178,7 +180,7 @@ Fairing_report fair(TriangleMesh& tm, VertexPointMap vpm, AttributeMap attribute
   {
     Linear_element_cache cache(topology);
     setup_seconds = setup.seconds();
-    report = run_stepper(cache, ordering, X, constrained, tensor, s, callback);
+    report = run_stepper(cache, ordering, X, constrained, tensor, s, callback, setup_seconds);
   }
   report.faces = im.number_of_faces();
   report.setup_seconds = setup_seconds;

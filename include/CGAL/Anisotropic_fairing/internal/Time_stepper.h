@@ -20,6 +20,7 @@
 #include <CGAL/Anisotropic_fairing/internal/Spd_solvers.h>
 
 #include <chrono>
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <iostream>
@@ -80,18 +81,22 @@ public:
   void record(bool direct, const Solve_statistics& sol, double seconds)
   {
     if(!automatic_) return;
-    if(direct && !sol.ok) { mode_ = ITERATE; tried_ = true; return; }
-    if(direct && mode_ == ITERATE) { mode_ = FACTORISE; tried_ = true; return; }   // CG had failed
-    if(mode_ == TRIAL)
+    if(direct && !sol.ok) { mode_ = ITERATE; tried_ = true; factorised_seconds_ = HUGE_VAL; return; }
+    if(direct)
     {
+      factorised_seconds_ = seconds - sol.analysis_seconds;   // what every further factorised step costs
+      mode_ = (mode_ != TRIAL || factorised_seconds_ < predicted_iterate_seconds_) ? FACTORISE : ITERATE;
       tried_ = true;
-      mode_ = (seconds - sol.analysis_seconds < iterate_seconds_) ? FACTORISE : ITERATE;
+      return;
     }
-    else if(mode_ == ITERATE && !tried_ && may_factorise_ && sol.iterations > automatic_cholesky_trial_iterations)
-    {
-      iterate_seconds_ = seconds;
-      mode_ = TRIAL;
-    }
+    // CG work often grows from step to step as the surface roughens or pinches: predict the next
+    // step's cost from the growth of the iteration count
+    const double growth = previous_iterations_ > 0 ? std::max(1.0, double(sol.iterations) / previous_iterations_) : 1.0;
+    predicted_iterate_seconds_ = seconds * growth;
+    previous_iterations_ = sol.iterations;
+    if(!may_factorise_) return;
+    if(tried_ && predicted_iterate_seconds_ > factorised_seconds_) mode_ = FACTORISE;
+    else if(!tried_ && sol.iterations > automatic_cholesky_trial_iterations) mode_ = TRIAL;
   }
 
 private:
@@ -99,7 +104,8 @@ private:
   bool automatic_, may_factorise_;
   Mode mode_;
   bool tried_ = false;
-  double iterate_seconds_ = 0;
+  double predicted_iterate_seconds_ = 0, factorised_seconds_ = HUGE_VAL;
+  int previous_iterations_ = 0;
   std::unique_ptr<Sparse_cholesky> cholesky_;
 };
 
@@ -223,6 +229,7 @@ public:
       a = assembler_.assemble(X, metric_columns, tensor, M_, L_, step < s.maximum_steps);  // the last: statistics only
       assemble_seconds = clock.seconds();
       st.area = a.area; st.energy = a.energy; st.H_integral = a.H_integral;
+      if(step == s.maximum_steps) st.assemble_seconds += assemble_seconds;   // the final surface's statistics
       report.steps.push_back(st);
       if(s.verbose) print(st);
       if(a.degenerate) return fail(report, Fairing_status::DEGENERATE_METRIC, degenerate_message(a, step), total);
