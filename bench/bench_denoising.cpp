@@ -39,6 +39,8 @@
 #include <CGAL/Anisotropic_fairing/Loop_limit_surface.h>
 #include <CGAL/Anisotropic_fairing/anisotropic_fairing.h>
 
+#include "bench_mesh_measures.h"
+
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
@@ -85,18 +87,6 @@ Vector face_normal(const Mesh& m, Mesh::Face_index f)
   return CGAL::cross_product(b - a, c - a);
 }
 
-double mean_edge_length(const Mesh& m)
-{
-  double sum = 0;
-  std::size_t count = 0;
-  for(Mesh::Face_index f : m.faces())
-    for(Mesh::Halfedge_index h : CGAL::halfedges_around_face(m.halfedge(f), m))
-    {
-      sum += std::sqrt(CGAL::squared_distance(m.point(m.source(h)), m.point(m.target(h))));
-      ++count;
-    }
-  return count ? sum / double(count) : 0.0;
-}
 
 struct Quality
 {

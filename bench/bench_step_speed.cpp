@@ -29,6 +29,8 @@
 #include <CGAL/subdivision_method_3.h>
 
 #include <CGAL/Anisotropic_fairing/anisotropic_fairing.h>
+
+#include "bench_mesh_measures.h"
 #include <CGAL/Anisotropic_fairing/internal/Fem_assembly.h>
 #include <CGAL/Anisotropic_fairing/internal/Indexed_mesh.h>
 #include <CGAL/Anisotropic_fairing/internal/Locality_ordering.h>
@@ -73,19 +75,6 @@ double mean(const std::vector<double>& v)
   return v.empty() ? std::nan("") : s / double(v.size());
 }
 
-// the library's definition: every face's three edges, averaged
-double mean_edge_length(const Mesh& m)
-{
-  double sum = 0;
-  std::size_t count = 0;
-  for(Mesh::Face_index f : m.faces())
-    for(Mesh::Halfedge_index h : CGAL::halfedges_around_face(m.halfedge(f), m))
-    {
-      sum += std::sqrt(CGAL::squared_distance(m.point(m.source(h)), m.point(m.target(h))));
-      ++count;
-    }
-  return count ? sum / double(count) : 0.0;
-}
 
 struct Named_mesh
 {
