@@ -17,6 +17,7 @@
 #include <algorithm>
 #include <array>
 #include <cstdint>
+#include <limits>
 #include <memory>
 #include <unordered_map>
 #include <vector>
@@ -49,9 +50,12 @@ public:
   /// the Loop element has second-derivative stencils (mean curvature at quadrature points)
   static constexpr bool has_second_derivatives = true;
 
-  explicit Patch_cache(const Triangle_topology& topo)
+  /// Categories of the first `faces_to_evaluate` faces of `topo` (all by default; with a ghost layer,
+  /// the real faces, which come first and whose vertices all have closed fans).
+  explicit Patch_cache(const Triangle_topology& topo,
+                       std::size_t faces_to_evaluate = (std::numeric_limits<std::size_t>::max)())
   {
-    const std::size_t nf = topo.number_of_faces();
+    const std::size_t nf = (std::min)(faces_to_evaluate, topo.number_of_faces());
     category_.resize(nf);
     ring_offset_.resize(nf + 1);
     ring_offset_[0] = 0;

@@ -13,6 +13,7 @@
 #include <algorithm>
 #include <array>
 #include <cstdint>
+#include <limits>
 #include <string>
 #include <unordered_map>
 #include <vector>
@@ -28,8 +29,12 @@ public:
   typedef std::array<int, 3> Face;
 
   /// Builds and validates the topology. Throws `Input_error` naming the first offending element.
-  Triangle_topology(std::size_t number_of_vertices, std::vector<Face> faces)
-    : faces_(std::move(faces)), n_vertices_(number_of_vertices)
+  /// Vertices with index >= `closed_vertices` (ghosts of a boundary layer) may lie on the border and
+  /// have any valence; all others must have one closed fan of valence >= 3.
+  Triangle_topology(std::size_t number_of_vertices, std::vector<Face> faces,
+                    std::size_t closed_vertices = (std::numeric_limits<std::size_t>::max)())
+    : faces_(std::move(faces)), n_vertices_(number_of_vertices),
+      closed_vertices_((std::min)(closed_vertices, number_of_vertices))
   {
     if(faces_.empty())
       throw Input_error(Input_error::EMPTY_MESH, Input_error::no_element, "the mesh has no face");
@@ -98,6 +103,7 @@ private:
     for(int h = 0; h < int(nh); ++h)
     {
       auto it = directed.find(key(target(h), source(h)));
+      if(it == directed.end() && !is_closed(source(h)) && !is_closed(target(h))) continue;   // ghost border
       if(it == directed.end())
         throw Input_error(Input_error::BORDER_EDGE, std::size_t(source(h)),
                           "the edge between vertices " + std::to_string(source(h)) + " and " +
@@ -111,6 +117,7 @@ private:
       if(out_[v] < 0)
         throw Input_error(Input_error::ISOLATED_VERTEX, v,
                           "vertex " + std::to_string(v) + " has no incident face");
+      if(!is_closed(int(v))) { valence_[v] = outgoing_count[v]; continue; }
       int n = 0, h = out_[v];
       do { ++n; h = ccw(h); } while(h != out_[v] && n <= outgoing_count[v]);
       if(n != outgoing_count[v])
@@ -124,8 +131,11 @@ private:
     }
   }
 
+  bool is_closed(int v) const { return std::size_t(v) < closed_vertices_; }
+
   std::vector<Face> faces_;
   std::size_t n_vertices_;
+  std::size_t closed_vertices_;
   std::vector<int> opposite_;
   std::vector<int> out_;
   std::vector<int> valence_;

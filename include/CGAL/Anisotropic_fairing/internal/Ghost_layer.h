@@ -1,0 +1,119 @@
+// Copyright (c) 2026 Anisotropic_fairing developers.
+// SPDX-License-Identifier: GPL-3.0-or-later
+//
+// The ghost layer that closes the fans of boundary vertices, so that every real triangle of a mesh
+// with borders is an ordinary Loop patch (Bajaj & Xu 2003, section 4.3, completed as in
+// loop-fem.md section 6). It lives in a private index space: ghosts are numbered after the real
+// vertices and are affine combinations of them (x_ghost = sum_j w_j x_j, sum w_j = 1), so they move
+// with the surface and X_ext = E X. The user's mesh is never touched.
+//
+// For a boundary vertex v with real fan (v,r0,r1), ..., (v,r_{m-1},r_m) (boundary edges v->r0, r_m->v):
+//  - each boundary edge p->q of a real triangle (p,q,r) gets the edge ghost g = p + q - r and the ghost
+//    triangle (q,p,g), shared by both endpoints;
+//  - the fan is closed by c = max(1, 4 - m) triangles (v,g_m,h_1), ..., (v,h_{c-1},g_0) with vertex
+//    ghosts h_j = 2v - r_{m-2+j} (point reflections through v).
+// v then has valence m + 2 + c (6 for m <= 3), and on a regular lattice every ghost is a lattice point.
+
+#ifndef CGAL_ANISOTROPIC_FAIRING_INTERNAL_GHOST_LAYER_H
+#define CGAL_ANISOTROPIC_FAIRING_INTERNAL_GHOST_LAYER_H
+
+#include <CGAL/Anisotropic_fairing/Input_error.h>
+#include <CGAL/Anisotropic_fairing/internal/Triangle_topology.h>
+
+#include <cstdint>
+#include <memory>
+#include <string>
+#include <unordered_map>
+#include <utility>
+#include <vector>
+
+namespace CGAL {
+namespace Anisotropic_fairing {
+namespace internal {
+
+/// An affine combination of real vertices.
+typedef std::vector<std::pair<int, double>> Affine_row;
+
+struct Ghost_layer
+{
+  std::size_t real_vertices = 0, real_faces = 0;
+  std::vector<Affine_row> ghosts;            // ghost k is extended vertex real_vertices + k
+  std::vector<int> boundary_vertices;        // real vertices on a border, increasing
+  std::unique_ptr<Triangle_topology> topology;  // real faces first (same indices), then ghost faces
+
+  std::size_t number_of_extended_vertices() const { return real_vertices + ghosts.size(); }
+  bool has_boundary() const { return !ghosts.empty(); }
+};
+
+/// Builds the ghost layer of the triangle mesh (n vertices, faces). Throws Input_error for what the
+/// closed topology refuses too (non-manifold edges and vertices, including bow-tie boundary
+/// vertices, degenerate faces, isolated vertices, interior valence < 3).
+inline Ghost_layer make_ghost_layer(std::size_t n, const std::vector<Triangle_topology::Face>& faces)
+{
+  Ghost_layer gl;
+  gl.real_vertices = n;
+  gl.real_faces = faces.size();
+  auto key = [](int a, int b) { return (std::uint64_t(std::uint32_t(a)) << 32) | std::uint32_t(b); };
+  std::unordered_map<std::uint64_t, int> directed;   // directed edge -> face
+  directed.reserve(faces.size() * 6);
+  for(std::size_t f = 0; f < faces.size(); ++f)
+    for(int k = 0; k < 3; ++k) directed.emplace(key(faces[f][k], faces[f][(k + 1) % 3]), int(f));
+  auto is_border = [&](int p, int q) { return directed.count(key(q, p)) == 0; };   // p->q has no twin
+  auto apex = [&](int f, int p) {   // the vertex of face f after p, and the one after that
+    const Triangle_topology::Face& t = faces[std::size_t(f)];
+    const int k = t[0] == p ? 0 : t[1] == p ? 1 : 2;
+    return std::make_pair(t[(k + 1) % 3], t[(k + 2) % 3]);
+  };
+
+  std::vector<Triangle_topology::Face> ext = faces;
+  std::unordered_map<std::uint64_t, int> edge_ghost;   // boundary edge p->q -> ghost index
+  auto add_ghost = [&](Affine_row row) {
+    gl.ghosts.push_back(std::move(row));
+    return int(n + gl.ghosts.size() - 1);
+  };
+  auto ghost_of_edge = [&](int p, int q, int r) {   // edge ghost of border edge p->q in real triangle (p,q,r)
+    auto it = edge_ghost.find(key(p, q));
+    if(it != edge_ghost.end()) return it->second;
+    const int g = add_ghost({ { p, 1.0 }, { q, 1.0 }, { r, -1.0 } });
+    edge_ghost.emplace(key(p, q), g);
+    ext.push_back({ { q, p, g } });
+    return g;
+  };
+
+  std::vector<char> on_boundary(n, 0);
+  for(std::size_t f = 0; f < faces.size(); ++f)
+    for(int k = 0; k < 3; ++k)
+    {
+      const int p = faces[f][k], q = faces[f][(k + 1) % 3];
+      if(!is_border(p, q)) continue;
+      on_boundary[std::size_t(p)] = 1;
+      // walk the fan of p counter-clockwise from the border edge p->r0 (= p->q) to the border edge r_m->p
+      std::vector<int> r(1, q);
+      int face = int(f);
+      for(std::size_t guard = 0; guard <= faces.size(); ++guard)
+      {
+        const int next = apex(face, p).second;          // face = (p, r_last, next)
+        r.push_back(next);
+        if(is_border(next, p)) break;                    // r_m -> p is a border edge
+        face = directed.at(key(p, next));                // the face holding p->next
+      }
+      const int m = int(r.size()) - 1;
+      const int g0 = ghost_of_edge(p, r[0], r[1]);
+      const int gm = ghost_of_edge(r[std::size_t(m)], p, r[std::size_t(m - 1)]);
+      const int c = m >= 3 ? 1 : 4 - m;
+      std::vector<int> fan(1, gm);
+      for(int j = 1; j <= c - 1; ++j) fan.push_back(add_ghost({ { p, 2.0 }, { r[std::size_t(m - 2 + j)], -1.0 } }));
+      fan.push_back(g0);
+      for(std::size_t j = 0; j + 1 < fan.size(); ++j) ext.push_back({ { p, fan[j], fan[j + 1] } });
+    }
+  for(std::size_t v = 0; v < n; ++v)
+    if(on_boundary[v]) gl.boundary_vertices.push_back(int(v));
+  gl.topology.reset(new Triangle_topology(gl.number_of_extended_vertices(), std::move(ext), n));
+  return gl;
+}
+
+} // namespace internal
+} // namespace Anisotropic_fairing
+} // namespace CGAL
+
+#endif // CGAL_ANISOTROPIC_FAIRING_INTERNAL_GHOST_LAYER_H
