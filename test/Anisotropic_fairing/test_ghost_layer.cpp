@@ -4,7 +4,10 @@
 // is interpolated; m = 2: (5/6) v + (1/6)(r0 + r2) - (1/6) r1), checked with random 3-D control data; the
 // limit surface of a single triangle is that flat triangle; bow-tie vertices are refused.
 
+#include <CGAL/Anisotropic_fairing/Isotropic_diffusion_tensor.h>
+#include <CGAL/Anisotropic_fairing/internal/Fem_assembly.h>
 #include <CGAL/Anisotropic_fairing/internal/Ghost_layer.h>
+#include <CGAL/Anisotropic_fairing/internal/Ghosted_patch_cache.h>
 #include <CGAL/Anisotropic_fairing/internal/Patch_cache.h>
 #include <CGAL/Anisotropic_fairing/internal/Vertex_limit_masks.h>
 
@@ -184,8 +187,58 @@ void check_bow_tie()
   AF_CHECK(refused, "a bow-tie boundary vertex is refused, naming the vertex");
 }
 
+Eigen::MatrixXd dense(const Eigen::SparseMatrix<double>& pattern, const std::vector<double>& values)
+{
+  Eigen::SparseMatrix<double> A = pattern;
+  std::copy(values.begin(), values.end(), A.valuePtr());
+  return Eigen::MatrixXd(A);
+}
+
+// Assembly over the real vertices with ghosts substituted (Ghosted_patch_cache) equals
+// E^T M_ext E and E^T L_ext E from the extended mesh; on a planar regular grid the limit surface is
+// the grid itself, so the area is exact.
+void check_ghosted_assembly()
+{
+  const int rows = 6, cols = 8, n = rows * cols;
+  const std::vector<Face> faces = grid_faces(rows, cols);
+  const AFI::Ghost_layer gl = AFI::make_ghost_layer(std::size_t(n), faces);
+  AFI::Control_matrix flat(n, 3), wavy(n, 3);
+  std::mt19937 rng(5);
+  std::uniform_real_distribution<double> u(-0.05, 0.05);
+  for(int i = 0; i < rows; ++i)
+    for(int j = 0; j < cols; ++j)
+    {
+      flat.row(i * cols + j) << j, i, 0;
+      wavy.row(i * cols + j) << j + u(rng), i + u(rng), 0.4 * std::sin(0.7 * j) * std::cos(0.5 * i) + u(rng);
+    }
+  const AFI::Ghosted_patch_cache cache(gl, AFI::Quadrature_spec());
+  AFI::Fem_assembler<AFI::Ghosted_patch_cache> real(cache, std::size_t(n));
+  AFI::Fem_assembler<AFI::Patch_cache> extended(cache.extended(), gl.number_of_extended_vertices());
+  std::vector<double> m, l, me, le;
+  const AFI::Assembly_statistics flat_stats = real.assemble(flat, 3, CGAL::Anisotropic_fairing::Isotropic_diffusion_tensor(), m, l);
+  std::printf("planar %dx%d grid with ghosts: limit area %.15g (grid %d), %zu of %zu faces see ghosts\n", rows, cols,
+              flat_stats.area, (rows - 1) * (cols - 1), cache.number_of_ghosted_faces(), faces.size());
+  AF_CHECK_REL(flat_stats.area, double((rows - 1) * (cols - 1)), 1e-14, "the limit surface of a planar regular grid is the grid");
+  real.assemble(wavy, 3, CGAL::Anisotropic_fairing::Isotropic_diffusion_tensor(), m, l);
+  extended.assemble(extend(gl, wavy), 3, CGAL::Anisotropic_fairing::Isotropic_diffusion_tensor(), me, le);
+  Eigen::MatrixXd E = Eigen::MatrixXd::Zero(Eigen::Index(gl.number_of_extended_vertices()), n);
+  for(int i = 0; i < n; ++i) E(i, i) = 1;
+  for(std::size_t k = 0; k < gl.ghosts.size(); ++k)
+    for(const auto& w : gl.ghosts[k]) E(Eigen::Index(std::size_t(n) + k), w.first) += w.second;
+  const Eigen::MatrixXd M = dense(real.pattern(), m), L = dense(real.pattern(), l);
+  const Eigen::MatrixXd Mref = E.transpose() * dense(extended.pattern(), me) * E;
+  const Eigen::MatrixXd Lref = E.transpose() * dense(extended.pattern(), le) * E;
+  const double em = (M - Mref).cwiseAbs().maxCoeff() / Mref.cwiseAbs().maxCoeff();
+  const double el = (L - Lref).cwiseAbs().maxCoeff() / Lref.cwiseAbs().maxCoeff();
+  std::printf("wavy grid: |M - E^T M_ext E| %.3g, |L - E^T L_ext E| %.3g (relative to the largest entry)\n", em, el);
+  AF_CHECK(em < 1e-14 && el < 1e-14, "ghost substitution in the stencils = E^T (extended matrix) E");
+  AF_CHECK((M - M.transpose()).norm() == 0 && (L - L.transpose()).norm() == 0, "and the matrices stay exactly symmetric");
+  AF_CHECK((L * Eigen::VectorXd::Ones(n)).cwiseAbs().maxCoeff() < 1e-14 * L.cwiseAbs().maxCoeff(), "L 1 = 0 with ghosts");
+}
+
 int main()
 {
+  check_ghosted_assembly();
   check_limit_formulas();
   check_single_triangle();
   check_high_valence_boundary_vertex();
