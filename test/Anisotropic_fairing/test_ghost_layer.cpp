@@ -5,6 +5,7 @@
 // limit surface of a single triangle is that flat triangle; bow-tie vertices are refused.
 
 #include <CGAL/Anisotropic_fairing/Isotropic_diffusion_tensor.h>
+#include <CGAL/Anisotropic_fairing/internal/Boundary_constraints.h>
 #include <CGAL/Anisotropic_fairing/internal/Fem_assembly.h>
 #include <CGAL/Anisotropic_fairing/internal/Ghost_layer.h>
 #include <CGAL/Anisotropic_fairing/internal/Ghosted_patch_cache.h>
@@ -236,8 +237,44 @@ void check_ghosted_assembly()
   AF_CHECK((L * Eigen::VectorXd::Ones(n)).cwiseAbs().maxCoeff() < 1e-14 * L.cwiseAbs().maxCoeff(), "L 1 = 0 with ghosts");
 }
 
+// The patch test (loop-fem.md section 6): on a planar regular grid a linear function is a steady state
+// iff no free basis function touches the limit boundary curve. Holding the boundary vertices only
+// fails next to the m = 2 corners; holding the influence set too passes.
+void check_patch_test()
+{
+  const int rows = 6, cols = 8, n = rows * cols;
+  const AFI::Ghost_layer gl = AFI::make_ghost_layer(std::size_t(n), grid_faces(rows, cols));
+  const AFI::Ghosted_patch_cache cache(gl, AFI::Quadrature_spec());
+  AFI::Control_matrix X(n, 3);
+  for(int i = 0; i < rows; ++i)
+    for(int j = 0; j < cols; ++j) X.row(i * cols + j) << j, i, 0.3 * j - 0.2 * i + 0.1;   // a tilted plane
+  AFI::Fem_assembler<AFI::Ghosted_patch_cache> as(cache, std::size_t(n));
+  std::vector<double> m, l;
+  as.assemble(X, 3, CGAL::Anisotropic_fairing::Isotropic_diffusion_tensor(), m, l);
+  const Eigen::MatrixXd L = dense(as.pattern(), l);
+  const Eigen::MatrixXd LX = L * Eigen::MatrixXd(X);
+  for(bool influence : { false, true })
+  {
+    const std::vector<bool> fixed = AFI::boundary_constrained_vertices(gl, cache, influence);
+    double residual = 0;
+    std::size_t held = 0;
+    for(int i = 0; i < n; ++i)
+      if(fixed[std::size_t(i)]) ++held;
+      else residual = std::max(residual, LX.row(i).norm() / L.cwiseAbs().maxCoeff());
+    std::printf("patch test, %s: %zu vertices held (%zu on the border), largest free residual |(L X)_i| %.3g\n",
+                influence ? "border + influence set" : "border only", held, gl.boundary_vertices.size(), residual);
+    if(influence)
+    {
+      AF_CHECK(held == gl.boundary_vertices.size() + 2, "the influence set of the regular grid: the 2 vertices next to the m = 2 corners");
+      AF_CHECK(residual < 1e-14, "patch test passes with the influence set held");
+    }
+    else AF_CHECK(residual > 1e-3, "patch test fails with the border vertices only (the paper's choice)");
+  }
+}
+
 int main()
 {
+  check_patch_test();
   check_ghosted_assembly();
   check_limit_formulas();
   check_single_triangle();

@@ -64,6 +64,8 @@ public:
           else for(const auto& w : gl.ghosts[std::size_t(ext[k] - n)]) P(k, slot[std::size_t(w.first)]) += w.second;
         for(std::size_t j = begin; j < ring_.size(); ++j) slot[std::size_t(ring_[j])] = -1;
         Ghosted_face g;
+        g.face = f;
+        g.substitution = P;
         g.base_category = base_.category(f);
         for(int r = 0; r < STENCIL_ROWS; ++r) g.rows[r] = base_.quadrature_rows(g.base_category, r) * P;
         category_[f] = base_categories + int(ghosted_.size());
@@ -88,12 +90,26 @@ public:
   }
   /// faces whose ring holds ghosts
   std::size_t number_of_ghosted_faces() const { return ghosted_.size(); }
+
+  /// The value weights on ring(f) of the limit surface at (xi1, xi2) of face f.
+  std::vector<double> value_weights(std::size_t f, double xi1, double xi2) const
+  {
+    Stencil st;
+    base_.root_patch(base_.category(f)).stencil(xi1, xi2, st);
+    const Eigen::Map<const Eigen::RowVectorXd> ext(st.row(VALUE), st.m);
+    const int c = category_[f];
+    if(c < base_categories_) return std::vector<double>(ext.data(), ext.data() + st.m);
+    const Eigen::RowVectorXd real = ext * ghosted_[std::size_t(c - base_categories_)].substitution;
+    return std::vector<double>(real.data(), real.data() + real.size());
+  }
   /// the cache over the extended vertices
   const Patch_cache& extended() const { return base_; }
 
 private:
   struct Ghosted_face
   {
+    std::size_t face;
+    Eigen::MatrixXd substitution;   // P: extended ring slot -> real ring slot
     int base_category;
     Row_matrix rows[STENCIL_ROWS];
   };
