@@ -5,13 +5,13 @@
 #define CGAL_ANISOTROPIC_FAIRING_LOOP_LIMIT_SURFACE_H
 
 #include <CGAL/Anisotropic_fairing/Input_error.h>
+#include <CGAL/Anisotropic_fairing/Isotropic_diffusion_tensor.h>
 #include <CGAL/Anisotropic_fairing/Vector_attribute_traits.h>
 #include <CGAL/Anisotropic_fairing/named_function_parameters.h>
+#include <CGAL/Anisotropic_fairing/internal/Fem_assembly.h>
 #include <CGAL/Anisotropic_fairing/internal/Indexed_mesh.h>
 #include <CGAL/Anisotropic_fairing/internal/Limit_resampler.h>
-#include <CGAL/Anisotropic_fairing/internal/Mass_assembly.h>
 #include <CGAL/Anisotropic_fairing/internal/Patch_cache.h>
-#include <CGAL/Anisotropic_fairing/internal/Sparse_pattern.h>
 #include <CGAL/Anisotropic_fairing/internal/Vertex_limit_masks.h>
 
 #include <CGAL/Kernel_traits.h>
@@ -21,6 +21,7 @@
 
 #include <Eigen/SparseCore>
 
+#include <algorithm>
 #include <array>
 #include <cmath>
 #include <memory>
@@ -269,8 +270,11 @@ public:
   */
   Eigen::SparseMatrix<double> mass_matrix() const
   {
-    Eigen::SparseMatrix<double> M = internal::ring_sparsity_pattern(*cache_, number_of_vertices());
-    internal::assemble_mass_matrix(*cache_, X_, M);
+    internal::Fem_assembler<internal::Patch_cache> assembler(*cache_, number_of_vertices());
+    std::vector<double> m, l;
+    assembler.assemble(X_, int(X_.cols()), Isotropic_diffusion_tensor(), m, l);
+    Eigen::SparseMatrix<double> M = assembler.pattern();
+    std::copy(m.begin(), m.end(), M.valuePtr());
     return M;
   }
   /// @}
@@ -337,7 +341,9 @@ private:
     X_ = indexed_->read_points(vpm);
     cache_.reset(new internal::Patch_cache(indexed_->topology()));
     cache_->prepare_quadrature(spec);
-    area_ = internal::limit_surface_area(*cache_, X_);
+    internal::Fem_assembler<internal::Patch_cache> statistics(*cache_, number_of_vertices(), false);
+    std::vector<double> unused;
+    area_ = statistics.assemble(X_, int(X_.cols()), Isotropic_diffusion_tensor(), unused, unused, false).area;
   }
 
   void stencil_at(std::size_t fi, const Barycentric_coordinates& b, internal::Stencil& s) const

@@ -11,7 +11,8 @@
 #define CGAL_ANISOTROPIC_FAIRING_INTERNAL_FEM_ASSEMBLY_H
 
 #include <CGAL/Anisotropic_fairing/Quadrature_point_geometry.h>
-#include <CGAL/Anisotropic_fairing/internal/Mass_assembly.h>
+#include <CGAL/Anisotropic_fairing/internal/Control_matrix.h>
+#include <CGAL/Anisotropic_fairing/internal/Patch_cache.h>
 #include <CGAL/Anisotropic_fairing/internal/Sparse_pattern.h>
 
 #ifdef CGAL_LINKED_WITH_TBB
@@ -32,6 +33,29 @@ namespace CGAL {
 namespace Anisotropic_fairing {
 namespace internal {
 
+/// Adds N symmetric local matrices, given by their lower triangles (ring x ring), into N value arrays
+/// sharing one compressed column pattern (outer, rows) that contains the ring's pairs. Reading one
+/// triangle only keeps the results exactly symmetric. Rows of a column are sorted, so each local
+/// column is merged into the global one in one pass.
+template <int N, typename Local>
+void scatter_local_matrices(const Local* const (&local)[N], const int* ring, int m, std::vector<int>& order,
+                            const int* outer, const int* rows, double* const (&values)[N])
+{
+  order.resize(std::size_t(m));
+  for(int k = 0; k < m; ++k) order[std::size_t(k)] = k;
+  std::sort(order.begin(), order.end(), [ring](int a, int b) { return ring[a] < ring[b]; });
+  for(int s = 0; s < m; ++s)
+  {
+    int p = outer[ring[s]];
+    for(int k = 0; k < m; ++k)
+    {
+      const int r = order[std::size_t(k)];
+      while(rows[p] < ring[r]) ++p;
+      for(int i = 0; i < N; ++i) values[i][p] += (r >= s) ? (*local[i])(r, s) : (*local[i])(s, r);
+    }
+  }
+}
+
 struct Assembly_statistics
 {
   double area = 0;
@@ -51,9 +75,11 @@ template <typename Cache>
 class Fem_assembler
 {
 public:
-  Fem_assembler(const Cache& cache, std::size_t number_of_vertices)
-    : cache_(cache), pattern_(ring_sparsity_pattern(cache, number_of_vertices))
+  /// Without `with_pattern` only statistics can be assembled (`with_matrices == false`).
+  Fem_assembler(const Cache& cache, std::size_t number_of_vertices, bool with_pattern = true)
+    : cache_(cache)
   {
+    if(with_pattern) pattern_ = ring_sparsity_pattern(cache, number_of_vertices);
 #ifdef CGAL_LINKED_WITH_TBB
     chunks_ = std::max(1, tbb::this_task_arena::max_concurrency());
 #endif
@@ -147,6 +173,7 @@ private:
     Linear_buffers linear;
     Any_buffers any;
     std::vector<int> order, original_ring;
+    std::vector<double> zeros, mean_curvature;   // kappa values, for any kappa
   };
 
   template <typename Tensor>
@@ -182,10 +209,8 @@ private:
       b.T[r].noalias() = Rows(cache_.quadrature_rows(cat, D1 + r).data(), nq, m).lazyProduct(b.Xr);
     b.Bm.resize(nq, m);
     b.Bl.resize(2 * nq, m);
-    static const double zero[16] = { 0 };
-    std::vector<double> zeros;
-    if(!Cache::has_second_derivatives && kappa > 16) zeros.assign(std::size_t(kappa), 0.0);
-    const double* no_second = (kappa > 16) ? zeros.data() : zero;
+    if(ws.zeros.size() != std::size_t(kappa)) { ws.zeros.assign(std::size_t(kappa), 0.0); ws.mean_curvature.resize(std::size_t(kappa)); }
+    const double* no_second = ws.zeros.data();
 
     Quadrature_point_geometry g;
     g.face = original_face_ ? (*original_face_)[f] : f;
@@ -222,7 +247,7 @@ private:
 
       face_area += c;
       face_energy += c * (A.a11 * g11 + 2 * A.a12 * g12 + A.a22 * g22);
-      if(Cache::has_second_derivatives) face_H += c * mean_curvature_squared(g);
+      if(Cache::has_second_derivatives) face_H += c * mean_curvature_squared(g, ws.mean_curvature.data());
       if(!mv) continue;
 
       b.Bm.row(q) = std::sqrt(c) * S0.row(q);
@@ -258,13 +283,9 @@ private:
   }
 
   // |H|^2 with H = Q (g22 t11 + g11 t22 - 2 g12 t12) / (2 det G), Q the projection on the normal space
-  static double mean_curvature_squared(const Quadrature_point_geometry& g)
+  static double mean_curvature_squared(const Quadrature_point_geometry& g, double* h)
   {
     const int k = g.dimension;
-    double v[16];
-    std::vector<double> big;
-    double* h = v;
-    if(k > 16) { big.resize(std::size_t(k)); h = big.data(); }
     double d1 = 0, d2 = 0;
     for(int c = 0; c < k; ++c)
     {

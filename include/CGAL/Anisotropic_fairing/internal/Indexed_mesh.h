@@ -10,7 +10,7 @@
 
 #include <CGAL/Anisotropic_fairing/Input_error.h>
 #include <CGAL/Anisotropic_fairing/Vector_attribute_traits.h>
-#include <CGAL/Anisotropic_fairing/internal/Mass_assembly.h>
+#include <CGAL/Anisotropic_fairing/internal/Control_matrix.h>
 #include <CGAL/Anisotropic_fairing/internal/Triangle_topology.h>
 
 #include <CGAL/boost/graph/iterator.h>

@@ -8,7 +8,7 @@
 #ifndef CGAL_ANISOTROPIC_FAIRING_INTERNAL_LIMIT_RESAMPLER_H
 #define CGAL_ANISOTROPIC_FAIRING_INTERNAL_LIMIT_RESAMPLER_H
 
-#include <CGAL/Anisotropic_fairing/internal/Mass_assembly.h>
+#include <CGAL/Anisotropic_fairing/internal/Control_matrix.h>
 #include <CGAL/Anisotropic_fairing/internal/Patch_cache.h>
 #include <CGAL/Anisotropic_fairing/internal/Vertex_limit_masks.h>
 

@@ -6,8 +6,8 @@
 #ifndef CGAL_ANISOTROPIC_FAIRING_INTERNAL_VERTEX_LIMIT_MASKS_H
 #define CGAL_ANISOTROPIC_FAIRING_INTERNAL_VERTEX_LIMIT_MASKS_H
 
+#include <CGAL/Anisotropic_fairing/internal/Control_matrix.h>
 #include <CGAL/Anisotropic_fairing/internal/Loop_rules.h>
-#include <CGAL/Anisotropic_fairing/internal/Mass_assembly.h>
 #include <CGAL/Anisotropic_fairing/internal/Triangle_topology.h>
 
 #include <cmath>
