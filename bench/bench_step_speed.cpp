@@ -32,6 +32,7 @@
 
 #include "bench_mesh_measures.h"
 #include <CGAL/Anisotropic_fairing/internal/Fem_assembly.h>
+#include <CGAL/Anisotropic_fairing/internal/Ghosted_patch_cache.h>
 #include <CGAL/Anisotropic_fairing/internal/Indexed_mesh.h>
 #include <CGAL/Anisotropic_fairing/internal/Locality_ordering.h>
 #include <CGAL/Anisotropic_fairing/internal/Patch_cache.h>
@@ -390,26 +391,25 @@ void part_breakdown(const std::string& dir, int runs)
   {
     CGAL::Real_timer t;
     t.start();
-    AFi::Indexed_mesh<Mesh> im(s.mesh);
+    AFi::Indexed_mesh<Mesh> im(s.mesh, AFi::Borders::GHOSTED);
     const AFi::Control_matrix P = im.read_points(s.mesh.points());
     t_index.push_back(t.time());
     t.reset();
     // as the driver does: a private locality-friendly numbering, then the element cache in it
-    const AFi::Locality_ordering ordering = AFi::make_locality_ordering(im.topology());
+    const AFi::Locality_ordering ordering = AFi::make_locality_ordering(im.ghost_layer());
     AFi::Control_matrix X(P.rows(), 3);
     for(std::size_t i = 0; i < im.number_of_vertices(); ++i) X.row(Eigen::Index(i)) = P.row(ordering.old_of_new_vertex[i]);
     t_order.push_back(t.time());
     t.reset();
-    AFi::Patch_cache cache(*ordering.topology);
-    cache.prepare_quadrature(AFi::Quadrature_spec());
+    AFi::Ghosted_patch_cache cache(ordering.layer, AFi::Quadrature_spec());
     t_cache.push_back(t.time());
     t.reset();
     const std::vector<bool> constrained(im.number_of_vertices(), false);
-    AFi::Time_stepper<AFi::Patch_cache> stepper(cache, im.number_of_vertices(), constrained);
+    AFi::Time_stepper<AFi::Ghosted_patch_cache> stepper(cache, im.number_of_vertices(), constrained);
     t_stepper.push_back(t.time());
     std::vector<double> M, L;
     {
-      AFi::Fem_assembler<AFi::Patch_cache> assembler(cache, im.number_of_vertices());
+      AFi::Fem_assembler<AFi::Ghosted_patch_cache> assembler(cache, im.number_of_vertices());
       assembler.assemble(X, 3, AF::Isotropic_diffusion_tensor(), M, L);   // warm-up (allocations)
       t.reset();
       assembler.assemble(X, 3, AF::Isotropic_diffusion_tensor(), M, L);
@@ -421,7 +421,7 @@ void part_breakdown(const std::string& dir, int runs)
 #ifdef CGAL_LINKED_WITH_TBB
     tbb::task_arena one(1);
     one.execute([&] {
-      AFi::Fem_assembler<AFi::Patch_cache> assembler(cache, im.number_of_vertices());
+      AFi::Fem_assembler<AFi::Ghosted_patch_cache> assembler(cache, im.number_of_vertices());
       assembler.assemble(X, 3, AF::Isotropic_diffusion_tensor(), M, L);
       t.reset();
       assembler.assemble(X, 3, AF::Isotropic_diffusion_tensor(), M, L);
@@ -431,7 +431,7 @@ void part_breakdown(const std::string& dir, int runs)
     t.reset();
     AFi::Control_matrix limit(X.rows(), X.cols());
     for(std::size_t i = 0; i < im.number_of_vertices(); ++i)
-      AFi::vertex_limit_value(*ordering.topology, X, int(i), limit.row(Eigen::Index(i)).data());
+      AFi::vertex_limit_value(*ordering.layer.topology, X, int(i), limit.row(Eigen::Index(i)).data());
     t_limit.push_back(t.time());
   }
   std::printf("\n## (d) Where a one-step Loop call goes, %s (%s), median of %d runs, seconds\n\n", s.name.c_str(), sizes(s.mesh).c_str(), runs);

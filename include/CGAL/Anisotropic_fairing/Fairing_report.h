@@ -32,6 +32,7 @@ enum class Stop_reason {
   DISPLACEMENT,         ///< criterion (29)
   STEADY_STATE,         ///< the flow stopped moving
   CALLBACK,             ///< the callback asked to stop
+  NO_FREE_VERTEX,       ///< every vertex is held (constrained or on a border): nothing can move, no step is taken
   FAILURE               ///< see `Fairing_report::status`
 };
 
@@ -47,6 +48,7 @@ inline const char* to_string(Stop_reason r)
     case Stop_reason::DISPLACEMENT: return "displacement";
     case Stop_reason::STEADY_STATE: return "steady_state";
     case Stop_reason::CALLBACK: return "callback";
+    case Stop_reason::NO_FREE_VERTEX: return "no_free_vertex";
     default: return "failure";
   }
 }
@@ -104,7 +106,10 @@ struct Fairing_report
   bool used_cholesky = false;     ///< whether any step was solved by the sparse factorisation
   std::size_t vertices = 0;       ///< number of vertices
   std::size_t faces = 0;          ///< number of faces
-  std::size_t constrained_vertices = 0; ///< vertices held fixed
+  std::size_t constrained_vertices = 0; ///< vertices held fixed (by the user's constraints or by a boundary)
+  std::size_t boundary_vertices = 0;    ///< vertices on a border of the mesh
+  std::size_t boundary_held_vertices = 0; ///< vertices held because of a border: the boundary vertices and, with `Boundary_handling::HOLD_BOUNDARY_CURVE`, the interior vertices that shape the limit boundary curve
+  std::size_t boundary_loops = 0;       ///< number of boundary loops (holes and outer borders)
   double setup_seconds = 0;       ///< set-up: private numbering, element (patch categories, stencils), sparsity patterns
   double total_seconds = 0;       ///< the whole call
 

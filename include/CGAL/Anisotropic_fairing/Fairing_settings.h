@@ -29,6 +29,21 @@ enum class Output_positions {
 };
 
 /// \ingroup PkgAnisotropicFairingFunctions
+/// What a border holds fixed (named parameter `boundary_handling`). Boundary vertices are always held,
+/// and never written: their input positions and attribute values are kept in both output modes.
+enum class Boundary_handling {
+  /// the default: the limit boundary curve does not move. Besides the boundary vertices, this holds
+  /// the interior vertices whose basis functions are non-zero on the limit boundary curve (next to
+  /// corners with two triangles, to boundary vertices with four or more, to extraordinary vertices
+  /// beside the border): without them the border slides, even on a plane. The linear element's
+  /// boundary curve is the border polygon, so it holds the boundary vertices only.
+  HOLD_BOUNDARY_CURVE,
+  /// the paper's choice (Bajaj & Xu, section 4.3): only the boundary vertices are held; the limit
+  /// boundary curve may move where interior vertices influence it
+  HOLD_BOUNDARY_VERTICES
+};
+
+/// \ingroup PkgAnisotropicFairingFunctions
 /// The solver of the symmetric positive definite system of each step (named parameter `linear_solver`).
 enum class Linear_solver {
   /// conjugate gradients preconditioned by the diagonal, warm-started from the previous step, all

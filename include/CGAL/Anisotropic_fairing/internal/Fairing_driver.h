@@ -2,8 +2,8 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 //
 // Everything anisotropic_fairing() does between reading the named parameters and returning:
-// validate, read the maps into matrices, pick the element, run the time stepper, and write the
-// result back only if the run succeeded.
+// validate, read the maps into matrices, close the borders by a ghost layer and hold them, pick the
+// element, run the time stepper, and write the result back only if the run succeeded.
 
 #ifndef CGAL_ANISOTROPIC_FAIRING_INTERNAL_FAIRING_DRIVER_H
 #define CGAL_ANISOTROPIC_FAIRING_INTERNAL_FAIRING_DRIVER_H
@@ -14,10 +14,11 @@
 #include <CGAL/Anisotropic_fairing/Isotropic_diffusion_tensor.h>
 #include <CGAL/Anisotropic_fairing/Vector_attribute_traits.h>
 #include <CGAL/Anisotropic_fairing/named_function_parameters.h>
+#include <CGAL/Anisotropic_fairing/internal/Boundary_constraints.h>
+#include <CGAL/Anisotropic_fairing/internal/Ghosted_patch_cache.h>
 #include <CGAL/Anisotropic_fairing/internal/Indexed_mesh.h>
 #include <CGAL/Anisotropic_fairing/internal/Linear_element_cache.h>
 #include <CGAL/Anisotropic_fairing/internal/Locality_ordering.h>
-#include <CGAL/Anisotropic_fairing/internal/Patch_cache.h>
 #include <CGAL/Anisotropic_fairing/internal/Time_stepper.h>
 #include <CGAL/Anisotropic_fairing/internal/Vertex_limit_masks.h>
 
@@ -66,15 +67,18 @@ void write_attribute_columns(const Indexed_mesh<Mesh>& im, AttributeMap map, con
     if(!keep[i]) put(map, im.vertex(i), values[i]);
 }
 
-/// Mean length of the mesh's edges (each interior edge seen from both sides, so equally weighted).
-inline double mean_edge_length(const Triangle_topology& topo, const Control_matrix& P)
+/// Mean length of the edges of the real faces (an interior edge is seen from both sides, a border
+/// edge from one).
+inline double mean_edge_length(const Ghost_layer& gl, const Control_matrix& P)
 {
+  const Triangle_topology& topo = *gl.topology;
   double sum = 0;
-  for(std::size_t f = 0; f < topo.number_of_faces(); ++f)
+  for(std::size_t f = 0; f < gl.real_faces; ++f)
     for(int k = 0; k < 3; ++k)
       sum += (P.row(topo.face(f)[k]) - P.row(topo.face(f)[(k + 1) % 3])).norm();
-  return topo.number_of_faces() > 0 ? sum / double(3 * topo.number_of_faces()) : 0.0;
+  return gl.real_faces > 0 ? sum / double(3 * gl.real_faces) : 0.0;
 }
+
 
 inline void check_parameter(bool ok, const std::string& message)
 {
@@ -83,12 +87,13 @@ inline void check_parameter(bool ok, const std::string& message)
 
 template <typename Cache, typename Tensor, typename Callback>
 Fairing_report run_stepper(const Cache& cache, const Locality_ordering& ordering, Control_matrix& X,
-                           const std::vector<bool>& constrained, const Tensor& tensor, const Stepper_settings& s,
-                           Callback& callback, double& setup_seconds)
+                           const std::vector<bool>& constrained, const std::vector<bool>& border,
+                           const Tensor& tensor, const Stepper_settings& s, Callback& callback, double& setup_seconds)
 {
   const Stopwatch clock;
   Time_stepper<Cache> stepper(cache, std::size_t(X.rows()), constrained);
   stepper.assembler().use_original_indices(&ordering.old_of_new_vertex, &ordering.old_of_new_face);
+  stepper.assembler().exclude_from_curvature(&border);
   setup_seconds += clock.seconds();
   return stepper.run(X, 3, tensor, s, callback);
 }
@@ -132,6 +137,8 @@ Fairing_report fair(TriangleMesh& tm, VertexPointMap vpm, AttributeMap attribute
   s.verbose = choose_parameter(get_parameter(np, CGAL::internal_np::verbose), false);
   const Finite_element element = choose_parameter(get_parameter(np, internal_np::finite_element), Finite_element::LOOP);
   const Output_positions output = choose_parameter(get_parameter(np, internal_np::output_positions), Output_positions::LIMIT_SURFACE);
+  const Boundary_handling boundary = choose_parameter(get_parameter(np, internal_np::boundary_handling),
+                                                      Boundary_handling::HOLD_BOUNDARY_CURVE);
   Quadrature_spec spec;
   spec.degree = choose_parameter(get_parameter(np, internal_np::quadrature_degree), 8);
   spec.tiling_depth = choose_parameter(get_parameter(np, internal_np::quadrature_tiling_depth), 0);
@@ -142,17 +149,18 @@ Fairing_report fair(TriangleMesh& tm, VertexPointMap vpm, AttributeMap attribute
                                    [](const Fairing_step&) { return true; });
 
   // input, read and checked before anything is touched
-  const Indexed_mesh<TriangleMesh> im(tm);
+  const Indexed_mesh<TriangleMesh> im(tm, Borders::GHOSTED);
   Control_matrix P = im.read_points(vpm);
   const Control_matrix A = read_attribute_columns(im, attributes);
   const std::size_t n = im.number_of_vertices();
 
   Stopwatch setup;
   // the solver works in a private, cache-friendly numbering (row i of X is vertex old_of_new_vertex[i])
-  const Locality_ordering ordering = make_locality_ordering(im.topology());
-  const Triangle_topology& topology = *ordering.topology;
+  // (the ghost layer of a mesh with borders is rebuilt in that numbering)
+  const Locality_ordering ordering = make_locality_ordering(im.ghost_layer());
+  const Ghost_layer& layer = ordering.layer;
   Control_matrix X(Eigen::Index(n), 3 + A.cols());
-  std::vector<bool> constrained(n);
+  std::vector<bool> constrained(n), border(n, false);
   for(std::size_t i = 0; i < n; ++i)
   {
     const Eigen::Index old = ordering.old_of_new_vertex[i];
@@ -160,40 +168,58 @@ Fairing_report fair(TriangleMesh& tm, VertexPointMap vpm, AttributeMap attribute
     if(A.cols() > 0) X.row(Eigen::Index(i)).tail(A.cols()) = A.row(old);
     constrained[i] = bool(get(vcm, im.vertex(std::size_t(old))));
   }
+  for(int v : layer.boundary_vertices) border[std::size_t(v)] = true;
+  // what the borders hold: the boundary vertices, and the influence set of the limit boundary curve
+  auto hold = [&](const std::vector<bool>& held) {
+    std::size_t count = 0;
+    for(std::size_t i = 0; i < n; ++i)
+    {
+      count += held[i] ? 1 : 0;
+      constrained[i] = constrained[i] || held[i];
+    }
+    return count;
+  };
 
   Fairing_report report;
   double setup_seconds = 0;
+  std::size_t boundary_held = 0;
   if(element == Finite_element::LOOP)
   {
-    Patch_cache cache(topology);
-    cache.prepare_quadrature(spec);
+    Ghosted_patch_cache cache(layer, spec);
+    boundary_held = hold(boundary_constrained_vertices(layer, cache, boundary == Boundary_handling::HOLD_BOUNDARY_CURVE));
     setup_seconds = setup.seconds();
-    report = run_stepper(cache, ordering, X, constrained, tensor, s, callback, setup_seconds);
+    report = run_stepper(cache, ordering, X, constrained, border, tensor, s, callback, setup_seconds);
     if(report.succeeded() && output == Output_positions::LIMIT_SURFACE)
     {
-      Control_matrix limit(X.rows(), X.cols());
-      for(std::size_t i = 0; i < n; ++i) vertex_limit_value(topology, X, int(i), limit.row(Eigen::Index(i)).data());
-      X.swap(limit);
+      const Control_matrix extended = layer.extend(X);
+      for(std::size_t i = 0; i < n; ++i)
+        vertex_limit_value(*layer.topology, extended, int(i), X.row(Eigen::Index(i)).data());
     }
   }
   else
   {
-    Linear_element_cache cache(topology);
+    Linear_element_cache cache(*layer.topology, layer.real_faces);
+    boundary_held = hold(border);
     setup_seconds = setup.seconds();
-    report = run_stepper(cache, ordering, X, constrained, tensor, s, callback, setup_seconds);
+    report = run_stepper(cache, ordering, X, constrained, border, tensor, s, callback, setup_seconds);
   }
   report.faces = im.number_of_faces();
+  report.boundary_vertices = layer.boundary_vertices.size();
+  report.boundary_held_vertices = boundary_held;
+  report.boundary_loops = layer.boundary_loops;
   report.setup_seconds = setup_seconds;
-  report.mean_edge_length = mean_edge_length(im.topology(), P);
+  report.mean_edge_length = mean_edge_length(im.ghost_layer(), P);
 
   if(report.succeeded())
   {
     Control_matrix result(X.rows(), X.cols());   // back to the order of vertices(tm)
     for(std::size_t i = 0; i < n; ++i) result.row(ordering.old_of_new_vertex[i]) = X.row(Eigen::Index(i));
+    // neither the user's constrained vertices nor the boundary vertices are written
     std::vector<bool> keep(n);
+    for(std::size_t i = 0; i < n; ++i) keep[std::size_t(ordering.old_of_new_vertex[i])] = border[i];
     for(std::size_t i = 0; i < n; ++i)
     {
-      keep[i] = bool(get(vcm, im.vertex(i)));
+      keep[i] = keep[i] || bool(get(vcm, im.vertex(i)));
       const Eigen::Index r = Eigen::Index(i);
       if(!keep[i]) put(vpm, im.vertex(i), Point(result(r, 0), result(r, 1), result(r, 2)));
     }

@@ -95,6 +95,10 @@ public:
     original_face_ = face_of;
   }
 
+  /// Vertices left out of the discrete curvature integral of an element without second derivatives:
+  /// on a border, (L X)_i is the conormal term of the boundary, not a mean curvature.
+  void exclude_from_curvature(const std::vector<bool>* border) { border_ = border; }
+
   /// The symmetric pattern (all values zero) that M and L fill: value arrays index its non-zeros.
   const Eigen::SparseMatrix<double>& pattern() const { return pattern_; }
   std::size_t number_of_nonzeros() const { return std::size_t(pattern_.nonZeros()); }
@@ -316,7 +320,7 @@ private:
       }
     double s = 0;
     for(Eigen::Index i = 0; i < n; ++i)
-      if(area[i] > 0) s += LX.row(i).squaredNorm() / (4 * area[i]);
+      if(area[i] > 0 && !(border_ && (*border_)[std::size_t(i)])) s += LX.row(i).squaredNorm() / (4 * area[i]);
     return s;
   }
 
@@ -326,6 +330,7 @@ private:
   std::vector<std::vector<double>> partial_;
   const std::vector<int>* original_vertex_ = nullptr;
   const std::vector<std::size_t>* original_face_ = nullptr;
+  const std::vector<bool>* border_ = nullptr;
 };
 
 } // namespace internal

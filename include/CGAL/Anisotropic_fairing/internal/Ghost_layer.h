@@ -20,6 +20,8 @@
 #include <CGAL/Anisotropic_fairing/Input_error.h>
 #include <CGAL/Anisotropic_fairing/internal/Triangle_topology.h>
 
+#include <Eigen/Core>
+
 #include <cstdint>
 #include <memory>
 #include <string>
@@ -39,9 +41,24 @@ struct Ghost_layer
   std::size_t real_vertices = 0, real_faces = 0;
   std::vector<Affine_row> ghosts;            // ghost k is extended vertex real_vertices + k
   std::vector<int> boundary_vertices;        // real vertices on a border, increasing
+  std::size_t boundary_loops = 0;
   std::unique_ptr<Triangle_topology> topology;  // real faces first (same indices), then ghost faces
 
   std::size_t number_of_extended_vertices() const { return real_vertices + ghosts.size(); }
+  /// X_ext = E X: the rows of the real vertices (any number of columns), then those of the ghosts.
+  template <typename Matrix>
+  Matrix extend(const Matrix& X) const
+  {
+    Matrix E(Eigen::Index(number_of_extended_vertices()), X.cols());
+    E.topRows(X.rows()) = X;
+    for(std::size_t k = 0; k < ghosts.size(); ++k)
+    {
+      auto row = E.row(Eigen::Index(real_vertices + k));
+      row.setZero();
+      for(const auto& w : ghosts[k]) row += w.second * X.row(w.first);
+    }
+    return E;
+  }
   bool has_boundary() const { return !ghosts.empty(); }
 };
 
@@ -56,8 +73,23 @@ inline Ghost_layer make_ghost_layer(std::size_t n, const std::vector<Triangle_to
   auto key = [](int a, int b) { return (std::uint64_t(std::uint32_t(a)) << 32) | std::uint32_t(b); };
   std::unordered_map<std::uint64_t, int> directed;   // directed edge -> face
   directed.reserve(faces.size() * 6);
+  // the fan walks below need what the topology checks later; refuse it here, with the same errors
   for(std::size_t f = 0; f < faces.size(); ++f)
-    for(int k = 0; k < 3; ++k) directed.emplace(key(faces[f][k], faces[f][(k + 1) % 3]), int(f));
+  {
+    const Triangle_topology::Face& t = faces[f];
+    for(int k = 0; k < 3; ++k)
+      if(t[k] < 0 || std::size_t(t[k]) >= n)
+        throw Input_error(Input_error::INVALID_PARAMETER, f, "face " + std::to_string(f) + " has a vertex index out of range");
+    if(t[0] == t[1] || t[1] == t[2] || t[2] == t[0])
+      throw Input_error(Input_error::DEGENERATE_FACE, f,
+                        "face " + std::to_string(f) + " uses vertex " +
+                        std::to_string(t[0] == t[1] || t[0] == t[2] ? t[0] : t[1]) + " twice");
+    for(int k = 0; k < 3; ++k)
+      if(!directed.emplace(key(t[k], t[(k + 1) % 3]), int(f)).second)
+        throw Input_error(Input_error::NON_MANIFOLD_EDGE, std::size_t(t[k]),
+                          "the edge between vertices " + std::to_string(t[k]) + " and " + std::to_string(t[(k + 1) % 3]) +
+                          " is used by more than two faces, twice in the same direction, or twice");
+  }
   auto is_border = [&](int p, int q) { return directed.count(key(q, p)) == 0; };   // p->q has no twin
   auto apex = [&](int f, int p) {   // the vertex of face f after p, and the one after that
     const Triangle_topology::Face& t = faces[std::size_t(f)];
@@ -109,6 +141,17 @@ inline Ghost_layer make_ghost_layer(std::size_t n, const std::vector<Triangle_to
   for(std::size_t v = 0; v < n; ++v)
     if(on_boundary[v]) gl.boundary_vertices.push_back(int(v));
   gl.topology.reset(new Triangle_topology(gl.number_of_extended_vertices(), std::move(ext), n));
+  // boundary loops: the topology has checked that each boundary vertex has one fan, hence one
+  // outgoing border edge p -> q (whose edge ghost triangle is (q, p, g))
+  std::vector<int> border_next(n, -1);
+  for(const auto& e : edge_ghost) border_next[std::size_t(e.first >> 32)] = int(e.first & 0xffffffffu);
+  std::vector<char> seen(n, 0);
+  for(int v : gl.boundary_vertices)
+  {
+    if(seen[std::size_t(v)]) continue;
+    ++gl.boundary_loops;
+    for(int w = v; w >= 0 && !seen[std::size_t(w)]; w = border_next[std::size_t(w)]) seen[std::size_t(w)] = 1;
+  }
   return gl;
 }
 

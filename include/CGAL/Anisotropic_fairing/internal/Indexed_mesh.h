@@ -2,8 +2,8 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 //
 // The bridge from a user's FaceGraph to the index world: vertices and faces numbered in iteration
-// order, the validated Triangle_topology, and property maps read into dense matrices (with the
-// checks that keep bad input from reaching the numerics).
+// order, the validated Triangle_topology (closed, or closed by a ghost layer), and property maps
+// read into dense matrices (with the checks that keep bad input from reaching the numerics).
 
 #ifndef CGAL_ANISOTROPIC_FAIRING_INTERNAL_INDEXED_MESH_H
 #define CGAL_ANISOTROPIC_FAIRING_INTERNAL_INDEXED_MESH_H
@@ -11,6 +11,7 @@
 #include <CGAL/Anisotropic_fairing/Input_error.h>
 #include <CGAL/Anisotropic_fairing/Vector_attribute_traits.h>
 #include <CGAL/Anisotropic_fairing/internal/Control_matrix.h>
+#include <CGAL/Anisotropic_fairing/internal/Ghost_layer.h>
 #include <CGAL/Anisotropic_fairing/internal/Triangle_topology.h>
 
 #include <CGAL/boost/graph/iterator.h>
@@ -29,6 +30,9 @@ namespace CGAL {
 namespace Anisotropic_fairing {
 namespace internal {
 
+/// What a mesh with borders gets: an error (operations defined on closed meshes only), or a ghost layer.
+enum class Borders { REFUSED, GHOSTED };
+
 template <typename TriangleMesh>
 class Indexed_mesh
 {
@@ -38,8 +42,10 @@ public:
   typedef typename Graph_traits::face_descriptor face_descriptor;
   typedef typename Graph_traits::halfedge_descriptor halfedge_descriptor;
 
-  /// Numbers the elements and validates the topology (throws Input_error).
-  explicit Indexed_mesh(const TriangleMesh& tm)
+  /// Numbers the elements and validates the topology (throws Input_error, naming elements by
+  /// their position in vertices(tm) / faces(tm)). With Borders::GHOSTED, topology() is the
+  /// extended topology of the ghost layer: real vertices and faces first, with their indices.
+  explicit Indexed_mesh(const TriangleMesh& tm, Borders borders = Borders::REFUSED)
   {
     for(vertex_descriptor v : vertices(tm))
     {
@@ -65,10 +71,22 @@ public:
                           " vertices; only triangle meshes are supported");
       tris.push_back(t);
     }
-    topology_.reset(new Triangle_topology(vertices_.size(), std::move(tris)));
+    if(borders == Borders::GHOSTED)
+    {
+      if(tris.empty()) throw Input_error(Input_error::EMPTY_MESH, Input_error::no_element, "the mesh has no face");
+      ghost_layer_ = make_ghost_layer(vertices_.size(), tris);
+    }
+    else
+    {
+      ghost_layer_.real_vertices = vertices_.size();
+      ghost_layer_.real_faces = tris.size();
+      ghost_layer_.topology.reset(new Triangle_topology(vertices_.size(), std::move(tris)));
+    }
   }
 
-  const Triangle_topology& topology() const { return *topology_; }
+  const Triangle_topology& topology() const { return *ghost_layer_.topology; }
+  /// The ghost layer (without ghosts for a closed mesh, or when built with Borders::REFUSED).
+  const Ghost_layer& ghost_layer() const { return ghost_layer_; }
   std::size_t number_of_vertices() const { return vertices_.size(); }
   std::size_t number_of_faces() const { return faces_.size(); }
   vertex_descriptor vertex(std::size_t i) const { return vertices_[i]; }
@@ -129,7 +147,7 @@ private:
   std::vector<face_descriptor> faces_;
   std::unordered_map<vertex_descriptor, std::size_t> vertex_index_;
   std::unordered_map<face_descriptor, std::size_t> face_index_;
-  std::unique_ptr<Triangle_topology> topology_;
+  Ghost_layer ghost_layer_;
 };
 
 } // namespace internal

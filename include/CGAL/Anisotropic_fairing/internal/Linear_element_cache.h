@@ -14,6 +14,8 @@
 
 #include <Eigen/Core>
 
+#include <algorithm>
+#include <limits>
 #include <vector>
 
 namespace CGAL {
@@ -27,9 +29,11 @@ public:
   static constexpr bool has_second_derivatives = false;
   typedef Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, Eigen::RowMajor> Row_matrix;
 
-  explicit Linear_element_cache(const Triangle_topology& topo)
+  /// The elements of the first `faces` faces of `topo` (all by default; the real faces of a ghost layer).
+  explicit Linear_element_cache(const Triangle_topology& topo,
+                                std::size_t faces = (std::numeric_limits<std::size_t>::max)())
   {
-    const std::size_t nf = topo.number_of_faces();
+    const std::size_t nf = (std::min)(faces, topo.number_of_faces());
     ring_ids_.resize(3 * nf);
     for(std::size_t f = 0; f < nf; ++f)
       for(int k = 0; k < 3; ++k) ring_ids_[3 * f + std::size_t(k)] = topo.face(f)[k];

@@ -6,11 +6,13 @@
 // scatters into, and the solvers multiply with, a matrix whose pattern is the 3-ring; in the user's
 // order (e.g. after subdivision, or of a scan) neighbours can be far apart and every face touches
 // cold cache lines. The user's mesh and the order results are written in are unchanged.
+// Only real vertices and faces are renumbered; the ghost layer of the renumbered mesh is rebuilt
+// (its ghosts follow the faces, so they are local too).
 
 #ifndef CGAL_ANISOTROPIC_FAIRING_INTERNAL_LOCALITY_ORDERING_H
 #define CGAL_ANISOTROPIC_FAIRING_INTERNAL_LOCALITY_ORDERING_H
 
-#include <CGAL/Anisotropic_fairing/internal/Triangle_topology.h>
+#include <CGAL/Anisotropic_fairing/internal/Ghost_layer.h>
 
 #include <algorithm>
 #include <memory>
@@ -25,12 +27,14 @@ struct Locality_ordering
 {
   std::vector<int> old_of_new_vertex, new_of_old_vertex;
   std::vector<std::size_t> old_of_new_face;
-  std::unique_ptr<Triangle_topology> topology;   // the same mesh in the new numbering
+  Ghost_layer layer;   // the same mesh, and its ghost layer, in the new numbering
 };
 
-inline Locality_ordering make_locality_ordering(const Triangle_topology& topo)
+/// Renumbers the real vertices and faces of `gl` (whose real fans are closed).
+inline Locality_ordering make_locality_ordering(const Ghost_layer& gl)
 {
-  const int n = int(topo.number_of_vertices());
+  const Triangle_topology& topo = *gl.topology;
+  const int n = int(gl.real_vertices);
   Locality_ordering o;
   o.new_of_old_vertex.assign(std::size_t(n), -1);
   o.old_of_new_vertex.reserve(std::size_t(n));
@@ -51,7 +55,7 @@ inline Locality_ordering make_locality_ordering(const Triangle_topology& topo)
         int h = h0;
         do {
           const int w = topo.target(h);
-          if(level_mark[std::size_t(w)] != seed) { level_mark[std::size_t(w)] = seed; queue.push_back(w); }
+          if(w < n && level_mark[std::size_t(w)] != seed) { level_mark[std::size_t(w)] = seed; queue.push_back(w); }
           h = topo.ccw(h);
         } while(h != h0);
       }
@@ -69,7 +73,7 @@ inline Locality_ordering make_locality_ordering(const Triangle_topology& topo)
       int h = h0;
       do {
         const int w = topo.target(h);
-        if(o.new_of_old_vertex[std::size_t(w)] < 0) ring.push_back(w);
+        if(w < n && o.new_of_old_vertex[std::size_t(w)] < 0) ring.push_back(w);
         h = topo.ccw(h);
       } while(h != h0);
       std::stable_sort(ring.begin(), ring.end(), [&](int a, int b) { return topo.valence(a) < topo.valence(b); });
@@ -81,7 +85,7 @@ inline Locality_ordering make_locality_ordering(const Triangle_topology& topo)
     }
   }
   // faces by their smallest new vertex index; each face keeps its vertex cycle (orientation)
-  const std::size_t nf = topo.number_of_faces();
+  const std::size_t nf = gl.real_faces;
   std::vector<std::pair<int, std::size_t>> key(nf);
   for(std::size_t f = 0; f < nf; ++f)
   {
@@ -99,7 +103,7 @@ inline Locality_ordering make_locality_ordering(const Triangle_topology& topo)
     faces[k] = { { o.new_of_old_vertex[std::size_t(t[0])], o.new_of_old_vertex[std::size_t(t[1])],
                    o.new_of_old_vertex[std::size_t(t[2])] } };
   }
-  o.topology.reset(new Triangle_topology(std::size_t(n), std::move(faces)));
+  o.layer = make_ghost_layer(std::size_t(n), faces);
   return o;
 }
 

@@ -176,6 +176,7 @@ public:
 
     const Eigen::Index n = X.rows(), k = X.cols(), nfree = Eigen::Index(free_.size());
     Dense_block R(n, k), B(nfree, k), dX = Dense_block::Zero(nfree, k);
+    if(nfree == 0) report.stop_reason = Stop_reason::NO_FREE_VERTEX;
     for(std::size_t step = 1; step <= s.maximum_steps && nfree > 0; ++step)
     {
       Fairing_step st;
