@@ -2,7 +2,7 @@
 //
 //   anisotropic_fairing INPUT OUTPUT [options]        (anisotropic_fairing --help for the options)
 //
-// Reads a closed triangle mesh (OFF, OBJ or PLY), fairs it with CGAL::Anisotropic_fairing::
+// Reads a triangle mesh (OFF, OBJ or PLY; closed or with borders), fairs it with CGAL::Anisotropic_fairing::
 // anisotropic_fairing() and writes the result (OFF, OBJ or PLY, chosen by OUTPUT's extension) with
 // full double precision, the vertices in their input order and every vertex property of the input
 // that the output format can hold. Optionally writes a JSON report with the statistics of every step.
@@ -67,7 +67,7 @@ namespace {
 const char* const usage_text =
 "usage: anisotropic_fairing INPUT OUTPUT [options]\n"
 "\n"
-"Fairs the closed triangle mesh INPUT by geometric diffusion with Loop-subdivision finite elements\n"
+"Fairs the triangle mesh INPUT by geometric diffusion with Loop-subdivision finite elements\n"
 "(Bajaj & Xu 2003; isotropic tensor: mean-curvature flow) and writes the result to OUTPUT.\n"
 "INPUT and OUTPUT are OFF, OBJ or PLY files (by extension; the formats may differ). The output keeps\n"
 "the vertex order, full double precision and every vertex property of the input that its format can\n"
@@ -75,6 +75,8 @@ const char* const usage_text =
 "If the input has vertex normals, the normals of the faired surface are written: for the Loop element\n"
 "with --output limit the exact normals of the faired limit surface (and the limit points), otherwise\n"
 "the vertex normals of the output mesh (CGAL::Polygon_mesh_processing::compute_vertex_normals).\n"
+"Borders (holes, scan boundaries) are held fixed, and boundary vertices are written unchanged;\n"
+"vertices on no face are left as they are.\n"
 "\n"
 "options:\n"
 "  --time-step T             time step tau in model units (length^2), as in the paper\n"
@@ -90,6 +92,9 @@ const char* const usage_text =
 "                            control points (the mesh whose Loop limit surface is the faired surface)\n"
 "  --tensor isotropic|anisotropic   the diffusion tensor; only isotropic (default) is available\n"
 "  --solver auto|cg|cholesky        linear solver: automatic (default), conjugate gradients, sparse LDL^T\n"
+"  --boundary curve|vertices        on a mesh with borders, hold the limit boundary curve (default: the\n"
+"                            boundary vertices and the interior vertices that shape the curve) or only\n"
+"                            the boundary vertices (the paper's choice; the border may slide)\n"
 "  --quadrature-degree 4|6|8        Gauss rule per face for the Loop element (default 8)\n"
 "  --report FILE.json        write per-step statistics (also, with status and message, on failure)\n"
 "  --quiet                   no progress line per step on stderr\n"
@@ -98,13 +103,15 @@ const char* const usage_text =
 "\n"
 "JSON report: status, message, input, output, vertices, faces, element, output_positions, tensor,\n"
 "solver, requested_solver, stop, max_steps, quadrature_degree, time_step, relative_time_step, scale,\n"
-"fidelity_weight, relative_fidelity_weight, mean_edge_length, normals, stop_reason, initial {area,\n"
+"fidelity_weight, relative_fidelity_weight, mean_edge_length, normals, boundary_handling,\n"
+"boundary_vertices, boundary_held_vertices, boundary_loops, isolated_vertices, constrained_vertices,\n"
+"stop_reason, initial {area,\n"
 "energy, H_integral}, steps [{step, time, solver_iterations, residual, area, energy, H_integral,\n"
 "max_displacement, step_displacement, assemble_seconds, solve_seconds, direct_solve}], setup_seconds,\n"
 "total_seconds (the fairing call), wall_seconds (the whole program). Unknown values are null.\n"
 "\n"
-"exit status: 0 success; 1 failure (unreadable input, a mesh that is not a closed 2-manifold triangle\n"
-"mesh, fairing failure, unwritable output or report); 2 usage error. On failure one line starting with\n"
+"exit status: 0 success; 1 failure (unreadable input, a mesh that is not a 2-manifold triangle mesh,\n"
+"fairing failure, unwritable output or report); 2 usage error. On failure one line starting with\n"
 "\"anisotropic_fairing: \" is printed on stderr and OUTPUT is not created (an existing one is left as is).\n";
 
 const std::chrono::steady_clock::time_point program_start = std::chrono::steady_clock::now();
@@ -150,6 +157,7 @@ struct Options
   AF::Finite_element element = AF::Finite_element::LOOP;
   AF::Output_positions output_positions = AF::Output_positions::LIMIT_SURFACE;
   AF::Linear_solver solver = AF::Linear_solver::AUTOMATIC;
+  AF::Boundary_handling boundary = AF::Boundary_handling::HOLD_BOUNDARY_CURVE;
   int quadrature_degree = 8;
   bool quiet = false;
   bool help = false;
@@ -287,6 +295,13 @@ void parse_arguments(int argc, char** argv, Options& o)
         else if(v == "cg") o.solver = AF::Linear_solver::CONJUGATE_GRADIENT;
         else if(v == "cholesky") o.solver = AF::Linear_solver::CHOLESKY;
         else usage_error("--solver expects auto, cg or cholesky, not '" + v + "'");
+      }
+      else if(arg == "--boundary")
+      {
+        const std::string v = next();
+        if(v == "curve") o.boundary = AF::Boundary_handling::HOLD_BOUNDARY_CURVE;
+        else if(v == "vertices") o.boundary = AF::Boundary_handling::HOLD_BOUNDARY_VERTICES;
+        else usage_error("--boundary expects curve or vertices, not '" + v + "'");
       }
       else if(arg == "--quadrature-degree")
       {
@@ -668,6 +683,12 @@ std::string report_json(const Options& o, const Run_record& r, double wall_secon
                                      : (o.has_relative_fidelity ? json_number(o.relative_fidelity) : "null"));
   kv("mean_edge_length", ran ? json_number(f.mean_edge_length) : "null");
   kv("normals", json_string(r.normals));
+  kv("boundary_handling", json_string(o.boundary == AF::Boundary_handling::HOLD_BOUNDARY_CURVE ? "curve" : "vertices"));
+  kv("boundary_vertices", ran ? json_count(f.boundary_vertices) : "null");
+  kv("boundary_held_vertices", ran ? json_count(f.boundary_held_vertices) : "null");
+  kv("boundary_loops", ran ? json_count(f.boundary_loops) : "null");
+  kv("isolated_vertices", ran ? json_count(f.isolated_vertices) : "null");
+  kv("constrained_vertices", ran ? json_count(f.constrained_vertices) : "null");
   kv("stop_reason", ran ? json_string(AF::to_string(f.stop_reason)) : "null");
   if(ran)
     kv("initial", "{\"area\": " + json_number(f.initial.area) + ", \"energy\": " + json_number(f.initial.energy) +
@@ -767,6 +788,7 @@ int run(const Options& o, Run_record& r)
                       .finite_element(o.element)
                       .output_positions(library_output)
                       .linear_solver(o.solver)
+                      .boundary_handling(o.boundary)
                       .quadrature_degree(o.quadrature_degree)
                       .callback(progress);
   try
@@ -792,7 +814,12 @@ int run(const Options& o, Run_record& r)
       // the mesh holds the faired control points; the quadrature is not used here (degree 4 is the cheapest set-up)
       AF::Loop_limit_surface<Mesh> limit(mesh, AF::parameters::quadrature_degree(4));
       limit.limit_normals(normals);
+      // as in the library's limit output, boundary and isolated vertices keep their (held) positions
+      std::vector<std::pair<Vertex_index, Point>> held;
+      for(Vertex_index v : mesh.vertices())
+        if(mesh.is_border(v) || mesh.is_isolated(v)) held.emplace_back(v, mesh.point(v));
       limit.limit_positions(mesh.points());
+      for(const auto& h : held) mesh.point(h.first) = h.second;
       r.normals = "limit_surface";
     }
     else

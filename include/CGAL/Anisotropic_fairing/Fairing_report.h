@@ -110,6 +110,7 @@ struct Fairing_report
   std::size_t boundary_vertices = 0;    ///< vertices on a border of the mesh
   std::size_t boundary_held_vertices = 0; ///< vertices held because of a border: the boundary vertices and, with `Boundary_handling::HOLD_BOUNDARY_CURVE`, the interior vertices that shape the limit boundary curve
   std::size_t boundary_loops = 0;       ///< number of boundary loops (holes and outer borders)
+  std::size_t isolated_vertices = 0;    ///< vertices on no face (scanner leftovers): held and left as they are
   double setup_seconds = 0;       ///< set-up: private numbering, element (patch categories, stencils), sparsity patterns
   double total_seconds = 0;       ///< the whole call
 

@@ -149,7 +149,7 @@ Fairing_report fair(TriangleMesh& tm, VertexPointMap vpm, AttributeMap attribute
                                    [](const Fairing_step&) { return true; });
 
   // input, read and checked before anything is touched
-  const Indexed_mesh<TriangleMesh> im(tm, Borders::GHOSTED);
+  const Indexed_mesh<TriangleMesh> im(tm, Borders::GHOSTED, true);   // isolated vertices: held, never written
   Control_matrix P = im.read_points(vpm);
   const Control_matrix A = read_attribute_columns(im, attributes);
   const std::size_t n = im.number_of_vertices();
@@ -169,6 +169,8 @@ Fairing_report fair(TriangleMesh& tm, VertexPointMap vpm, AttributeMap attribute
     constrained[i] = bool(get(vcm, im.vertex(std::size_t(old))));
   }
   for(int v : layer.boundary_vertices) border[std::size_t(v)] = true;
+  std::vector<bool> isolated(n, false);   // on no surface: nothing to fair
+  for(int v : layer.isolated_vertices) isolated[std::size_t(v)] = constrained[std::size_t(v)] = true;
   // what the borders hold: the boundary vertices, and the influence set of the limit boundary curve
   auto hold = [&](const std::vector<bool>& held) {
     std::size_t count = 0;
@@ -193,7 +195,7 @@ Fairing_report fair(TriangleMesh& tm, VertexPointMap vpm, AttributeMap attribute
     {
       const Control_matrix extended = layer.extend(X);
       for(std::size_t i = 0; i < n; ++i)
-        vertex_limit_value(*layer.topology, extended, int(i), X.row(Eigen::Index(i)).data());
+        if(!isolated[i]) vertex_limit_value(*layer.topology, extended, int(i), X.row(Eigen::Index(i)).data());
     }
   }
   else
@@ -207,6 +209,7 @@ Fairing_report fair(TriangleMesh& tm, VertexPointMap vpm, AttributeMap attribute
   report.boundary_vertices = layer.boundary_vertices.size();
   report.boundary_held_vertices = boundary_held;
   report.boundary_loops = layer.boundary_loops;
+  report.isolated_vertices = layer.isolated_vertices.size();
   report.setup_seconds = setup_seconds;
   report.mean_edge_length = mean_edge_length(im.ghost_layer(), P);
 
@@ -214,9 +217,9 @@ Fairing_report fair(TriangleMesh& tm, VertexPointMap vpm, AttributeMap attribute
   {
     Control_matrix result(X.rows(), X.cols());   // back to the order of vertices(tm)
     for(std::size_t i = 0; i < n; ++i) result.row(ordering.old_of_new_vertex[i]) = X.row(Eigen::Index(i));
-    // neither the user's constrained vertices nor the boundary vertices are written
+    // neither the user's constrained vertices nor boundary or isolated vertices are written
     std::vector<bool> keep(n);
-    for(std::size_t i = 0; i < n; ++i) keep[std::size_t(ordering.old_of_new_vertex[i])] = border[i];
+    for(std::size_t i = 0; i < n; ++i) keep[std::size_t(ordering.old_of_new_vertex[i])] = border[i] || isolated[i];
     for(std::size_t i = 0; i < n; ++i)
     {
       keep[i] = keep[i] || bool(get(vcm, im.vertex(i)));

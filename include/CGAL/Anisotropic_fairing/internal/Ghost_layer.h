@@ -42,6 +42,7 @@ struct Ghost_layer
   std::vector<Affine_row> ghosts;            // ghost k is extended vertex real_vertices + k
   std::vector<int> boundary_vertices;        // real vertices on a border, increasing
   std::size_t boundary_loops = 0;
+  std::vector<int> isolated_vertices;        // real vertices without a face (when allowed), increasing
   std::unique_ptr<Triangle_topology> topology;  // real faces first (same indices), then ghost faces
 
   std::size_t number_of_extended_vertices() const { return real_vertices + ghosts.size(); }
@@ -64,8 +65,9 @@ struct Ghost_layer
 
 /// Builds the ghost layer of the triangle mesh (n vertices, faces). Throws Input_error for what the
 /// closed topology refuses too (non-manifold edges and vertices, including bow-tie boundary
-/// vertices, degenerate faces, isolated vertices, interior valence < 3).
-inline Ghost_layer make_ghost_layer(std::size_t n, const std::vector<Triangle_topology::Face>& faces)
+/// vertices, degenerate faces, interior valence < 3, and isolated vertices unless `allow_isolated`).
+inline Ghost_layer make_ghost_layer(std::size_t n, const std::vector<Triangle_topology::Face>& faces,
+                                    bool allow_isolated = false)
 {
   Ghost_layer gl;
   gl.real_vertices = n;
@@ -140,7 +142,9 @@ inline Ghost_layer make_ghost_layer(std::size_t n, const std::vector<Triangle_to
     }
   for(std::size_t v = 0; v < n; ++v)
     if(on_boundary[v]) gl.boundary_vertices.push_back(int(v));
-  gl.topology.reset(new Triangle_topology(gl.number_of_extended_vertices(), std::move(ext), n));
+  gl.topology.reset(new Triangle_topology(gl.number_of_extended_vertices(), std::move(ext), n, allow_isolated));
+  for(std::size_t v = 0; v < n; ++v)
+    if(gl.topology->outgoing(int(v)) < 0) gl.isolated_vertices.push_back(int(v));
   // boundary loops: the topology has checked that each boundary vertex has one fan, hence one
   // outgoing border edge p -> q (whose edge ghost triangle is (q, p, g))
   std::vector<int> border_next(n, -1);

@@ -21,6 +21,7 @@
 #include <boost/property_map/property_map.hpp>
 
 #include <cmath>
+#include <limits>
 #include <memory>
 #include <string>
 #include <unordered_map>
@@ -45,7 +46,8 @@ public:
   /// Numbers the elements and validates the topology (throws Input_error, naming elements by
   /// their position in vertices(tm) / faces(tm)). With Borders::GHOSTED, topology() is the
   /// extended topology of the ghost layer: real vertices and faces first, with their indices.
-  explicit Indexed_mesh(const TriangleMesh& tm, Borders borders = Borders::REFUSED)
+  /// With `allow_isolated`, vertices without a face are accepted (listed in ghost_layer()) rather than refused.
+  explicit Indexed_mesh(const TriangleMesh& tm, Borders borders = Borders::REFUSED, bool allow_isolated = false)
   {
     for(vertex_descriptor v : vertices(tm))
     {
@@ -74,13 +76,16 @@ public:
     if(borders == Borders::GHOSTED)
     {
       if(tris.empty()) throw Input_error(Input_error::EMPTY_MESH, Input_error::no_element, "the mesh has no face");
-      ghost_layer_ = make_ghost_layer(vertices_.size(), tris);
+      ghost_layer_ = make_ghost_layer(vertices_.size(), tris, allow_isolated);
     }
     else
     {
       ghost_layer_.real_vertices = vertices_.size();
       ghost_layer_.real_faces = tris.size();
-      ghost_layer_.topology.reset(new Triangle_topology(vertices_.size(), std::move(tris)));
+      ghost_layer_.topology.reset(new Triangle_topology(vertices_.size(), std::move(tris),
+                                                        (std::numeric_limits<std::size_t>::max)(), allow_isolated));
+      for(std::size_t v = 0; v < vertices_.size(); ++v)
+        if(ghost_layer_.topology->outgoing(int(v)) < 0) ghost_layer_.isolated_vertices.push_back(int(v));
     }
   }
 

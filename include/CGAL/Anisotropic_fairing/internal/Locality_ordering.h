@@ -42,7 +42,7 @@ inline Locality_ordering make_locality_ordering(const Ghost_layer& gl)
   std::vector<int> level_mark(std::size_t(n), -1);
   for(int seed = 0; seed < n; ++seed)
   {
-    if(o.new_of_old_vertex[std::size_t(seed)] >= 0) continue;
+    if(o.new_of_old_vertex[std::size_t(seed)] >= 0 || topo.outgoing(seed) < 0) continue;   // isolated: last
     // a pseudo-peripheral start: the last vertex of a breadth-first sweep from the seed
     int start = seed;
     {
@@ -84,6 +84,11 @@ inline Locality_ordering make_locality_ordering(const Ghost_layer& gl)
       }
     }
   }
+  for(int v : gl.isolated_vertices)
+  {
+    o.new_of_old_vertex[std::size_t(v)] = int(o.old_of_new_vertex.size());
+    o.old_of_new_vertex.push_back(v);
+  }
   // faces by their smallest new vertex index; each face keeps its vertex cycle (orientation)
   const std::size_t nf = gl.real_faces;
   std::vector<std::pair<int, std::size_t>> key(nf);
@@ -103,7 +108,7 @@ inline Locality_ordering make_locality_ordering(const Ghost_layer& gl)
     faces[k] = { { o.new_of_old_vertex[std::size_t(t[0])], o.new_of_old_vertex[std::size_t(t[1])],
                    o.new_of_old_vertex[std::size_t(t[2])] } };
   }
-  o.layer = make_ghost_layer(std::size_t(n), faces);
+  o.layer = make_ghost_layer(std::size_t(n), faces, !gl.isolated_vertices.empty());
   return o;
 }
 

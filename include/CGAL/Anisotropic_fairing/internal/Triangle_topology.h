@@ -30,11 +30,13 @@ public:
 
   /// Builds and validates the topology. Throws `Input_error` naming the first offending element.
   /// Vertices with index >= `closed_vertices` (ghosts of a boundary layer) may lie on the border and
-  /// have any valence; all others must have one closed fan of valence >= 3.
+  /// have any valence; all others must have one closed fan of valence >= 3. With `allow_isolated`, a
+  /// vertex without any face is accepted (valence 0, `outgoing()` is -1) instead of refused.
   Triangle_topology(std::size_t number_of_vertices, std::vector<Face> faces,
-                    std::size_t closed_vertices = (std::numeric_limits<std::size_t>::max)())
+                    std::size_t closed_vertices = (std::numeric_limits<std::size_t>::max)(),
+                    bool allow_isolated = false)
     : faces_(std::move(faces)), n_vertices_(number_of_vertices),
-      closed_vertices_((std::min)(closed_vertices, number_of_vertices))
+      closed_vertices_((std::min)(closed_vertices, number_of_vertices)), allow_isolated_(allow_isolated)
   {
     if(faces_.empty())
       throw Input_error(Input_error::EMPTY_MESH, Input_error::no_element, "the mesh has no face");
@@ -114,6 +116,7 @@ private:
     valence_.assign(n_vertices_, 0);
     for(std::size_t v = 0; v < n_vertices_; ++v)
     {
+      if(out_[v] < 0 && allow_isolated_) continue;
       if(out_[v] < 0)
         throw Input_error(Input_error::ISOLATED_VERTEX, v,
                           "vertex " + std::to_string(v) + " has no incident face");
@@ -136,6 +139,7 @@ private:
   std::vector<Face> faces_;
   std::size_t n_vertices_;
   std::size_t closed_vertices_;
+  bool allow_isolated_;
   std::vector<int> opposite_;
   std::vector<int> out_;
   std::vector<int> valence_;
