@@ -47,7 +47,8 @@ of its area per step. `time_step` and `fidelity_weight` give them in model units
 \tparam NamedParameters a sequence of named parameters, started from `CGAL::Anisotropic_fairing::parameters`
         (which also accepts CGAL's own names)
 
-\param tm the mesh: closed, 2-manifold, triangles, every valence at least 3
+\param tm the mesh: 2-manifold, triangles, every interior valence at least 3; it may have borders and
+          holes (held fixed, see `boundary_handling`) and vertices on no face (left as they are)
 \param vpm its vertex positions, read and written
 \param attr_map per-vertex data faired with the geometry
 \param np optional named parameters among:
@@ -90,6 +91,12 @@ of its area per step. `time_step` and `fidelity_weight` give them in model units
     \cgalParamType{a `ReadablePropertyMap` with `vertex_descriptor` key and `bool` value}
     \cgalParamDefault{no vertex is constrained}
   \cgalParamNEnd
+  \cgalParamNBegin{boundary_handling}
+    \cgalParamDescription{what the borders hold: the limit boundary curve (the boundary vertices and the interior
+                          vertices that shape the curve), or the boundary vertices only (the paper's choice; the
+                          border may then slide). Boundary vertices are never written.}
+    \cgalParamType{`Boundary_handling`} \cgalParamDefault{`Boundary_handling::HOLD_BOUNDARY_CURVE`}
+  \cgalParamNEnd
   \cgalParamNBegin{finite_element}
     \cgalParamDescription{Loop limit-surface elements, or linear (P1) elements on the mesh itself}
     \cgalParamType{`Finite_element`} \cgalParamDefault{`Finite_element::LOOP`}
@@ -130,8 +137,8 @@ of its area per step. `time_step` and `fidelity_weight` give them in model units
 
 \returns a `Fairing_report`: the status, why the run stopped, and per step the solver's iterations and
          residual, the area, energy, \f$\int|H|^2\f$, displacement and timings.
-\throws Input_error, before anything is modified, if the mesh is not a closed 2-manifold triangle mesh
-        with valences \f$\geq 3\f$, if a coordinate or attribute is not finite, if attribute dimensions differ,
+\throws Input_error, before anything is modified, if the mesh is not a 2-manifold triangle mesh
+        with interior valences \f$\geq 3\f$ (e.g. a bow-tie vertex on a border, named in the message), if a coordinate or attribute is not finite, if attribute dimensions differ,
         or if a parameter is out of range.
 */
 template <typename TriangleMesh, typename VertexPointMap, typename VertexAttributeMap,
