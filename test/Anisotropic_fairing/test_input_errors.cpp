@@ -1,5 +1,6 @@
 // Bad input is refused with an Input_error naming the problem and the element, before anything is
-// computed or written; the user's mesh (including its property list) is left as it was.
+// computed or written; the user's mesh (including its property list) is left as it was. Borders are
+// not an error (Loop_limit_surface closes them with a ghost layer), but a bow-tie border vertex is.
 
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/Polyhedron_3.h>
@@ -11,9 +12,14 @@
 #include "test_support/check.h"
 #include "test_support/mesh_generators.h"
 
+#include <boost/property_map/property_map.hpp>
+
+#include <algorithm>
+#include <cmath>
 #include <functional>
 #include <iostream>
 #include <limits>
+#include <map>
 #include <string>
 #include <vector>
 
@@ -68,26 +74,61 @@ int main()
     AF_CHECK(CGAL::is_closed(m), "the cube is closed");
     expect_error([&] { Surface s(m); }, Err::NON_TRIANGLE_FACE, 2, "face 2 has 4 vertices", "quad face");
   }
-  // a border: the octahedron without one face
+  // a border is accepted: the octahedron without one face; its three border vertices (valence 4,
+  // m = 3 triangles left) get the cubic B-spline limit (2/3) v + (1/6)(r0 + r3)
   {
     Mesh m;
     AF_test::make_octahedron(m);
     CGAL::Euler::remove_face(halfedge(*faces(m).begin(), m), m);
     m.collect_garbage();
-    try { Surface s(m); AF_CHECK(false, "no exception for a border"); }
-    catch(const Err& e)
+    try
     {
-      std::cout << "border: " << e.what() << "\n";
-      AF_CHECK(e.kind() == Err::BORDER_EDGE, "border edge reported");
-      AF_CHECK(std::string(e.what()).find("border edge") != std::string::npos, "message says border edge");
+      Surface s(m);
+      AF_CHECK(s.number_of_vertices() == 6 && s.number_of_faces() == 7, "border: the mesh's own counts");
+      std::map<Mesh::Vertex_index, Point> limit;
+      s.limit_positions(boost::make_assoc_property_map(limit));
+      double err = 0;
+      int border_vertices = 0;
+      for(auto h : halfedges(m))
+        if(CGAL::is_border(h, m))   // h: r0 -> v along the hole, next(h): v -> r3
+        {
+          ++border_vertices;
+          const auto v = target(h, m);
+          const K::Vector_3 expected = (m.point(v) - CGAL::ORIGIN) * (2.0 / 3) +
+                                       ((m.point(source(h, m)) - CGAL::ORIGIN) + (m.point(target(next(h, m), m)) - CGAL::ORIGIN)) / 6;
+          err = std::max(err, std::sqrt(CGAL::squared_distance(limit[v], CGAL::ORIGIN + expected)));
+        }
+      const Eigen::SparseMatrix<double> M = s.mass_matrix();
+      std::cout << "border: accepted; area " << s.area() << ", mass matrix sum " << M.sum()
+                << ", border vertex limits off the cubic B-spline rule by " << err << "\n";
+      AF_CHECK(border_vertices == 3 && err <= 1e-15, "border: limit points of the border vertices by the B-spline rule");
+      AF_CHECK(M.rows() == 6 && std::abs(M.sum() - s.area()) <= 1e-14 * s.area(), "border: mass matrix 6 x 6, entries sum to area()");
     }
+    catch(const Err& e) { AF_CHECK(false, std::string("border refused: ") + e.what()); }
   }
-  // an isolated vertex
+  // a bow-tie: two triangles sharing only vertex 2 (Surface_mesh holds it when built face by face)
+  {
+    Mesh m;
+    std::vector<Mesh::Vertex_index> v;
+    const Point p[5] = { Point(0, 0, 0), Point(1, 0, 0), Point(1, 1, 0), Point(2, 1, 0), Point(1, 2, 0) };
+    for(const Point& q : p) v.push_back(m.add_vertex(q));
+    AF_CHECK(m.add_face(v[0], v[1], v[2]) != Mesh::null_face() && m.add_face(v[2], v[3], v[4]) != Mesh::null_face(),
+             "bow-tie built");
+    expect_error([&] { Surface s(m); }, Err::NON_MANIFOLD_VERTEX, 2, "vertex 2 is non-manifold", "bow-tie border vertex");
+  }
+  // an isolated vertex (a scanner leftover) is accepted: it is its own limit point
   {
     Mesh m;
     AF_test::make_tetrahedron(m);
-    m.add_vertex(Point(5, 5, 5));
-    expect_error([&] { Surface s(m); }, Err::ISOLATED_VERTEX, 4, "vertex 4 has no incident face", "isolated vertex");
+    const Mesh::Vertex_index lone = m.add_vertex(Point(5, 5, 5));
+    try
+    {
+      Surface s(m);
+      std::map<Mesh::Vertex_index, Point> lp;
+      s.limit_positions(boost::make_assoc_property_map(lp));
+      AF_CHECK(s.number_of_vertices() == 5 && lp[lone] == Point(5, 5, 5), "isolated vertex accepted, its own limit");
+    }
+    catch(const Err& e) { AF_CHECK(false, std::string("isolated vertex refused: ") + e.what()); }
   }
   // a NaN coordinate, and the mesh's property list unchanged by any of this
   {
@@ -131,13 +172,22 @@ int main()
     std::vector<Topology::Face> deg = { {0, 1, 1} };
     expect_error([&] { Topology topo(2, deg); }, Err::DEGENERATE_FACE, 0, "face 0 uses vertex 1 twice", "degenerate face");
   }
-  // Polyhedron_3: the same checks through the FaceGraph interface
+  // Polyhedron_3 through the FaceGraph interface: a tetrahedron plus a separate open triangle is
+  // accepted; the components do not interact and a lone triangle is its own flat limit surface
   {
-    CGAL::Polyhedron_3<K> p;
+    CGAL::Polyhedron_3<K> p, tetrahedron;
     AF_test::make_tetrahedron(p);
-    p.make_triangle(Point(0, 0, 5), Point(1, 0, 5), Point(0, 1, 5));      // a separate open triangle
-    try { AF::Loop_limit_surface<CGAL::Polyhedron_3<K>> s(p); AF_CHECK(false, "no exception (Polyhedron_3 border)"); }
-    catch(const Err& e) { std::cout << "Polyhedron_3 border: " << e.what() << "\n"; AF_CHECK(e.kind() == Err::BORDER_EDGE, "Polyhedron_3 border"); }
+    AF_test::make_tetrahedron(tetrahedron);
+    p.make_triangle(Point(0, 0, 5), Point(1, 0, 5), Point(0, 1, 5));      // area 1/2
+    try
+    {
+      AF::Loop_limit_surface<CGAL::Polyhedron_3<K>> s(p);
+      const double closed = AF::Loop_limit_surface<CGAL::Polyhedron_3<K>>(tetrahedron).area();
+      std::cout << "Polyhedron_3 border: accepted; area " << s.area() << " = tetrahedron " << closed << " + 0.5\n";
+      AF_CHECK(s.number_of_vertices() == 7 && s.number_of_faces() == 5, "Polyhedron_3 border: the mesh's own counts");
+      AF_CHECK(std::abs(s.area() - (closed + 0.5)) <= 1e-15 * s.area(), "Polyhedron_3 border: area = tetrahedron + triangle");
+    }
+    catch(const Err& e) { AF_CHECK(false, std::string("Polyhedron_3 border refused: ") + e.what()); }
   }
   // attribute dimension, parameters, evaluation and resampling arguments
   {

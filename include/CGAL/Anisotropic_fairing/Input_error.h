@@ -30,10 +30,10 @@ public:
     EMPTY_MESH,            ///< the mesh has no face
     NON_TRIANGLE_FACE,     ///< a face with other than three vertices; `element()` is the face index
     DEGENERATE_FACE,       ///< a face that uses one vertex twice; `element()` is the face index
-    BORDER_EDGE,           ///< the mesh has a boundary; `element()` is a vertex index on it
+    BORDER_EDGE,           ///< the mesh has a boundary where a closed mesh is needed; `element()` is a vertex index on it. Not raised by `anisotropic_fairing()` nor `Loop_limit_surface`, which accept borders
     NON_MANIFOLD_EDGE,     ///< an edge used by more than two faces, or two edges joining the same vertices; `element()` is a vertex index
     NON_MANIFOLD_VERTEX,   ///< a vertex whose faces form more than one fan; `element()` is the vertex index
-    ISOLATED_VERTEX,       ///< a vertex without incident face; `element()` is the vertex index
+    ISOLATED_VERTEX,       ///< a vertex without incident face where none is allowed; `element()` is the vertex index. Not raised by `anisotropic_fairing()` nor `Loop_limit_surface`, which accept such vertices and leave them as they are
     LOW_VALENCE_VERTEX,    ///< a vertex of valence below 3; `element()` is the vertex index
     NON_FINITE_COORDINATE, ///< a NaN or infinite coordinate; `element()` is the vertex index
     ATTRIBUTE_DIMENSION,   ///< an attribute whose dimension differs between vertices; `element()` is the vertex index

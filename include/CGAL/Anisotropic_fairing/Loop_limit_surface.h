@@ -34,9 +34,9 @@ namespace Anisotropic_fairing {
 /*!
 \ingroup PkgAnisotropicFairingLimitSurface
 
-The limit surface of Loop subdivision over a closed triangle mesh (the control mesh), and the Loop
-finite-element basis on it: \f$ x(\xi) = \sum_j \phi_j(\xi)\, x_j \f$ where the sum runs over the
-control vertices of the face's 1-ring.
+The limit surface of Loop subdivision over a triangle mesh (the control mesh), closed or with borders,
+and the Loop finite-element basis on it: \f$ x(\xi) = \sum_j \phi_j(\xi)\, x_j \f$ where the sum runs
+over the control vertices of the face's 1-ring.
 
 Each face is parameterised by barycentric coordinates \f$(\xi_0, \xi_1, \xi_2)\f$ with respect to
 its vertices in the order of `CGAL::vertices_around_face(halfedge(f, tm), tm)`; derivatives are
@@ -46,14 +46,41 @@ by local subdivision of the face's own 1-ring (any valences \f$\geq 3\f$, any nu
 extraordinary vertices per face; the mesh is never modified or globally subdivided). Evaluation
 weights are computed once per topological category of face and shared.
 
+<b>Borders.</b> A mesh with borders is closed by a private layer of ghost vertices and triangles
+beyond each border (the ghost layer of Bajaj and Xu 2003, section 4.3, with the fans of border
+vertices completed): every border edge \f$p \to q\f$ of a triangle \f$(p, q, r)\f$ gets the ghost
+\f$p + q - r\f$, and the fan of a border vertex \f$v\f$ with \f$m\f$ triangles is closed by
+\f$\max(1, 4 - m)\f$ triangles, whose further ghosts are point reflections \f$2v - r\f$ of neighbours
+\f$r\f$ through \f$v\f$. Ghosts are affine combinations of control vertices and move with them; they
+carry no unknowns, and ghost triangles are neither evaluated nor integrated. So every face of the
+mesh, including one whose three vertices lie on a border, is an ordinary patch; `area()`,
+`mass_matrix()` and `resample()` cover exactly the faces of the mesh, and the border of the limit
+surface is a limit boundary curve:
+- along a stretch of border vertices with \f$m = 3\f$ triangles each and regular (valence 6) interior
+  neighbours, it is the uniform cubic B-spline of the border polygon (any border vertex \f$v\f$ with
+  \f$m = 3\f$ and border neighbours \f$r_0\f$, \f$r_m\f$ has the limit point
+  \f$\frac{2}{3}v + \frac{1}{6}(r_0 + r_m)\f$);
+- a corner with a single triangle (\f$m = 1\f$) is interpolated;
+- elsewhere (\f$m = 2\f$, \f$m \geq 4\f$, extraordinary interior neighbours) it also depends on a few
+  interior vertices next to the border.
+
+The user's mesh is never modified, and sizes, indices and everything written refer to its own
+vertices and faces only. A single triangle is its own (flat) limit surface.
+
 The surface is a snapshot: positions are read at construction.
 
 \tparam TriangleMesh a model of `FaceListGraph` (e.g. `CGAL::Surface_mesh`, `CGAL::Polyhedron_3`)
 \tparam VertexPointMap a model of `ReadablePropertyMap` with `boost::graph_traits<TriangleMesh>::%vertex_descriptor`
         as key and a CGAL `Point_3` as value
 
-The mesh must be closed, 2-manifold, made of triangles, without isolated vertices and with every
-valence at least 3; otherwise the constructor throws `Input_error` naming the offending element.
+The mesh must be a 2-manifold made of triangles, closed or with borders, with every interior vertex
+of valence at least 3; otherwise the constructor throws `Input_error`
+naming the offending element. In particular a vertex whose faces form more than one fan (such as a
+border vertex shared by two triangles that have no edge in common, a "bow-tie") is refused with
+`Input_error::NON_MANIFOLD_VERTEX` and that vertex's index. Vertices on no face (left over in many
+scans) are accepted: they lie on no surface, so their limit position (value) is their own position
+(value), their normal is the zero vector, their row of `mass_matrix()` is zero, and `resample()` keeps
+them as isolated vertices.
 */
 template <typename TriangleMesh,
           typename VertexPointMap = typename boost::property_map<TriangleMesh, CGAL::vertex_point_t>::const_type>
@@ -114,8 +141,8 @@ public:
     \cgalParamNEnd
   \cgalNamedParamsEnd
 
-  \throws Input_error if the mesh is not a closed 2-manifold triangle mesh with valences \f$\geq 3\f$ and no isolated vertex,
-          if a coordinate is not finite, or if a parameter is out of range.
+  \throws Input_error if the mesh is not a 2-manifold triangle mesh (closed or with borders) with interior valences
+          \f$\geq 3\f$, if a coordinate is not finite, or if a parameter is out of range.
   */
   template <typename NamedParameters = parameters::Default_named_parameters>
   Loop_limit_surface(const TriangleMesh& tm, VertexPointMap vpm,
@@ -200,7 +227,7 @@ public:
   evaluate_attribute(face_descriptor f, const Barycentric_coordinates& b, AttributeMap attributes) const
   {
     typedef typename boost::property_traits<AttributeMap>::value_type Value;
-    const internal::Control_matrix A = indexed_->read_attributes(attributes);
+    const internal::Control_matrix A = extended_attributes(attributes);
     const std::size_t fi = indexed_->index(f);
     internal::Stencil s;
     stencil_at(fi, b, s);
@@ -214,7 +241,8 @@ public:
   }
 
   /// writes the limit position of every control vertex (closed-form limit mask) into `out`,
-  /// a `WritablePropertyMap` with `vertex_descriptor` key and `Point_3` value.
+  /// a `WritablePropertyMap` with `vertex_descriptor` key and `Point_3` value. A border vertex gets its
+  /// point of the limit boundary curve.
   template <typename PointOutputMap>
   void limit_positions(PointOutputMap out) const
   {
@@ -227,7 +255,8 @@ public:
   }
 
   /// writes the unit normal of the limit surface at every control vertex (closed-form tangent masks)
-  /// into `out`, a `WritablePropertyMap` with `vertex_descriptor` key and `Vector_3` value.
+  /// into `out`, a `WritablePropertyMap` with `vertex_descriptor` key and `Vector_3` value (on a border,
+  /// the normal of the limit surface at its boundary point).
   template <typename VectorOutputMap>
   void limit_normals(VectorOutputMap out) const
   {
@@ -244,7 +273,7 @@ public:
   void limit_values(AttributeMap in, AttributeOutputMap out) const
   {
     typedef typename boost::property_traits<AttributeMap>::value_type Value;
-    const internal::Control_matrix A = indexed_->read_attributes(in);
+    const internal::Control_matrix A = extended_attributes(in);
     std::vector<double> a(std::size_t(A.cols()));
     std::vector<Value> result;
     result.reserve(number_of_vertices());
@@ -260,22 +289,33 @@ public:
   /// \name Integration
   /// @{
 
-  /// the area of the limit surface, by the quadrature chosen at construction.
+  /// the area of the limit surface (the patches of the mesh's faces), by the quadrature chosen at construction.
   double area() const { return area_; }
 
   /*!
   the mass matrix \f$ M_{ij} = \int \phi_i \phi_j \, dA \f$ over the limit surface, with rows and
-  columns in the order of `vertices(tm)`. It is symmetric positive definite, has one row per control
+  columns in the order of `vertices(tm)`. It is symmetric positive definite (but for the zero rows and
+  columns of vertices on no face), has one row per control
   vertex with non-zeros for the vertices of its 3-ring (37 on a regular mesh), and its entries sum to `area()`.
+  Next to a border, \f$\phi_i\f$ includes the share of vertex \f$i\f$ in the ghosts' basis functions
+  (\f$M = E^T M_{ext} E\f$ with \f$E\f$ the affine map from control vertices to ghosts), so a row also
+  holds the vertices that define the ghosts of its 3-ring.
   */
   Eigen::SparseMatrix<double> mass_matrix() const
   {
-    internal::Fem_assembler<internal::Patch_cache> assembler(*cache_, number_of_vertices());
+    const internal::Ghost_layer& gl = indexed_->ghost_layer();
+    internal::Fem_assembler<internal::Patch_cache> assembler(*cache_, gl.number_of_extended_vertices());
     std::vector<double> m, l;
     assembler.assemble(X_, int(X_.cols()), Isotropic_diffusion_tensor(), m, l);
     Eigen::SparseMatrix<double> M = assembler.pattern();
     std::copy(m.begin(), m.end(), M.valuePtr());
-    return M;
+    if(!gl.has_boundary()) return M;
+    // Galerkin on the control vertices; the products round (i,j) and (j,i) in different orders, so
+    // average them to keep the matrix exactly symmetric
+    const Eigen::SparseMatrix<double> E = extension_matrix(gl);
+    const Eigen::SparseMatrix<double> R = E.transpose() * M * E;
+    const Eigen::SparseMatrix<double> Rt = R.transpose();
+    return 0.5 * (R + Rt);
   }
   /// @}
 
@@ -286,7 +326,8 @@ public:
   writes into the empty mesh `out` a triangulation of the limit surface at \f$2^{levels}\f$ times the
   resolution of the control mesh: the connectivity of `levels` steps of Loop subdivision, with every
   vertex placed exactly on the limit surface (vertices of the control mesh first, in their order,
-  then the points inside edges, then those inside faces).
+  then the points inside edges, then those inside faces). It covers exactly the faces of the mesh, so
+  it has the same borders; their vertices lie on the limit boundary curve.
 
   \tparam OutputMesh a model of `MutableFaceGraph`
   \cgalNamedParamsBegin
@@ -318,7 +359,7 @@ public:
                 const NamedParameters& np = parameters::default_values()) const
   {
     typedef typename boost::property_traits<AttributeMap>::value_type Value;
-    const internal::Control_matrix A = indexed_->read_attributes(in);
+    const internal::Control_matrix A = extended_attributes(in);
     const internal::Resampled_surface r = resampled(levels, out, &A);
     write_resampled(r, out, np,
       [&](std::size_t i, typename boost::graph_traits<OutputMesh>::vertex_descriptor v) {
@@ -337,13 +378,37 @@ private:
     internal::Quadrature_spec spec;
     spec.degree = choose_parameter(get_parameter(np, internal_np::quadrature_degree), 8);
     spec.tiling_depth = choose_parameter(get_parameter(np, internal_np::quadrature_tiling_depth), 0);
-    indexed_.reset(new internal::Indexed_mesh<TriangleMesh>(mesh_));
-    X_ = indexed_->read_points(vpm);
-    cache_.reset(new internal::Patch_cache(indexed_->topology()));
+    indexed_.reset(new internal::Indexed_mesh<TriangleMesh>(mesh_, internal::Borders::GHOSTED, true));
+    // rows of the ghosts appended, so patches next to a border evaluate like any other
+    const internal::Ghost_layer& gl = indexed_->ghost_layer();
+    X_ = gl.extend(indexed_->read_points(vpm));
+    cache_.reset(new internal::Patch_cache(indexed_->topology(), gl.real_faces));   // ghost faces get no patch
     cache_->prepare_quadrature(spec);
-    internal::Fem_assembler<internal::Patch_cache> statistics(*cache_, number_of_vertices(), false);
+    internal::Fem_assembler<internal::Patch_cache> statistics(*cache_, gl.number_of_extended_vertices(), false);
     std::vector<double> unused;
     area_ = statistics.assemble(X_, int(X_.cols()), Isotropic_diffusion_tensor(), unused, unused, false).area;
+  }
+
+  // Attributes of the control vertices with the ghosts' rows appended (the same affine map as positions).
+  template <typename AttributeMap>
+  internal::Control_matrix extended_attributes(AttributeMap map) const
+  {
+    const internal::Ghost_layer& gl = indexed_->ghost_layer();
+    internal::Control_matrix A = indexed_->read_attributes(map);
+    return gl.has_boundary() ? gl.extend(A) : A;
+  }
+
+  // E: (control vertices + ghosts) x control vertices, identity on top, the ghosts' affine rows below
+  static Eigen::SparseMatrix<double> extension_matrix(const internal::Ghost_layer& gl)
+  {
+    std::vector<Eigen::Triplet<double>> t;
+    t.reserve(gl.real_vertices + 3 * gl.ghosts.size());
+    for(std::size_t i = 0; i < gl.real_vertices; ++i) t.emplace_back(Eigen::Index(i), Eigen::Index(i), 1.0);
+    for(std::size_t k = 0; k < gl.ghosts.size(); ++k)
+      for(const auto& w : gl.ghosts[k]) t.emplace_back(Eigen::Index(gl.real_vertices + k), Eigen::Index(w.first), w.second);
+    Eigen::SparseMatrix<double> E(Eigen::Index(gl.number_of_extended_vertices()), Eigen::Index(gl.real_vertices));
+    E.setFromTriplets(t.begin(), t.end());
+    return E;
   }
 
   void stencil_at(std::size_t fi, const Barycentric_coordinates& b, internal::Stencil& s) const
@@ -364,7 +429,7 @@ private:
     if(num_vertices(out) != 0 || num_faces(out) != 0)
       throw Input_error(Input_error::INVALID_PARAMETER, Input_error::no_element,
                         "the output mesh of resample() must be empty");
-    return internal::resample_limit_surface(indexed_->topology(), *cache_, X_, A, levels);
+    return internal::resample_limit_surface(indexed_->topology(), *cache_, number_of_vertices(), X_, A, levels);
   }
 
   template <typename OutputMesh, typename NamedParameters, typename AttributeWriter>
@@ -404,7 +469,7 @@ private:
   const TriangleMesh& mesh_;
   std::unique_ptr<internal::Indexed_mesh<TriangleMesh>> indexed_;
   std::unique_ptr<internal::Patch_cache> cache_;
-  internal::Control_matrix X_;
+  internal::Control_matrix X_;   // control points, then ghosts (E X)
   double area_ = 0;
 };
 

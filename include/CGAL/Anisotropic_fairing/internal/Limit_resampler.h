@@ -4,6 +4,8 @@
 // A k-times 1-to-4 refined triangulation of the control mesh whose vertices are points of the
 // limit surface (and limit values of any attribute) at the dyadic parameters i/2^k. Same
 // connectivity as k steps of Loop subdivision; vertices are exact limit points, not level-k controls.
+// Only the faces of the patch cache are refined: with a ghost layer these are the real faces, so the
+// output keeps the user's borders (a border edge has one face, hence its points are written once).
 
 #ifndef CGAL_ANISOTROPIC_FAIRING_INTERNAL_LIMIT_RESAMPLER_H
 #define CGAL_ANISOTROPIC_FAIRING_INTERNAL_LIMIT_RESAMPLER_H
@@ -12,6 +14,7 @@
 #include <CGAL/Anisotropic_fairing/internal/Patch_cache.h>
 #include <CGAL/Anisotropic_fairing/internal/Vertex_limit_masks.h>
 
+#include <algorithm>
 #include <array>
 #include <cmath>
 #include <map>
@@ -34,17 +37,20 @@ struct Resampled_surface
 };
 
 /// Output vertices: the control vertices first (in their order), then N-1 points per edge, then
-/// the interior points of each face, N = 2^levels. X holds the geometry (3 columns), A optional attributes.
+/// the interior points of each face, N = 2^levels. X holds the geometry (3 columns), A optional attributes,
+/// both with a row per vertex of `topo`. The faces refined are those of `cache` (the first faces of
+/// `topo`); their vertices must be the first `vertices` ones (with a ghost layer: the real vertices).
 inline Resampled_surface resample_limit_surface(const Triangle_topology& topo, const Patch_cache& cache,
-                                                const Control_matrix& X, const Control_matrix* A,
-                                                unsigned levels)
+                                                std::size_t vertices, const Control_matrix& X,
+                                                const Control_matrix* A, unsigned levels)
 {
   const int N = 1 << levels;
-  const std::size_t nv = topo.number_of_vertices();
-  const std::size_t nf = topo.number_of_faces();
+  const std::size_t nv = vertices;
+  const std::size_t nf = cache.number_of_faces();
   const Eigen::Index d = A ? A->cols() : 0;
 
-  // edge numbering: each edge is owned by its smaller halfedge
+  // edge numbering: each edge is owned by its smaller halfedge; ghost faces come after the
+  // refined ones, so a border edge is owned by its only refined face
   std::vector<std::size_t> edge_id(3 * nf, std::size_t(-1));
   std::size_t ne = 0;
   for(int h = 0; h < int(3 * nf); ++h)
@@ -98,7 +104,15 @@ inline Resampled_surface resample_limit_surface(const Triangle_topology& topo, c
     for(int c = 0; c < 3; ++c) out.normals(Eigen::Index(v), c) = n[c];
     if(A) vertex_limit_value(topo, *A, int(v), out.attributes.row(Eigen::Index(v)).data());
     out.prototype[v] = v;
-    const int f = topo.face_of(topo.outgoing(int(v)));
+    int h = topo.outgoing(int(v));
+    if(h < 0)   // a vertex on no face: kept, isolated, in the output too
+    {
+      out.face[v] = std::size_t(-1);
+      out.parameter[v] = { 0.0, 0.0 };
+      continue;
+    }
+    while(std::size_t(topo.face_of(h)) >= nf) h = topo.ccw(h);   // a refined face (not a ghost one) at v
+    const int f = topo.face_of(h);
     const auto& t = topo.face(std::size_t(f));
     const int corner = (t[0] == int(v)) ? 0 : (t[1] == int(v)) ? 1 : 2;
     out.face[v] = std::size_t(f);

@@ -31,8 +31,14 @@ inline void normalize3(double* n)
 }
 
 /// out = limit position of vertex v: (1 - n chi) x_v + chi sum of the neighbours (kappa values).
+/// A vertex on no face (accepted by some callers) is on no surface: its "limit" is itself.
 inline void vertex_limit_value(const Triangle_topology& topo, const Control_matrix& X, int v, double* out)
 {
+  if(topo.outgoing(v) < 0)
+  {
+    for(Eigen::Index c = 0; c < X.cols(); ++c) out[c] = X(v, c);
+    return;
+  }
   const int n = topo.valence(v);
   const double chi = loop_limit_weight(n);
   const Eigen::Index kappa = X.cols();
@@ -55,6 +61,7 @@ inline void vertex_limit_tangents(const Triangle_topology& topo, const Control_m
   const Eigen::Index kappa = X.cols();
   for(Eigen::Index c = 0; c < kappa; ++c) { tu[c] = 0; tv[c] = 0; }
   const int h0 = topo.outgoing(v);
+  if(h0 < 0) return;   // a vertex on no face has no tangent plane (its normal is the zero vector)
   int h = h0, j = 0;
   do {
     const int w = topo.target(h);
