@@ -73,31 +73,22 @@ inline Ghost_layer make_ghost_layer(std::size_t n, const std::vector<Triangle_to
   gl.real_vertices = n;
   gl.real_faces = faces.size();
   auto key = [](int a, int b) { return (std::uint64_t(std::uint32_t(a)) << 32) | std::uint32_t(b); };
-  std::unordered_map<std::uint64_t, int> directed;   // directed edge -> face
-  directed.reserve(faces.size() * 6);
-  // the fan walks below need what the topology checks later; refuse it here, with the same errors
   for(std::size_t f = 0; f < faces.size(); ++f)
-  {
-    const Triangle_topology::Face& t = faces[f];
     for(int k = 0; k < 3; ++k)
-      if(t[k] < 0 || std::size_t(t[k]) >= n)
+      if(faces[f][k] < 0 || std::size_t(faces[f][k]) >= n)
         throw Input_error(Input_error::INVALID_PARAMETER, f, "face " + std::to_string(f) + " has a vertex index out of range");
-    if(t[0] == t[1] || t[1] == t[2] || t[2] == t[0])
-      throw Input_error(Input_error::DEGENERATE_FACE, f,
-                        "face " + std::to_string(f) + " uses vertex " +
-                        std::to_string(t[0] == t[1] || t[0] == t[2] ? t[0] : t[1]) + " twice");
-    for(int k = 0; k < 3; ++k)
-      if(!directed.emplace(key(t[k], t[(k + 1) % 3]), int(f)).second)
-        throw Input_error(Input_error::NON_MANIFOLD_EDGE, std::size_t(t[k]),
-                          "the edge between vertices " + std::to_string(t[k]) + " and " + std::to_string(t[(k + 1) % 3]) +
-                          " is used by more than two faces, twice in the same direction, or twice");
+  // the real mesh, its halfedges linked (degenerate faces and non-manifold edges refused), borders allowed
+  std::unique_ptr<Triangle_topology> real(new Triangle_topology(n, faces, 0, allow_isolated));
+  bool closed = true;
+  for(int h = 0; h < int(3 * faces.size()) && closed; ++h) closed = real->opposite(h) >= 0;
+  if(closed)
+  {
+    real->require_closed_fans();
+    gl.topology = std::move(real);
+    for(std::size_t v = 0; v < n; ++v)
+      if(gl.topology->outgoing(int(v)) < 0) gl.isolated_vertices.push_back(int(v));
+    return gl;
   }
-  auto is_border = [&](int p, int q) { return directed.count(key(q, p)) == 0; };   // p->q has no twin
-  auto apex = [&](int f, int p) {   // the vertex of face f after p, and the one after that
-    const Triangle_topology::Face& t = faces[std::size_t(f)];
-    const int k = t[0] == p ? 0 : t[1] == p ? 1 : 2;
-    return std::make_pair(t[(k + 1) % 3], t[(k + 2) % 3]);
-  };
 
   std::vector<Triangle_topology::Face> ext = faces;
   std::unordered_map<std::uint64_t, int> edge_ghost;   // boundary edge p->q -> ghost index
@@ -115,31 +106,30 @@ inline Ghost_layer make_ghost_layer(std::size_t n, const std::vector<Triangle_to
   };
 
   std::vector<char> on_boundary(n, 0);
-  for(std::size_t f = 0; f < faces.size(); ++f)
-    for(int k = 0; k < 3; ++k)
+  for(int h = 0; h < int(3 * faces.size()); ++h)
+  {
+    if(real->opposite(h) >= 0) continue;
+    // h = p->q is a border edge: walk the fan of p counter-clockwise from p->r0 (= p->q) to the border edge r_m->p
+    const int p = real->source(h);
+    on_boundary[std::size_t(p)] = 1;
+    std::vector<int> r(1, real->target(h));
+    int g = h;
+    for(std::size_t guard = 0; guard <= faces.size(); ++guard)
     {
-      const int p = faces[f][k], q = faces[f][(k + 1) % 3];
-      if(!is_border(p, q)) continue;
-      on_boundary[std::size_t(p)] = 1;
-      // walk the fan of p counter-clockwise from the border edge p->r0 (= p->q) to the border edge r_m->p
-      std::vector<int> r(1, q);
-      int face = int(f);
-      for(std::size_t guard = 0; guard <= faces.size(); ++guard)
-      {
-        const int next = apex(face, p).second;          // face = (p, r_last, next)
-        r.push_back(next);
-        if(is_border(next, p)) break;                    // r_m -> p is a border edge
-        face = directed.at(key(p, next));                // the face holding p->next
-      }
-      const int m = int(r.size()) - 1;
-      const int g0 = ghost_of_edge(p, r[0], r[1]);
-      const int gm = ghost_of_edge(r[std::size_t(m)], p, r[std::size_t(m - 1)]);
-      const int c = m >= 3 ? 1 : 4 - m;
-      std::vector<int> fan(1, gm);
-      for(int j = 1; j <= c - 1; ++j) fan.push_back(add_ghost({ { p, 2.0 }, { r[std::size_t(m - 2 + j)], -1.0 } }));
-      fan.push_back(g0);
-      for(std::size_t j = 0; j + 1 < fan.size(); ++j) ext.push_back({ { p, fan[j], fan[j + 1] } });
+      r.push_back(real->target(real->next(g)));          // g's face is (p, r_last, next)
+      const int back = real->opposite(real->prev(g));    // next->p, seen from the other side
+      if(back < 0) break;                                // r_m -> p is a border edge
+      g = back;
     }
+    const int m = int(r.size()) - 1;
+    const int g0 = ghost_of_edge(p, r[0], r[1]);
+    const int gm = ghost_of_edge(r[std::size_t(m)], p, r[std::size_t(m - 1)]);
+    const int c = m >= 3 ? 1 : 4 - m;
+    std::vector<int> fan(1, gm);
+    for(int j = 1; j <= c - 1; ++j) fan.push_back(add_ghost({ { p, 2.0 }, { r[std::size_t(m - 2 + j)], -1.0 } }));
+    fan.push_back(g0);
+    for(std::size_t j = 0; j + 1 < fan.size(); ++j) ext.push_back({ { p, fan[j], fan[j + 1] } });
+  }
   for(std::size_t v = 0; v < n; ++v)
     if(on_boundary[v]) gl.boundary_vertices.push_back(int(v));
   gl.topology.reset(new Triangle_topology(gl.number_of_extended_vertices(), std::move(ext), n, allow_isolated));

@@ -60,6 +60,14 @@ public:
   int outgoing(int v) const { return out_[v]; }
   int valence(int v) const { return valence_[v]; }
 
+  /// Validates the fans of all vertices, as if built with `closed_vertices` = all (the mesh must have
+  /// no border edge): saves linking the halfedges twice when a mesh turns out to be closed.
+  void require_closed_fans()
+  {
+    closed_vertices_ = n_vertices_;
+    check_fans();
+  }
+
   /// Neighbours of v in counter-clockwise order, starting at target(h0) (h0 outgoing from v).
   template <class Output>
   void neighbours_ccw(int h0, Output out) const
@@ -113,6 +121,14 @@ private:
       opposite_[h] = it->second;
     }
 
+    outgoing_count_ = std::move(outgoing_count);
+    check_fans();
+  }
+
+  // one fan of valence >= 3 per closed vertex; the others keep their number of outgoing halfedges
+  void check_fans()
+  {
+    const std::vector<int>& outgoing_count = outgoing_count_;
     valence_.assign(n_vertices_, 0);
     for(std::size_t v = 0; v < n_vertices_; ++v)
     {
@@ -143,6 +159,7 @@ private:
   std::vector<int> opposite_;
   std::vector<int> out_;
   std::vector<int> valence_;
+  std::vector<int> outgoing_count_;
 };
 
 } // namespace internal
