@@ -25,6 +25,7 @@
 #include <CGAL/Anisotropic_fairing/internal/Indexed_mesh.h>
 
 #include "test_support/check.h"
+#include "test_support/mesh_coordinates.h"
 #include "test_support/mesh_generators.h"
 
 #include <cmath>
@@ -45,24 +46,9 @@ typedef Mesh::Vertex_index Vertex;
 
 std::string data_dir;
 
-template <class M>
-std::vector<double> coordinates(const M& m)
-{
-  std::vector<double> c;
-  for(auto v : vertices(m))
-  {
-    const K::Point_3& p = get(CGAL::vertex_point, m, v);
-    c.push_back(p.x()); c.push_back(p.y()); c.push_back(p.z());
-  }
-  return c;
-}
-
-double max_abs_difference(const std::vector<double>& a, const std::vector<double>& b)
-{
-  double d = a.size() == b.size() ? 0.0 : HUGE_VAL;
-  for(std::size_t i = 0; i < a.size() && i < b.size(); ++i) d = std::max(d, std::abs(a[i] - b[i]));
-  return d;
-}
+using AF_test::byte_identical;
+using AF_test::coordinates;
+using AF_test::max_abs_difference;
 
 // The border loops of a mesh, counted by CGAL's halfedge structure (independent of the ghost layer).
 std::size_t border_loops(const Mesh& m)

@@ -12,6 +12,7 @@
 #include <CGAL/Anisotropic_fairing/anisotropic_fairing.h>
 
 #include "test_support/check.h"
+#include "test_support/mesh_coordinates.h"
 #include "test_support/interpolating_sphere.h"
 #include "test_support/mesh_generators.h"
 
@@ -28,29 +29,9 @@ typedef CGAL::Polyhedron_3<K> Polyhedron;
 namespace AF = CGAL::Anisotropic_fairing;
 const double pi = 3.14159265358979323846;
 
-template <class M>
-std::vector<double> coordinates(const M& m)
-{
-  std::vector<double> c;
-  for(auto v : vertices(m))
-  {
-    const K::Point_3& p = get(CGAL::vertex_point, m, v);
-    c.push_back(p.x()); c.push_back(p.y()); c.push_back(p.z());
-  }
-  return c;
-}
-
-bool byte_identical(const std::vector<double>& a, const std::vector<double>& b)
-{
-  return a.size() == b.size() && std::memcmp(a.data(), b.data(), a.size() * sizeof(double)) == 0;
-}
-
-double max_abs_difference(const std::vector<double>& a, const std::vector<double>& b)
-{
-  double d = a.size() == b.size() ? 0.0 : HUGE_VAL;
-  for(std::size_t i = 0; i < a.size() && i < b.size(); ++i) d = std::max(d, std::abs(a[i] - b[i]));
-  return d;
-}
+using AF_test::byte_identical;
+using AF_test::coordinates;
+using AF_test::max_abs_difference;
 
 void fidelity_steady_state()
 {
