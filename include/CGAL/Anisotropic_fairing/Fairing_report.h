@@ -106,7 +106,7 @@ struct Fairing_report
   bool used_cholesky = false;     ///< whether any step was solved by the sparse factorisation
   std::size_t vertices = 0;       ///< number of vertices
   std::size_t faces = 0;          ///< number of faces
-  std::size_t constrained_vertices = 0; ///< vertices held fixed (by the user's constraints or by a boundary)
+  std::size_t constrained_vertices = 0; ///< vertices held fixed: by the user's constraints, by a border (`boundary_held_vertices`), or because they are on no face (`isolated_vertices`)
   std::size_t boundary_vertices = 0;    ///< vertices on a border of the mesh
   std::size_t boundary_held_vertices = 0; ///< vertices held because of a border: the boundary vertices and, with `Boundary_handling::HOLD_BOUNDARY_CURVE`, the interior vertices that shape the limit boundary curve
   std::size_t boundary_loops = 0;       ///< number of boundary loops (holes and outer borders)
