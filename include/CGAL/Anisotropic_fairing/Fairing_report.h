@@ -6,6 +6,8 @@
 #ifndef CGAL_ANISOTROPIC_FAIRING_FAIRING_REPORT_H
 #define CGAL_ANISOTROPIC_FAIRING_FAIRING_REPORT_H
 
+#include <CGAL/Anisotropic_fairing/Fairing_settings.h>
+
 #include <cstddef>
 #include <string>
 #include <vector>
@@ -110,6 +112,8 @@ struct Fairing_report
   std::size_t boundary_vertices = 0;    ///< vertices on a border of the mesh
   std::size_t boundary_held_vertices = 0; ///< vertices held because of a border: the boundary vertices and, with `Boundary_handling::HOLD_BOUNDARY_CURVE`, the interior vertices that shape the limit boundary curve
   std::size_t boundary_loops = 0;       ///< number of boundary loops (holes and outer borders)
+  Attribute_mode attribute_mode = Attribute_mode::GEOMETRY_ONLY; ///< how the attributes were faired
+  std::size_t attribute_dimension = 0;  ///< number of attribute components faired (0 without attributes or in `GEOMETRY_ONLY`)
   std::size_t isolated_vertices = 0;    ///< vertices on no face (scanner leftovers): held and left as they are
   double setup_seconds = 0;       ///< set-up: private numbering, element (patch categories, stencils), sparsity patterns
   double total_seconds = 0;       ///< the whole call

@@ -29,6 +29,24 @@ enum class Output_positions {
 };
 
 /// \ingroup PkgAnisotropicFairingFunctions
+/// How an attribute map is faired with the geometry (named parameter `attribute_mode`); Bajaj and Xu's
+/// cases (a)-(d). Without an attribute map only `GEOMETRY_ONLY` (the default then) makes sense.
+enum class Attribute_mode {
+  /// (b), the default with an attribute map: geometry and attributes evolve with the operator of the
+  /// geometry's surface (one matrix, all columns in one solve); the attributes do not shape the flow
+  SEPARATE,
+  /// (a): geometry and attributes form one 2-manifold in \f$\mathbb{R}^{3+d}\f$ (the metric, gradients and
+  /// mean-curvature vector use all components), the attributes scaled by `attribute_weight` (length per
+  /// attribute unit); where the attribute jumps, the manifold is steep and diffusion across it is slow
+  COUPLED,
+  /// (c): the geometry is fixed and only the attributes diffuse on it, a linear problem: the matrices
+  /// are assembled and factorised once, every step is one solve
+  ATTRIBUTES_ONLY,
+  /// (d): only the geometry is faired; the attribute map is neither read nor written
+  GEOMETRY_ONLY
+};
+
+/// \ingroup PkgAnisotropicFairingFunctions
 /// What a border holds fixed (named parameter `boundary_handling`). Boundary vertices are always held,
 /// and never written: their input positions and attribute values are kept in both output modes.
 enum class Boundary_handling {

@@ -17,6 +17,7 @@
 #include <array>
 #include <cmath>
 #include <cstddef>
+#include <limits>
 #include <type_traits>
 #include <vector>
 
@@ -29,7 +30,7 @@ namespace Anisotropic_fairing {
 Reads and writes the components of a per-vertex attribute value of type `V` as doubles, so that
 any vertex property map can carry a vector-valued function on the surface.
 
-Models are provided for arithmetic types, `std::array<T,N>`, `std::vector<T>`,
+Models are provided for arithmetic types (integers rounded and clamped to their range), `std::array<T,N>`, `std::vector<T>`,
 `Eigen::Matrix<T,N,1>` (fixed or dynamic `N`), `CGAL::Point_2`, `CGAL::Point_3`,
 `CGAL::Vector_2`, `CGAL::Vector_3` of any kernel, and `CGAL::IO::Color` (red, green and blue, each
 clamped to 0..255 and rounded when written; alpha is kept). Specialize it for other types:
@@ -57,7 +58,13 @@ struct Vector_attribute_traits<T, typename std::enable_if<std::is_arithmetic<T>:
   static double get(const T& v, std::size_t) { return double(v); }
   static T make(const T&, const double* x)
   {
-    if(std::is_integral<T>::value) return T(std::llround(x[0]));
+    if(std::is_integral<T>::value)   // rounded, and clamped rather than wrapped around
+    {
+      const double lo = double((std::numeric_limits<T>::min)()), hi = double((std::numeric_limits<T>::max)());
+      if(!(x[0] > lo)) return (std::numeric_limits<T>::min)();   // also NaN
+      if(x[0] >= hi) return (std::numeric_limits<T>::max)();
+      return T(std::llround(x[0]));
+    }
     return T(x[0]);
   }
 };

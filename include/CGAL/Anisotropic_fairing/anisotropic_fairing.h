@@ -91,6 +91,19 @@ of its area per step. `time_step` and `fidelity_weight` give them in model units
     \cgalParamType{a `ReadablePropertyMap` with `vertex_descriptor` key and `bool` value}
     \cgalParamDefault{no vertex is constrained}
   \cgalParamNEnd
+  \cgalParamNBegin{attribute_mode}
+    \cgalParamDescription{how `attr_map` is faired: with the geometry's operator (b), as one manifold with the
+                          geometry in \f$\mathbb{R}^{3+d}\f$ (a), alone on the fixed geometry (c, a linear problem:
+                          one assembly and one factorisation, then one solve per step; the point map is not
+                          written), or not at all (d)}
+    \cgalParamType{`Attribute_mode`}
+    \cgalParamDefault{`Attribute_mode::SEPARATE` with an attribute map, `GEOMETRY_ONLY` without}
+  \cgalParamNEnd
+  \cgalParamNBegin{attribute_weight}
+    \cgalParamDescription{`COUPLED` only: the length that one attribute unit counts for in the metric of the
+                          manifold in \f$\mathbb{R}^{3+d}\f$; larger values let attribute edges hold back the diffusion more}
+    \cgalParamType{double > 0} \cgalParamDefault{`1`}
+  \cgalParamNEnd
   \cgalParamNBegin{boundary_handling}
     \cgalParamDescription{what the borders hold: the limit boundary curve (the boundary vertices and the interior
                           vertices that shape the curve), or the boundary vertices only (the paper's choice; the

@@ -86,7 +86,7 @@ inline void check_parameter(bool ok, const std::string& message)
 }
 
 template <typename Cache, typename Tensor, typename Callback>
-Fairing_report run_stepper(const Cache& cache, const Locality_ordering& ordering, Control_matrix& X,
+Fairing_report run_stepper(const Cache& cache, const Locality_ordering& ordering, Control_matrix& X, Attribute_mode mode,
                            const std::vector<bool>& constrained, const std::vector<bool>& border,
                            const Tensor& tensor, const Stepper_settings& s, Callback& callback, double& setup_seconds)
 {
@@ -95,7 +95,8 @@ Fairing_report run_stepper(const Cache& cache, const Locality_ordering& ordering
   stepper.assembler().use_original_indices(&ordering.old_of_new_vertex, &ordering.old_of_new_face);
   stepper.assembler().exclude_from_curvature(&border);
   setup_seconds += clock.seconds();
-  return stepper.run(X, 3, tensor, s, callback);
+  if(mode == Attribute_mode::ATTRIBUTES_ONLY) return stepper.run_on_fixed_surface(X, tensor, s, callback);
+  return stepper.run(X, mode == Attribute_mode::COUPLED ? int(X.cols()) : 3, tensor, s, callback);
 }
 
 template <typename TriangleMesh, typename VertexPointMap, typename AttributeMap, typename NamedParameters>
@@ -137,6 +138,13 @@ Fairing_report fair(TriangleMesh& tm, VertexPointMap vpm, AttributeMap attribute
   s.verbose = choose_parameter(get_parameter(np, CGAL::internal_np::verbose), false);
   const Finite_element element = choose_parameter(get_parameter(np, internal_np::finite_element), Finite_element::LOOP);
   const Output_positions output = choose_parameter(get_parameter(np, internal_np::output_positions), Output_positions::LIMIT_SURFACE);
+  constexpr bool has_attributes = !std::is_same<AttributeMap, No_attributes>::value;
+  const Attribute_mode mode = choose_parameter(get_parameter(np, internal_np::attribute_mode),
+                                               has_attributes ? Attribute_mode::SEPARATE : Attribute_mode::GEOMETRY_ONLY);
+  check_parameter(has_attributes || mode == Attribute_mode::GEOMETRY_ONLY || mode == Attribute_mode::SEPARATE,
+                  "the coupled and attributes-only modes need an attribute map");
+  const double attribute_weight = choose_parameter(get_parameter(np, internal_np::attribute_weight), 1.0);
+  check_parameter(std::isfinite(attribute_weight) && attribute_weight > 0, "the attribute weight must be positive and finite");
   const Boundary_handling boundary = choose_parameter(get_parameter(np, internal_np::boundary_handling),
                                                       Boundary_handling::HOLD_BOUNDARY_CURVE);
   Quadrature_spec spec;
@@ -151,7 +159,7 @@ Fairing_report fair(TriangleMesh& tm, VertexPointMap vpm, AttributeMap attribute
   // input, read and checked before anything is touched
   const Indexed_mesh<TriangleMesh> im(tm, Borders::GHOSTED, true);   // isolated vertices: held, never written
   Control_matrix P = im.read_points(vpm);
-  const Control_matrix A = read_attribute_columns(im, attributes);
+  const Control_matrix A = mode == Attribute_mode::GEOMETRY_ONLY ? Control_matrix() : read_attribute_columns(im, attributes);
   const std::size_t n = im.number_of_vertices();
 
   Stopwatch setup;
@@ -165,7 +173,8 @@ Fairing_report fair(TriangleMesh& tm, VertexPointMap vpm, AttributeMap attribute
   {
     const Eigen::Index old = ordering.old_of_new_vertex[i];
     X.row(Eigen::Index(i)).head(3) = P.row(old);
-    if(A.cols() > 0) X.row(Eigen::Index(i)).tail(A.cols()) = A.row(old);
+    // coupled: attributes measured in lengths, so that they shape the manifold in R^(3+d)
+    if(A.cols() > 0) X.row(Eigen::Index(i)).tail(A.cols()) = (mode == Attribute_mode::COUPLED ? attribute_weight : 1.0) * A.row(old);
     constrained[i] = bool(get(vcm, im.vertex(std::size_t(old))));
   }
   for(int v : layer.boundary_vertices) border[std::size_t(v)] = true;
@@ -190,7 +199,7 @@ Fairing_report fair(TriangleMesh& tm, VertexPointMap vpm, AttributeMap attribute
     Ghosted_patch_cache cache(layer, spec);
     boundary_held = hold(boundary_constrained_vertices(layer, cache, boundary == Boundary_handling::HOLD_BOUNDARY_CURVE));
     setup_seconds = setup.seconds();
-    report = run_stepper(cache, ordering, X, constrained, border, tensor, s, callback, setup_seconds);
+    report = run_stepper(cache, ordering, X, mode, constrained, border, tensor, s, callback, setup_seconds);
     if(report.succeeded() && output == Output_positions::LIMIT_SURFACE)
     {
       const Control_matrix extended = layer.extend(X);
@@ -203,13 +212,16 @@ Fairing_report fair(TriangleMesh& tm, VertexPointMap vpm, AttributeMap attribute
     Linear_element_cache cache(*layer.topology, layer.real_faces);
     boundary_held = hold(border);
     setup_seconds = setup.seconds();
-    report = run_stepper(cache, ordering, X, constrained, border, tensor, s, callback, setup_seconds);
+    report = run_stepper(cache, ordering, X, mode, constrained, border, tensor, s, callback, setup_seconds);
   }
+  if(mode == Attribute_mode::COUPLED && A.cols() > 0) X.rightCols(A.cols()) /= attribute_weight;
   report.faces = im.number_of_faces();
   report.boundary_vertices = layer.boundary_vertices.size();
   report.boundary_held_vertices = boundary_held;
   report.boundary_loops = layer.boundary_loops;
   report.isolated_vertices = layer.isolated_vertices.size();
+  report.attribute_mode = mode;
+  report.attribute_dimension = std::size_t(A.cols());
   report.setup_seconds = setup_seconds;
   report.mean_edge_length = mean_edge_length(im.ghost_layer(), P);
 
@@ -224,9 +236,9 @@ Fairing_report fair(TriangleMesh& tm, VertexPointMap vpm, AttributeMap attribute
     {
       keep[i] = keep[i] || bool(get(vcm, im.vertex(i)));
       const Eigen::Index r = Eigen::Index(i);
-      if(!keep[i]) put(vpm, im.vertex(i), Point(result(r, 0), result(r, 1), result(r, 2)));
+      if(!keep[i] && mode != Attribute_mode::ATTRIBUTES_ONLY) put(vpm, im.vertex(i), Point(result(r, 0), result(r, 1), result(r, 2)));
     }
-    write_attribute_columns(im, attributes, result, 3, keep);
+    if(A.cols() > 0) write_attribute_columns(im, attributes, result, 3, keep);
   }
   report.total_seconds = total.seconds();
   return report;

@@ -194,12 +194,16 @@ public:
       analysed_ = true;
       st.analysis_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     }
-    ldlt_.factorize(A);
-    if(ldlt_.info() != Eigen::Success || !(ldlt_.vectorD().minCoeff() > 0))
+    if(!(keep_factorisation_ && factorised_))
     {
-      st.ok = false;
-      st.message = "the sparse LDL^T factorisation failed (the matrix is not positive definite)";
-      return st;
+      ldlt_.factorize(A);
+      factorised_ = ldlt_.info() == Eigen::Success && ldlt_.vectorD().minCoeff() > 0;
+      if(!factorised_)
+      {
+        st.ok = false;
+        st.message = "the sparse LDL^T factorisation failed (the matrix is not positive definite)";
+        return st;
+      }
     }
     Eigen::MatrixXd b = B, x(B.rows(), B.cols());
     x = ldlt_.solve(b);
@@ -214,9 +218,13 @@ public:
     return st;
   }
 
+  /// For a matrix that does not change between solves: factorise at the first solve only.
+  void keep_factorisation(bool keep) { keep_factorisation_ = keep; }
+
 private:
   Eigen::SimplicialLDLT<Eigen::SparseMatrix<double>, Eigen::Lower> ldlt_;
   bool analysed_ = false;
+  bool keep_factorisation_ = false, factorised_ = false;
 };
 
 } // namespace internal

@@ -46,6 +46,41 @@ struct Stepper_settings
   bool verbose = false;
 };
 
+/// The stopping criteria (27)-(29) and the steady-state test, fed after every step with the
+/// monitored functional (int |H|^2 of the surface, or the Dirichlet energy of attributes on a fixed
+/// surface) and the displacements, in the units the criteria are read in.
+class Stopping_monitor
+{
+public:
+  Stopping_monitor(const Stopping_criteria& c, double time_step_in_units, double initial_value)
+    : c_(c), dt_(time_step_in_units), F0_(initial_value) {}
+
+  /// true (and the reason) when the run should end after this step
+  bool should_stop(std::size_t step, double value, double max_displacement, double step_displacement, Stop_reason& reason)
+  {
+    if(F0_ > 0)
+    {
+      const double F = value / F0_;
+      const double rate = (F - F_prev_) / dt_;
+      if(step == 1) rate0_ = rate;
+      F_prev_ = F;
+      if(step >= 2 && c_.curvature_rate_ratio > 0 && rate0_ != 0 && std::abs(rate / rate0_) <= c_.curvature_rate_ratio)
+      { reason = Stop_reason::CURVATURE_RATE_RATIO; return true; }
+      if(c_.curvature_rate > 0 && std::abs(rate) <= c_.curvature_rate)
+      { reason = Stop_reason::CURVATURE_RATE; return true; }
+    }
+    if(c_.displacement > 0 && max_displacement >= c_.displacement)
+    { reason = Stop_reason::DISPLACEMENT; return true; }
+    if(c_.steady_speed > 0 && step_displacement / dt_ <= c_.steady_speed)
+    { reason = Stop_reason::STEADY_STATE; return true; }
+    return false;
+  }
+
+private:
+  Stopping_criteria c_;
+  double dt_, F0_, F_prev_ = 1.0, rate0_ = 0;
+};
+
 /// Milliseconds-resolution wall clock.
 class Stopwatch
 {
@@ -171,8 +206,7 @@ public:
     const Stopping_criteria& c = s.stopping;
     const double time_unit = c.relative_units ? scale * scale : 1.0;   // (28) and steady speed per this much time
     const double length_unit = c.relative_units ? scale : 1.0;
-    const double H0 = a.H_integral;
-    double H_prev = 1.0, rate0 = 0;
+    Stopping_monitor monitor(c, tau / time_unit, a.H_integral);
 
     const Eigen::Index n = X.rows(), k = X.cols(), nfree = Eigen::Index(free_.size());
     Dense_block R(n, k), B(nfree, k), dX = Dense_block::Zero(nfree, k);
@@ -241,25 +275,104 @@ public:
                     ratio_text(a.area / report.initial.area) + " of the initial one): mean-curvature flow shrinks closed surfaces to points; use fewer steps or a larger fidelity weight", total);
 
       // stopping criteria (27)-(29) and the steady state
-      bool stop = false;
-      if(H0 > 0)
-      {
-        const double H = a.H_integral / H0;
-        const double rate = (H - H_prev) / (tau / time_unit);
-        if(step == 1) rate0 = rate;
-        H_prev = H;
-        if(step >= 2 && c.curvature_rate_ratio > 0 && rate0 != 0 && std::abs(rate / rate0) <= c.curvature_rate_ratio)
-        { report.stop_reason = Stop_reason::CURVATURE_RATE_RATIO; stop = true; }
-        else if(c.curvature_rate > 0 && std::abs(rate) <= c.curvature_rate)
-        { report.stop_reason = Stop_reason::CURVATURE_RATE; stop = true; }
-      }
-      if(!stop && c.displacement > 0 && st.max_displacement >= c.displacement * length_unit)
-      { report.stop_reason = Stop_reason::DISPLACEMENT; stop = true; }
-      if(!stop && c.steady_speed > 0 && (moved / length_unit) / (tau / time_unit) <= c.steady_speed)
-      { report.stop_reason = Stop_reason::STEADY_STATE; stop = true; }
+      bool stop = monitor.should_stop(step, a.H_integral, st.max_displacement / length_unit, moved / length_unit, report.stop_reason);
       if(!callback(report.steps.back()) && !stop) { report.stop_reason = Stop_reason::CALLBACK; stop = true; }
       if(stop) break;
     }
+    report.total_seconds = total.seconds();
+    return report;
+  }
+
+  /// Attributes only (Bajaj & Xu's case c): the surface of the first 3 columns of X is fixed, so M
+  /// and L are assembled once, the system matrix is constant (factorised once when factorised at all)
+  /// and every step is one solve for the other columns. The stopping criteria read the attributes'
+  /// Dirichlet energy trace(A^T L A) in place of int |H|^2 (27, 28), and displacements (29, steady state)
+  /// in units of the attributes' spread, the root mean square of A_0 - mean(A_0).
+  template <typename Tensor, typename Callback>
+  Fairing_report run_on_fixed_surface(Control_matrix& X, const Tensor& tensor, const Stepper_settings& s, Callback& callback)
+  {
+    Stopwatch total;
+    Fairing_report report;
+    report.vertices = std::size_t(X.rows());
+    report.constrained_vertices = std::size_t(X.rows()) - free_.size();
+    Stopwatch clock;
+    const Assembly_statistics a = assembler_.assemble(X, 3, tensor, M_, L_);
+    const double assemble_seconds = clock.seconds();
+    if(a.degenerate) return fail(report, Fairing_status::DEGENERATE_METRIC, degenerate_message(a, 0), total);
+    const Eigen::Index n = X.rows(), k = X.cols() - 3, nfree = Eigen::Index(free_.size());
+    const Control_matrix F0 = X.rightCols(k);
+    Control_matrix F = F0;
+    report.initial.area = a.area;
+    report.initial.H_integral = a.H_integral;
+    report.initial.energy = dirichlet_energy(F);
+
+    const double scale = std::sqrt(a.area / (4 * 3.14159265358979323846));
+    const double tau = s.relative_time_step ? s.time_step * scale * scale : s.time_step;
+    const double omega = s.relative_fidelity ? s.fidelity_weight / (scale * scale) : s.fidelity_weight;
+    report.scale = scale;
+    report.time_step = tau;
+    report.fidelity_weight = omega;
+    const Stopping_criteria& c = s.stopping;
+    const double time_unit = c.relative_units ? scale * scale : 1.0;
+    double spread = 0;
+    {
+      const Eigen::RowVectorXd mean = F0.colwise().mean();
+      for(Eigen::Index i = 0; i < n; ++i) spread += (F0.row(i) - mean).squaredNorm();
+      spread = n > 0 ? std::sqrt(spread / double(n)) : 0.0;
+    }
+    const double value_unit = spread > 0 ? spread : 1.0;
+    Stopping_monitor monitor(c, tau / time_unit, report.initial.energy);
+
+    // the constant system, and its solver: factorised once (up to automatic_cholesky_limit free
+    // vertices for AUTOMATIC), or conjugate gradients warm-started from the last step
+    double* av = A_.valuePtr();
+    for(std::size_t e = 0; e < source_.size(); ++e)
+      av[e] = (1 + tau * omega) * M_[std::size_t(source_[e])] + tau * L_[std::size_t(source_[e])];
+    const bool factorise = s.solver == Linear_solver::CHOLESKY ||
+                           (s.solver == Linear_solver::AUTOMATIC && free_.size() <= std::size_t(automatic_cholesky_limit));
+    Sparse_cholesky cholesky;
+    cholesky.keep_factorisation(true);
+    Block_conjugate_gradient cg(s.solver_tolerance, s.solver_maximum_iterations);
+    report.used_cholesky = factorise && nfree > 0;
+    if(nfree == 0) report.stop_reason = Stop_reason::NO_FREE_VERTEX;
+
+    Dense_block R(n, k), B(nfree, k), dF = Dense_block::Zero(nfree, k);
+    for(std::size_t step = 1; step <= s.maximum_steps && nfree > 0; ++step)
+    {
+      Fairing_step st;
+      st.step = step;
+      st.time = double(step) * tau;
+      clock = Stopwatch();
+      residual_rhs(F, F0, tau, omega, R);
+      for(Eigen::Index i = 0; i < nfree; ++i) B.row(i) = R.row(free_[std::size_t(i)]);
+      st.assemble_seconds = (step == 1 ? assemble_seconds : 0.0) + clock.seconds();
+      clock = Stopwatch();
+      const Solve_statistics sol = factorise ? cholesky.solve(A_, B, dF) : cg.solve(A_, B, dF);
+      st.solve_seconds = clock.seconds();
+      st.direct_solve = factorise;
+      st.solver_iterations = sol.iterations;
+      st.residual = sol.residual;
+      if(!sol.ok) return fail(report, Fairing_status::SOLVER_FAILED, "step " + std::to_string(step) + ": " + sol.message, total);
+      if(!dF.allFinite())
+        return fail(report, Fairing_status::NON_FINITE_VALUE, "step " + std::to_string(step) + ": the solution is not finite", total);
+      double moved = 0;
+      for(Eigen::Index i = 0; i < nfree; ++i)
+      {
+        F.row(free_[std::size_t(i)]) += dF.row(i);
+        moved = std::max(moved, dF.row(i).norm());
+      }
+      st.step_displacement = moved;
+      for(Eigen::Index i = 0; i < n; ++i) st.max_displacement = std::max(st.max_displacement, (F.row(i) - F0.row(i)).norm());
+      st.area = a.area;
+      st.H_integral = a.H_integral;
+      st.energy = dirichlet_energy(F);
+      report.steps.push_back(st);
+      if(s.verbose) print(st);
+      bool stop = monitor.should_stop(step, st.energy, st.max_displacement / value_unit, moved / value_unit, report.stop_reason);
+      if(!callback(report.steps.back()) && !stop) { report.stop_reason = Stop_reason::CALLBACK; stop = true; }
+      if(stop) break;
+    }
+    X.rightCols(k) = F;
     report.total_seconds = total.seconds();
     return report;
   }
@@ -284,6 +397,17 @@ private:
       }
       for(Eigen::Index col = 0; col < k; ++col) r[col] *= tau;
     }
+  }
+
+  // trace(F^T L F) over all columns of F
+  double dirichlet_energy(const Control_matrix& F) const
+  {
+    const Eigen::SparseMatrix<double>& P = assembler_.pattern();
+    double e = 0;
+    for(Eigen::Index i = 0; i < P.cols(); ++i)
+      for(int p = P.outerIndexPtr()[i]; p < P.outerIndexPtr()[i + 1]; ++p)
+        e += L_[std::size_t(p)] * F.row(i).dot(F.row(P.innerIndexPtr()[p]));
+    return e;
   }
 
   static std::string degenerate_message(const Assembly_statistics& a, std::size_t step)

@@ -16,5 +16,7 @@ CGAL_AF_add_named_parameter(finite_element_t,            finite_element,        
 CGAL_AF_add_named_parameter(output_positions_t,          output_positions,          output_positions)
 CGAL_AF_add_named_parameter(linear_solver_t,             linear_solver,             linear_solver)
 CGAL_AF_add_named_parameter(boundary_handling_t,         boundary_handling,         boundary_handling)
+CGAL_AF_add_named_parameter(attribute_mode_t,            attribute_mode,            attribute_mode)
+CGAL_AF_add_named_parameter(attribute_weight_t,          attribute_weight,          attribute_weight)
 CGAL_AF_add_named_parameter(solver_tolerance_t,          solver_tolerance,          solver_tolerance)
 CGAL_AF_add_named_parameter(solver_maximum_iterations_t, solver_maximum_iterations, solver_maximum_iterations)
