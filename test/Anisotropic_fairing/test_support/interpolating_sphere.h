@@ -17,15 +17,13 @@
 
 namespace AF_test {
 
-// Control points whose limit surface interpolates the unit-sphere vertices: X = Lambda^-1 P with
-// Lambda the limit-mask matrix (built here independently from the CGAL oracle's weights).
+// The limit-mask matrix Lambda of a closed mesh (row i: the Loop limit point of vertex i), built
+// from the test's own Loop weights, independently of the package.
 template <class Mesh>
-void make_interpolating_icosphere(Mesh& mesh, int levels)
+Eigen::SparseMatrix<double> limit_mask_matrix(const Mesh& mesh)
 {
-  make_icosphere(mesh, levels);
   const std::size_t n = num_vertices(mesh);
   std::vector<Eigen::Triplet<double>> t;
-  Eigen::MatrixXd P(n, 3);
   for(auto v : vertices(mesh))
   {
     const std::size_t i = std::size_t(v);
@@ -33,13 +31,32 @@ void make_interpolating_icosphere(Mesh& mesh, int levels)
     const double chi = loop_limit_weight(val);
     t.emplace_back(i, i, 1 - double(val) * chi);
     for(auto w : CGAL::vertices_around_target(v, mesh)) t.emplace_back(i, std::size_t(w), chi);
-    const auto& p = mesh.point(v);
-    P.row(i) << p.x(), p.y(), p.z();
   }
   Eigen::SparseMatrix<double> L(n, n);
   L.setFromTriplets(t.begin(), t.end());
-  Eigen::SparseLU<Eigen::SparseMatrix<double>> lu(L);
-  const Eigen::MatrixXd X = lu.solve(P);
+  return L;
+}
+
+// Lambda^-1 B: the control values whose limit values at the vertices are the rows of B.
+template <class Mesh>
+Eigen::MatrixXd interpolating_control_values(const Mesh& mesh, const Eigen::MatrixXd& B)
+{
+  Eigen::SparseLU<Eigen::SparseMatrix<double>> lu(limit_mask_matrix(mesh));
+  return lu.solve(B);
+}
+
+// Control points whose limit surface interpolates the unit-sphere vertices: X = Lambda^-1 P.
+template <class Mesh>
+void make_interpolating_icosphere(Mesh& mesh, int levels)
+{
+  make_icosphere(mesh, levels);
+  Eigen::MatrixXd P(num_vertices(mesh), 3);
+  for(auto v : vertices(mesh))
+  {
+    const auto& p = mesh.point(v);
+    P.row(std::size_t(v)) << p.x(), p.y(), p.z();
+  }
+  const Eigen::MatrixXd X = interpolating_control_values(mesh, P);
   for(auto v : vertices(mesh))
     mesh.point(v) = typename Mesh::Point(X(std::size_t(v), 0), X(std::size_t(v), 1), X(std::size_t(v), 2));
 }
