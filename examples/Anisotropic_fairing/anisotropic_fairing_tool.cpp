@@ -23,6 +23,20 @@
 //  - `--output control` or the linear element: the written mesh is the surface itself (control
 //    polygon or P1 surface), so the normals are CGAL::Polygon_mesh_processing::compute_vertex_normals.
 // Without input normals the library's LIMIT_SURFACE output is used directly and no normal is written.
+// With `--mode attributes` the geometry is not faired: positions and the input's normals are written
+// unchanged (OBJ vn, which CGAL's reader does not read, are recomputed as for `--output control`).
+//
+// Attributes (`--attributes NAME,...`, `--mode`, `--attribute-weight`): the named per-vertex properties
+// (PLY: any numeric vertex property by its name, `red`/`green`/`blue`/`color` (and `alpha`) for the colour;
+// OFF: `color`, `uv`; OBJ: `uv`, the vt of the file when they are one per vertex) are gathered, in the
+// order given, into ONE std::vector<double> per vertex, so that the library faires all of them in one
+// solve with the attribute mode asked for; the result is then scattered back into the original typed
+// properties (integers rounded and clamped to their range, colour channels to 0..255 with alpha kept,
+// floats as float). The `--output limit` path with exact limit normals (above) also gives the
+// attributes their limit values (Loop_limit_surface::limit_values()), boundary and isolated vertices
+// keeping theirs, as the library's LIMIT_SURFACE output does. CGAL's OBJ reader and writer know no vt:
+// this program reads them itself and, when they are one per vertex, keeps them as the "v:texcoord"
+// property (as the OFF reader does) and writes OBJ itself ("f a/a", "f a/a/a" with normals).
 
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/Surface_mesh.h>
@@ -35,6 +49,7 @@
 #include <CGAL/Anisotropic_fairing/Loop_limit_surface.h>
 
 #include <algorithm>
+#include <array>
 #include <cerrno>
 #include <chrono>
 #include <cmath>
@@ -43,6 +58,7 @@
 #include <cstring>
 #include <filesystem>
 #include <fstream>
+#include <functional>
 #include <iostream>
 #include <limits>
 #include <sstream>
@@ -71,12 +87,20 @@ const char* const usage_text =
 "(Bajaj & Xu 2003; isotropic tensor: mean-curvature flow) and writes the result to OUTPUT.\n"
 "INPUT and OUTPUT are OFF, OBJ or PLY files (by extension; the formats may differ). The output keeps\n"
 "the vertex order, full double precision and every vertex property of the input that its format can\n"
-"hold (PLY: all of them; OFF: colours, texture coordinates, face colours; a warning names the dropped ones).\n"
+"hold (PLY: normals, colours, numeric properties; OFF: colours, texture coordinates, face colours;\n"
+"OBJ: normals, texture coordinates; a warning names the dropped ones).\n"
 "If the input has vertex normals, the normals of the faired surface are written: for the Loop element\n"
 "with --output limit the exact normals of the faired limit surface (and the limit points), otherwise\n"
-"the vertex normals of the output mesh (CGAL::Polygon_mesh_processing::compute_vertex_normals).\n"
+"the vertex normals of the output mesh (CGAL::Polygon_mesh_processing::compute_vertex_normals);\n"
+"with --mode attributes (geometry unchanged) the input's normals (OBJ: recomputed).\n"
 "Borders (holes, scan boundaries) are held fixed, and boundary vertices are written unchanged;\n"
 "vertices on no face are left as they are.\n"
+"With --attributes, per-vertex attributes (a function on the surface: scalars, colours, texture\n"
+"coordinates) are faired too, all in one solve, and written back into their own properties with their\n"
+"own types (integers rounded and clamped, colours to 0..255 with alpha kept); boundary and isolated\n"
+"vertices keep their values. Like the positions, the values written are those of the faired limit\n"
+"function at the vertices (--output limit: Loop limit masks; even 0 steps smooth them) or the\n"
+"control values (--output control).\n"
 "\n"
 "options:\n"
 "  --time-step T             time step tau in model units (length^2), as in the paper\n"
@@ -96,6 +120,19 @@ const char* const usage_text =
 "                            boundary vertices and the interior vertices that shape the curve) or only\n"
 "                            the boundary vertices (the paper's choice; the border may slide)\n"
 "  --quadrature-degree 4|6|8        Gauss rule per face for the Loop element (default 8)\n"
+"  --attributes NAME,...     the per-vertex attributes to fair, in this order, as one vector per\n"
+"                            vertex: PLY: any numeric vertex property by name (quality, u, v, s, t,\n"
+"                            ...), red, green, blue, alpha, or color (= red,green,blue); OFF: color\n"
+"                            (COFF), red, green, blue, uv (texture coordinates); OBJ: uv (the vt, if\n"
+"                            one per vertex). Not x, y, z, nx, ny, nz. A name the input does not have\n"
+"                            fails (exit 1) and the message lists the available ones\n"
+"  --mode separate|coupled|attributes|geometry   how they are faired: separate (the default with\n"
+"                            --attributes): with the operator of the geometry's surface; coupled: as one\n"
+"                            surface with the geometry in R^(3+d); attributes: the geometry is fixed (not\n"
+"                            written) and only the attributes diffuse on it; geometry (the default\n"
+"                            without --attributes): the attributes are not faired. coupled and\n"
+"                            attributes need --attributes\n"
+"  --attribute-weight W      coupled: the length that one attribute unit counts for (> 0, default 1)\n"
 "  --report FILE.json        write per-step statistics (also, with status and message, on failure)\n"
 "  --quiet                   no progress line per step on stderr\n"
 "  --help                    print this help and exit\n"
@@ -103,7 +140,8 @@ const char* const usage_text =
 "\n"
 "JSON report: status, message, input, output, vertices, faces, element, output_positions, tensor,\n"
 "solver, requested_solver, stop, max_steps, quadrature_degree, time_step, relative_time_step, scale,\n"
-"fidelity_weight, relative_fidelity_weight, mean_edge_length, normals, boundary_handling,\n"
+"fidelity_weight, relative_fidelity_weight, mean_edge_length, normals, mode, attributes,\n"
+"attribute_dimension, attribute_weight, boundary_handling,\n"
 "boundary_vertices, boundary_held_vertices, boundary_loops, isolated_vertices, constrained_vertices,\n"
 "stop_reason, initial {area,\n"
 "energy, H_integral}, steps [{step, time, solver_iterations, residual, area, energy, H_integral,\n"
@@ -111,7 +149,8 @@ const char* const usage_text =
 "total_seconds (the fairing call), wall_seconds (the whole program). Unknown values are null.\n"
 "\n"
 "exit status: 0 success; 1 failure (unreadable input, a mesh that is not a 2-manifold triangle mesh,\n"
-"fairing failure, unwritable output or report); 2 usage error. On failure one line starting with\n"
+"an attribute the input does not have, fairing failure, unwritable output or report); 2 usage error.\n"
+"On failure one line starting with\n"
 "\"anisotropic_fairing: \" is printed on stderr and OUTPUT is not created (an existing one is left as is).\n";
 
 const std::chrono::steady_clock::time_point program_start = std::chrono::steady_clock::now();
@@ -159,9 +198,53 @@ struct Options
   AF::Linear_solver solver = AF::Linear_solver::AUTOMATIC;
   AF::Boundary_handling boundary = AF::Boundary_handling::HOLD_BOUNDARY_CURVE;
   int quadrature_degree = 8;
+  std::vector<std::string> attributes;   // the names given to --attributes, in their order
+  bool has_mode = false;
+  AF::Attribute_mode mode = AF::Attribute_mode::GEOMETRY_ONLY;
+  bool has_attribute_weight = false;
+  double attribute_weight = 1;
   bool quiet = false;
   bool help = false;
 };
+
+// --mode, or its default: separate with --attributes, geometry without
+AF::Attribute_mode effective_mode(const Options& o)
+{
+  if(o.has_mode) return o.mode;
+  return o.attributes.empty() ? AF::Attribute_mode::GEOMETRY_ONLY : AF::Attribute_mode::SEPARATE;
+}
+
+const char* mode_name(AF::Attribute_mode m)
+{
+  switch(m)
+  {
+    case AF::Attribute_mode::COUPLED: return "coupled";
+    case AF::Attribute_mode::SEPARATE: return "separate";
+    case AF::Attribute_mode::ATTRIBUTES_ONLY: return "attributes";
+    default: return "geometry";
+  }
+}
+
+// "quality,red" -> {"quality", "red"}; blanks around a name are ignored
+std::vector<std::string> parse_attribute_list(const std::string& text)
+{
+  std::vector<std::string> names;
+  std::string::size_type start = 0;
+  for(;;)
+  {
+    const std::string::size_type comma = text.find(',', start);
+    std::string name = text.substr(start, comma == std::string::npos ? std::string::npos : comma - start);
+    const std::string::size_type b = name.find_first_not_of(" \t"), e = name.find_last_not_of(" \t");
+    name = b == std::string::npos ? std::string() : name.substr(b, e - b + 1);
+    if(name.empty()) usage_error("--attributes expects NAME,NAME,..., not '" + text + "'");
+    if(std::find(names.begin(), names.end(), name) != names.end())
+      usage_error("--attributes names '" + name + "' twice");
+    names.push_back(name);
+    if(comma == std::string::npos) break;
+    start = comma + 1;
+  }
+  return names;
+}
 
 double parse_double(const std::string& flag, const std::string& text)
 {
@@ -309,6 +392,23 @@ void parse_arguments(int argc, char** argv, Options& o)
         if(v == "4" || v == "6" || v == "8") o.quadrature_degree = std::atoi(v.c_str());
         else usage_error("--quadrature-degree expects 4, 6 or 8, not '" + v + "'");
       }
+      else if(arg == "--attributes") o.attributes = parse_attribute_list(next());
+      else if(arg == "--mode")
+      {
+        const std::string v = next();
+        if(v == "separate") o.mode = AF::Attribute_mode::SEPARATE;
+        else if(v == "coupled") o.mode = AF::Attribute_mode::COUPLED;
+        else if(v == "attributes") o.mode = AF::Attribute_mode::ATTRIBUTES_ONLY;
+        else if(v == "geometry") o.mode = AF::Attribute_mode::GEOMETRY_ONLY;
+        else usage_error("--mode expects separate, coupled, attributes or geometry, not '" + v + "'");
+        o.has_mode = true;
+      }
+      else if(arg == "--attribute-weight")
+      {
+        o.attribute_weight = parse_double(arg, next());
+        if(!(o.attribute_weight > 0)) usage_error("--attribute-weight must be positive");
+        o.has_attribute_weight = true;
+      }
       else usage_error("unknown option " + arg);
     }
     catch(const Failure& f)
@@ -325,6 +425,8 @@ void parse_arguments(int argc, char** argv, Options& o)
   o.output = positional[1];
   if(o.has_time_step && o.has_relative_time_step) usage_error("give either --time-step or --relative-time-step, not both");
   if(o.has_fidelity && o.has_relative_fidelity) usage_error("give either --fidelity or --relative-fidelity, not both");
+  if(o.attributes.empty() && (o.mode == AF::Attribute_mode::COUPLED || o.mode == AF::Attribute_mode::ATTRIBUTES_ONLY))
+    usage_error(std::string("--mode ") + mode_name(o.mode) + " needs --attributes");
   Format f;
   if(!format_of(o.input, f)) usage_error("INPUT must be an .off, .obj or .ply file: " + o.input);
   if(!format_of(o.output, f)) usage_error("OUTPUT must be an .off, .obj or .ply file: " + o.output);
@@ -362,8 +464,108 @@ struct Input_info
   bool ply_binary = false;
   std::string ply_comments;
   bool has_normals = false;       // the input carries vertex normals (v:normal exists)
+  bool normals_read = false;      // ... and their values were read (not for OBJ: CGAL's reader skips vn)
+  bool vertex_alpha = false;      // PLY: the vertex alpha was folded into v:color (selectable as "alpha")
+  std::string uv_problem;         // OBJ: why its vt could not be kept (empty: none, or kept as v:texcoord)
   std::vector<std::string> warnings;
 };
+
+typedef K::Point_2 Texcoord;
+typedef Mesh::Property_map<Vertex_index, Texcoord> Texcoord_map;   // "v:texcoord", as CGAL's OFF reader makes it
+
+// The texture coordinates of an OBJ file (CGAL's OBJ reader skips vt and the /vt of the faces).
+// They are kept only when they are one per vertex: every face corner of a vertex refers to the same
+// value (`f a/a` with as many vt as v is the usual case); a texture seam (a vertex with two values)
+// or a corner without vt makes them unmatched.
+struct Obj_texcoords
+{
+  bool present = false;   // the file has vt lines
+  bool matched = false;   // one value per vertex: `uv` is filled
+  std::string problem;    // why not
+  bool dropped_w = false; // some vt had a non-zero third component (not kept)
+  std::vector<std::array<double, 2>> uv;
+};
+
+Obj_texcoords read_obj_texcoords(const std::string& path, std::size_t mesh_vertices)
+{
+  Obj_texcoords t;
+  std::ifstream in(path);
+  std::vector<std::array<double, 2>> vt;
+  std::vector<long> vt_of;   // per vertex: the vt index it uses, -1 none yet
+  std::size_t nv = 0, line_number = 0;
+  bool corner_without_vt = false;
+  std::string line, token;
+  auto set_problem = [&t](const std::string& p) { if(t.problem.empty()) t.problem = p; };
+  // an OBJ index (1-based, or negative: relative to the `count` elements read so far) -> 0-based, -1 if invalid
+  auto index = [](const std::string& text, std::size_t count) -> long {
+    errno = 0;
+    char* end = nullptr;
+    const long i = std::strtol(text.c_str(), &end, 10);
+    if(text.empty() || *end != '\0' || errno == ERANGE || i == 0) return -1;
+    const long r = i > 0 ? i - 1 : long(count) + i;
+    return r >= 0 && r < long(count) ? r : -1;
+  };
+  while(std::getline(in, line))
+  {
+    ++line_number;
+    std::istringstream ls(line);
+    if(!(ls >> token)) continue;
+    if(token == "v") { ++nv; vt_of.push_back(-1); }
+    else if(token == "vt")
+    {
+      t.present = true;
+      double c[3] = {0, 0, 0};
+      int k = 0;
+      while(k < 3 && ls >> token)
+      {
+        char* end = nullptr;
+        c[k] = std::strtod(token.c_str(), &end);
+        if(*end != '\0' || !std::isfinite(c[k])) { set_problem("line " + std::to_string(line_number) + ": malformed vt"); break; }
+        ++k;
+      }
+      if(k == 0) set_problem("line " + std::to_string(line_number) + ": malformed vt");
+      if(c[2] != 0) t.dropped_w = true;
+      vt.push_back({{c[0], c[1]}});
+    }
+    else if(token == "f")
+    {
+      while(ls >> token)
+      {
+        const std::string::size_type s1 = token.find('/');
+        const long v = index(token.substr(0, s1), nv);
+        if(v < 0) { set_problem("line " + std::to_string(line_number) + ": bad vertex index '" + token + "'"); continue; }
+        std::string tex;
+        if(s1 != std::string::npos)
+        {
+          const std::string::size_type s2 = token.find('/', s1 + 1);
+          tex = token.substr(s1 + 1, s2 == std::string::npos ? std::string::npos : s2 - s1 - 1);
+        }
+        if(tex.empty()) { corner_without_vt = true; continue; }
+        const long ti = index(tex, vt.size());
+        if(ti < 0) { set_problem("line " + std::to_string(line_number) + ": bad texture index '" + token + "'"); continue; }
+        long& used = vt_of[std::size_t(v)];
+        if(used < 0) used = ti;
+        else if(used != ti && vt[std::size_t(used)] != vt[std::size_t(ti)])
+          set_problem("vertex " + std::to_string(v) + " (OBJ index " + std::to_string(v + 1) +
+                      ") has two texture coordinates, vt " + std::to_string(used + 1) + " and " + std::to_string(ti + 1) +
+                      ": a texture seam");
+      }
+    }
+  }
+  if(!t.present) return t;
+  if(corner_without_vt) set_problem("some face corners have no texture coordinate");
+  if(nv != mesh_vertices) set_problem("the file has " + std::to_string(nv) + " v lines but the mesh " + std::to_string(mesh_vertices) + " vertices");
+  if(!t.problem.empty()) return t;
+  t.uv.resize(nv);
+  for(std::size_t i = 0; i < nv; ++i)
+  {
+    if(vt_of[i] >= 0) t.uv[i] = vt[std::size_t(vt_of[i])];
+    else if(vt.size() == nv) t.uv[i] = vt[i];   // a vertex on no face: its own vt if there is one per v
+    else t.uv[i] = {{0, 0}};                    // otherwise (a vertex on no face, never referenced) 0 0
+  }
+  t.matched = true;
+  return t;
+}
 
 // What CGAL's OBJ reader drops (it reads only v and f): look for vn, vt and per-vertex colours.
 void scan_obj(const std::string& path, bool& normals, bool& textures, bool& colors)
@@ -397,22 +599,55 @@ bool ply_is_binary(const std::string& path)
 
 // PLY files with red/green/blue/alpha: CGAL's reader puts rgb into "v:color" (alpha 255) and alpha
 // into a separate "v:alpha" map, and its writer would then write two "alpha" properties. Fold the
-// alpha back into the colour (same for faces).
+// alpha back into the colour (same for faces). Returns whether it did.
 template <typename Index, typename Range>
-void fold_alpha(Mesh& mesh, const Range& range, const std::string& color_name, const std::string& alpha_name)
+bool fold_alpha(Mesh& mesh, const Range& range, const std::string& color_name, const std::string& alpha_name)
 {
   Mesh::Property_map<Index, CGAL::IO::Color> color;
   Mesh::Property_map<Index, boost::uint8_t> alpha;
   bool has_color = false, has_alpha = false;
   std::tie(color, has_color) = mesh.property_map<Index, CGAL::IO::Color>(color_name);
   std::tie(alpha, has_alpha) = mesh.property_map<Index, boost::uint8_t>(alpha_name);
-  if(!has_color || !has_alpha) return;
+  if(!has_color || !has_alpha) return false;
   for(Index i : range)
   {
     const CGAL::IO::Color c = color[i];
     color[i] = CGAL::IO::Color(c.red(), c.green(), c.blue(), alpha[i]);
   }
   mesh.remove_property_map(alpha);
+  return true;
+}
+
+// CGAL 5.5's ASCII OFF scanner reads texture coordinates at an index it computes only for files with
+// colours: an "STOFF" (or STNOFF, ...) file without "C" makes it read uninitialised memory (a crash).
+// For such a file, `patched` is its text with "C" inserted after "ST" in the header keyword: with no
+// colour entries on the lines, the scanner then finds the texture coordinates right after the
+// coordinates (and normals), and reads no colour.
+bool stoff_without_colors(const std::string& path, std::string& patched)
+{
+  std::ifstream in(path, std::ios::binary);
+  std::ostringstream text;
+  text << in.rdbuf();
+  patched = text.str();
+  std::string::size_type k = 0;
+  for(;;)   // skip blanks and comment lines before the keyword
+  {
+    k = patched.find_first_not_of(" \t\r\n", k);
+    if(k == std::string::npos) return false;
+    if(patched[k] != '#') break;
+    k = patched.find('\n', k);
+    if(k == std::string::npos) return false;
+  }
+  const std::string::size_type end = patched.find_first_of(" \t\r\n", k);
+  const std::string keyword = patched.substr(k, end == std::string::npos ? std::string::npos : end - k);
+  if(keyword.size() < 5 || keyword.compare(0, 2, "ST") != 0 || keyword[2] == 'C' ||
+     keyword.compare(keyword.size() - 3, 3, "OFF") != 0)
+    return false;
+  const std::string::size_type eol = patched.find('\n', k);
+  const std::string header_line = patched.substr(k, eol == std::string::npos ? std::string::npos : eol - k);
+  if(header_line.find("BINARY") != std::string::npos) return false;   // the binary scanner has no such problem
+  patched.insert(k + 2, "C");
+  return true;
 }
 
 void read_input(const std::string& path, Mesh& mesh, Input_info& info)
@@ -430,8 +665,22 @@ void read_input(const std::string& path, Mesh& mesh, Input_info& info)
     Capture_streams capture;
     if(info.format == Format::OFF)
     {
-      std::ifstream in(path);
-      ok = CGAL::IO::read_OFF(in, mesh);  // Surface_mesh overload: keeps normals, colours, texture coordinates in v:*
+      std::string patched;
+      if(stoff_without_colors(path, patched))
+      {
+        std::istringstream in(patched);
+        ok = CGAL::IO::read_OFF(in, mesh);
+        // the colour maps made for the "C" put in by stoff_without_colors(): nothing was read into them
+        auto vcolor = mesh.property_map<Vertex_index, CGAL::IO::Color>("v:color");
+        if(vcolor.second) mesh.remove_property_map(vcolor.first);
+        auto fcolor = mesh.property_map<Face_index, CGAL::IO::Color>("f:color");
+        if(fcolor.second) mesh.remove_property_map(fcolor.first);
+      }
+      else
+      {
+        std::ifstream in(path);
+        ok = CGAL::IO::read_OFF(in, mesh);  // Surface_mesh overload: keeps normals, colours, texture coordinates in v:*
+      }
     }
     else if(info.format == Format::PLY)
     {
@@ -455,7 +704,7 @@ void read_input(const std::string& path, Mesh& mesh, Input_info& info)
   }
   if(info.format == Format::PLY)
   {
-    fold_alpha<Vertex_index>(mesh, mesh.vertices(), "v:color", "v:alpha");
+    info.vertex_alpha = fold_alpha<Vertex_index>(mesh, mesh.vertices(), "v:color", "v:alpha");
     fold_alpha<Face_index>(mesh, mesh.faces(), "f:color", "f:alpha");
   }
   if(info.format == Format::OBJ)
@@ -463,10 +712,178 @@ void read_input(const std::string& path, Mesh& mesh, Input_info& info)
     bool normals, textures, colors;
     scan_obj(path, normals, textures, colors);
     if(normals) mesh.add_property_map<Vertex_index, Vector>("v:normal", Vector(0, 0, 0));
-    if(textures) info.warnings.push_back("texture coordinates (vt) of " + path + " are not kept (CGAL's OBJ reader drops them)");
+    if(textures)
+    {
+      const Obj_texcoords t = read_obj_texcoords(path, mesh.number_of_vertices());
+      if(t.matched)
+      {
+        Texcoord_map uv = mesh.add_property_map<Vertex_index, Texcoord>("v:texcoord", Texcoord(0, 0)).first;
+        for(Vertex_index v : mesh.vertices()) uv[v] = Texcoord(t.uv[std::size_t(v)][0], t.uv[std::size_t(v)][1]);
+        if(t.dropped_w) info.warnings.push_back("the third components (w) of the vt of " + path + " are not kept");
+      }
+      else
+      {
+        info.uv_problem = "the texture coordinates (vt) of " + path + " are not one per vertex (" + t.problem + ")";
+        info.warnings.push_back(info.uv_problem + ": not kept");
+      }
+    }
     if(colors) info.warnings.push_back("vertex colours on the v lines of " + path + " are not kept (CGAL's OBJ reader drops them)");
   }
   info.has_normals = mesh.property_map<Vertex_index, Vector>("v:normal").second;
+  info.normals_read = info.has_normals && info.format != Format::OBJ;
+}
+
+// ------------------------------------------------------------------------------------------------
+// Attributes: the selected columns, gathered into one vector per vertex and scattered back
+// ------------------------------------------------------------------------------------------------
+
+// One scalar component of a vertex property, read and written as a double.
+struct Attribute_column
+{
+  std::string name;
+  std::function<double(Vertex_index)> get;
+  std::function<void(Vertex_index, double)> set;
+};
+
+// The numeric types a PLY property can have (CGAL's reader makes a v:<name> map of that type).
+template <typename F>
+bool for_numeric_type(F&& f)
+{
+  return f(boost::int8_t()) || f(boost::uint8_t()) || f(boost::int16_t()) || f(boost::uint16_t()) ||
+         f(boost::int32_t()) || f(boost::uint32_t()) || f(boost::int64_t()) || f(boost::uint64_t()) ||
+         f(float()) || f(double());
+}
+
+template <typename Index>
+bool is_numeric_property(const Mesh& mesh, const std::string& property)
+{
+  return for_numeric_type([&](auto zero) {
+    return mesh.property_map<Index, decltype(zero)>(property).second;
+  });
+}
+
+// A numeric vertex property v:<name>; integers are rounded and clamped when written, floats rounded to float.
+bool add_numeric_column(Mesh& mesh, const std::string& name, std::vector<Attribute_column>& columns)
+{
+  return for_numeric_type([&](auto zero) {
+    typedef decltype(zero) T;
+    Mesh::Property_map<Vertex_index, T> map;
+    bool found = false;
+    std::tie(map, found) = mesh.property_map<Vertex_index, T>("v:" + name);
+    if(!found) return false;
+    columns.push_back({name, [map](Vertex_index v) { return double(get(map, v)); },
+                       [map](Vertex_index v, double x) { put(map, v, AF::Vector_attribute_traits<T>::make(get(map, v), &x)); }});
+    return true;
+  });
+}
+
+// Channel c (0 red .. 3 alpha) of v:color; the others are kept.
+Attribute_column color_column(Mesh::Property_map<Vertex_index, CGAL::IO::Color> map, const std::string& name, std::size_t c)
+{
+  return {name, [map, c](Vertex_index v) { return double(get(map, v)[c]); },
+          [map, c](Vertex_index v, double x) {
+            CGAL::IO::Color color = get(map, v);
+            color[c] = !(x > 0) ? (unsigned char)0 : (unsigned char)std::lround((std::min)(x, 255.0));   // NaN -> 0
+            put(map, v, color);
+          }};
+}
+
+Attribute_column texcoord_column(Texcoord_map map, const std::string& name, int c)
+{
+  return {name, [map, c](Vertex_index v) { return get(map, v)[c]; },
+          [map, c](Vertex_index v, double x) {
+            const Texcoord p = get(map, v);
+            put(map, v, c == 0 ? Texcoord(x, p.y()) : Texcoord(p.x(), x));
+          }};
+}
+
+// The names --attributes accepts for this mesh.
+std::vector<std::string> available_attributes(const Mesh& mesh, const Input_info& info)
+{
+  std::vector<std::string> names;
+  for(const std::string& p : mesh.properties<Vertex_index>())
+    if(p.compare(0, 2, "v:") == 0 && is_numeric_property<Vertex_index>(mesh, p)) names.push_back(p.substr(2));
+  if(mesh.property_map<Vertex_index, CGAL::IO::Color>("v:color").second)
+  {
+    for(const char* n : {"red", "green", "blue"}) names.push_back(n);
+    if(info.vertex_alpha) names.push_back("alpha");
+    names.push_back("color");
+  }
+  if(mesh.property_map<Vertex_index, Texcoord>("v:texcoord").second) names.push_back("uv");
+  return names;
+}
+
+// The columns named by --attributes, in their order ("color" is red, green, blue; "uv" is u, v).
+// Fails (exit 1, status attribute_error) on a name the input does not have.
+std::vector<Attribute_column> resolve_attributes(Mesh& mesh, const Input_info& info, const std::string& input,
+                                                 const std::vector<std::string>& names)
+{
+  std::vector<Attribute_column> columns;
+  Mesh::Property_map<Vertex_index, CGAL::IO::Color> color;
+  bool has_color = false;
+  std::tie(color, has_color) = mesh.property_map<Vertex_index, CGAL::IO::Color>("v:color");
+  Texcoord_map uv;
+  bool has_uv = false;
+  std::tie(uv, has_uv) = mesh.property_map<Vertex_index, Texcoord>("v:texcoord");
+  for(const std::string& name : names)
+  {
+    const std::string what = "--attributes " + name + ": ";
+    if(name == "x" || name == "y" || name == "z")
+      fail("attribute_error", what + "a vertex coordinate, not an attribute (--mode says whether the geometry is faired)");
+    if(name == "nx" || name == "ny" || name == "nz" || name == "normal")
+      fail("attribute_error", what + "vertex normals are not faired: the normals of the faired surface are written");
+    if(add_numeric_column(mesh, name, columns)) continue;
+    if(has_color && (name == "red" || name == "green" || name == "blue" || name == "color" || (name == "alpha" && info.vertex_alpha)))
+    {
+      if(name == "red" || name == "color") columns.push_back(color_column(color, "red", 0));
+      if(name == "green" || name == "color") columns.push_back(color_column(color, "green", 1));
+      if(name == "blue" || name == "color") columns.push_back(color_column(color, "blue", 2));
+      if(name == "alpha") columns.push_back(color_column(color, "alpha", 3));
+      continue;
+    }
+    if(has_uv && name == "uv")
+    {
+      columns.push_back(texcoord_column(uv, "u", 0));
+      columns.push_back(texcoord_column(uv, "v", 1));
+      continue;
+    }
+    if(name == "uv" && !info.uv_problem.empty()) fail("attribute_error", what + info.uv_problem);
+    std::string list;
+    for(const std::string& a : available_attributes(mesh, info)) list += (list.empty() ? "" : ", ") + a;
+    fail("attribute_error", what + input + " has no such vertex attribute (available: " +
+                            (list.empty() ? std::string("none") : list) + ")");
+  }
+  for(std::size_t i = 0; i < columns.size(); ++i)
+    for(std::size_t j = 0; j < i; ++j)
+      if(columns[i].name == columns[j].name)
+        fail("attribute_error", "--attributes selects " + columns[i].name + " twice (color is red,green,blue)");
+  return columns;
+}
+
+// All selected columns of a vertex as one vector: the attribute map given to the library.
+struct Attribute_vectors
+{
+  typedef Vertex_index key_type;
+  typedef std::vector<double> value_type;
+  typedef const value_type& reference;
+  typedef boost::read_write_property_map_tag category;
+  std::vector<value_type>* values;   // indexed by the vertex index
+
+  friend reference get(const Attribute_vectors& m, Vertex_index v) { return (*m.values)[std::size_t(v)]; }
+  friend void put(const Attribute_vectors& m, Vertex_index v, const value_type& x) { (*m.values)[std::size_t(v)] = x; }
+};
+
+void gather(const Mesh& mesh, const std::vector<Attribute_column>& columns, std::vector<std::vector<double>>& values)
+{
+  values.assign(mesh.num_vertices(), std::vector<double>(columns.size()));
+  for(Vertex_index v : mesh.vertices())
+    for(std::size_t c = 0; c < columns.size(); ++c) values[std::size_t(v)][c] = columns[c].get(v);
+}
+
+void scatter(const Mesh& mesh, const std::vector<Attribute_column>& columns, const std::vector<std::vector<double>>& values)
+{
+  for(Vertex_index v : mesh.vertices())
+    for(std::size_t c = 0; c < columns.size(); ++c) columns[c].set(v, values[std::size_t(v)][c]);
 }
 
 // ------------------------------------------------------------------------------------------------
@@ -490,17 +907,23 @@ std::vector<std::string> dropped_properties(const Mesh& mesh, Format f)
   {
     if(is_internal_property(p)) continue;
     bool kept = false;
-    if(f == Format::PLY) kept = true;  // CGAL's Surface_mesh PLY writer writes every simple-typed property
+    if(f == Format::PLY)  // CGAL's Surface_mesh PLY writer writes normals, colours and every numeric property
+      kept = p == "v:normal" || p == "v:color" || p == "f:color" ||
+             (p.compare(0, 2, "v:") == 0 && is_numeric_property<Vertex_index>(mesh, p)) ||
+             (p.compare(0, 2, "f:") == 0 && is_numeric_property<Face_index>(mesh, p)) ||
+             (p.compare(0, 2, "e:") == 0 && is_numeric_property<Mesh::Edge_index>(mesh, p)) ||
+             (p.compare(0, 2, "h:") == 0 && is_numeric_property<Mesh::Halfedge_index>(mesh, p));
     else if(f == Format::OFF) kept = (p == "v:normal" || p == "v:color" || p == "v:texcoord" || p == "f:color");
-    else kept = (p == "v:normal");
+    else kept = (p == "v:normal" || p == "v:texcoord");
     if(!kept) dropped.push_back(p);
   }
   return dropped;
 }
 
-// OBJ with normals: CGAL's OBJ writer writes vn lines but faces without //n references, so the
-// normals would not be attached to the vertices. This writes "f a//a b//b c//c" instead.
-bool write_obj_with_normals(std::ostream& os, const Mesh& mesh, const Normal_map& normals)
+// OBJ with normals or texture coordinates, which CGAL's OBJ writer does not attach to the vertices
+// (it writes vn lines but faces without //n references, and no vt). This writes one vn and one vt per
+// vertex, in the vertex order, and faces "f a//a", "f a/a" or "f a/a/a".
+bool write_obj_with_vertex_data(std::ostream& os, const Mesh& mesh, const Normal_map* normals, const Texcoord_map* uv)
 {
   os.precision(17);
   os << "# written by anisotropic_fairing\n";
@@ -510,16 +933,28 @@ bool write_obj_with_normals(std::ostream& os, const Mesh& mesh, const Normal_map
     const Point& p = mesh.point(v);
     os << "v " << p.x() << ' ' << p.y() << ' ' << p.z() << '\n';
   }
-  for(Vertex_index v : mesh.vertices())
-  {
-    const Vector& n = normals[v];
-    os << "vn " << n.x() << ' ' << n.y() << ' ' << n.z() << '\n';
-  }
+  if(uv)
+    for(Vertex_index v : mesh.vertices())
+    {
+      const Texcoord& t = (*uv)[v];
+      os << "vt " << t.x() << ' ' << t.y() << '\n';
+    }
+  if(normals)
+    for(Vertex_index v : mesh.vertices())
+    {
+      const Vector& n = (*normals)[v];
+      os << "vn " << n.x() << ' ' << n.y() << ' ' << n.z() << '\n';
+    }
   for(Face_index f : mesh.faces())
   {
     os << 'f';
     for(Vertex_index v : CGAL::vertices_around_face(mesh.halfedge(f), mesh))
-      os << ' ' << std::size_t(v) + 1 << "//" << std::size_t(v) + 1;
+    {
+      const std::size_t i = std::size_t(v) + 1;
+      os << ' ' << i;
+      if(uv) os << '/' << i;
+      if(normals) os << (uv ? "/" : "//") << i;
+    }
     os << '\n';
   }
   return bool(os);
@@ -558,8 +993,11 @@ void write_mesh(const std::string& path, Format f, const Mesh& mesh, const Input
       std::ofstream out(path);
       if(out)
       {
-        if(with_normals)
-          ok = write_obj_with_normals(out, mesh, mesh.property_map<Vertex_index, Vector>("v:normal").first);
+        const auto normals = mesh.property_map<Vertex_index, Vector>("v:normal");
+        const auto uv = mesh.property_map<Vertex_index, Texcoord>("v:texcoord");
+        if((with_normals && normals.second) || uv.second)
+          ok = write_obj_with_vertex_data(out, mesh, with_normals && normals.second ? &normals.first : nullptr,
+                                          uv.second ? &uv.first : nullptr);
         else
           ok = CGAL::IO::write_OBJ(out, mesh, CGAL::parameters::stream_precision(17));
         out.close();
@@ -683,6 +1121,14 @@ std::string report_json(const Options& o, const Run_record& r, double wall_secon
                                      : (o.has_relative_fidelity ? json_number(o.relative_fidelity) : "null"));
   kv("mean_edge_length", ran ? json_number(f.mean_edge_length) : "null");
   kv("normals", json_string(r.normals));
+  kv("mode", json_string(mode_name(effective_mode(o))));
+  {
+    std::string names = "[";
+    for(std::size_t i = 0; i < o.attributes.size(); ++i) names += (i ? ", " : "") + json_string(o.attributes[i]);
+    kv("attributes", names + "]");
+  }
+  kv("attribute_dimension", ran ? json_count(f.attribute_dimension) : "null");
+  kv("attribute_weight", json_number(o.attribute_weight));
   kv("boundary_handling", json_string(o.boundary == AF::Boundary_handling::HOLD_BOUNDARY_CURVE ? "curve" : "vertices"));
   kv("boundary_vertices", ran ? json_count(f.boundary_vertices) : "null");
   kv("boundary_held_vertices", ran ? json_count(f.boundary_held_vertices) : "null");
@@ -766,9 +1212,21 @@ int run(const Options& o, Run_record& r)
   r.vertices = mesh.number_of_vertices();
   r.faces = mesh.number_of_faces();
 
-  // Exact limit normals need the control points: see the comment at the top of this file.
+  // the attributes named (checked in every mode, so that a misspelt name fails), and what is faired
+  const AF::Attribute_mode mode = effective_mode(o);
+  const std::vector<Attribute_column> columns = resolve_attributes(mesh, info, o.input, o.attributes);
+  const bool fair_attributes = !columns.empty() && mode != AF::Attribute_mode::GEOMETRY_ONLY;
+  const bool fair_geometry = mode != AF::Attribute_mode::ATTRIBUTES_ONLY;
+  std::vector<std::vector<double>> attribute_values;   // per vertex, the columns in order
+  if(fair_attributes) gather(mesh, columns, attribute_values);
+  const Attribute_vectors attribute_map{&attribute_values};
+  // without attributes to fair, GEOMETRY_ONLY: the attribute map is then neither read nor written
+  const AF::Attribute_mode library_mode = fair_attributes ? mode : AF::Attribute_mode::GEOMETRY_ONLY;
+
+  // Exact limit normals need the control points: see the comment at the top of this file. With
+  // --mode attributes the geometry is fixed: positions and input normals are written as they are.
   const bool limit_output = o.element == AF::Finite_element::LOOP && o.output_positions == AF::Output_positions::LIMIT_SURFACE;
-  const bool exact_limit_normals = info.has_normals && limit_output;
+  const bool exact_limit_normals = info.has_normals && limit_output && fair_geometry;
   const AF::Output_positions library_output = exact_limit_normals ? AF::Output_positions::CONTROL_POINTS : o.output_positions;
 
   const unsigned int max_steps = o.steps;
@@ -781,7 +1239,9 @@ int run(const Options& o, Run_record& r)
                    s.assemble_seconds, s.solve_seconds);
     return true;
   };
-  auto fair = [&mesh](const auto& np) { return AF::anisotropic_fairing(mesh, np); };
+  auto fair = [&mesh, &attribute_map](const auto& np) {
+    return AF::anisotropic_fairing(mesh, mesh.points(), attribute_map, np);
+  };
 
   const auto base = AF::parameters::number_of_iterations(max_steps)
                       .stopping_criteria(o.stop_auto ? AF::Stopping_criteria() : AF::Stopping_criteria::none())
@@ -790,6 +1250,8 @@ int run(const Options& o, Run_record& r)
                       .linear_solver(o.solver)
                       .boundary_handling(o.boundary)
                       .quadrature_degree(o.quadrature_degree)
+                      .attribute_mode(library_mode)
+                      .attribute_weight(o.attribute_weight)
                       .callback(progress);
   try
   {
@@ -814,20 +1276,33 @@ int run(const Options& o, Run_record& r)
       // the mesh holds the faired control points; the quadrature is not used here (degree 4 is the cheapest set-up)
       AF::Loop_limit_surface<Mesh> limit(mesh, AF::parameters::quadrature_degree(4));
       limit.limit_normals(normals);
-      // as in the library's limit output, boundary and isolated vertices keep their (held) positions
+      // as in the library's limit output, boundary and isolated vertices keep their (held) positions and attributes
       std::vector<std::pair<Vertex_index, Point>> held;
+      std::vector<std::pair<Vertex_index, std::vector<double>>> held_values;
       for(Vertex_index v : mesh.vertices())
-        if(mesh.is_border(v) || mesh.is_isolated(v)) held.emplace_back(v, mesh.point(v));
+        if(mesh.is_border(v) || mesh.is_isolated(v))
+        {
+          held.emplace_back(v, mesh.point(v));
+          if(fair_attributes) held_values.emplace_back(v, attribute_values[std::size_t(v)]);
+        }
       limit.limit_positions(mesh.points());
+      if(fair_attributes) limit.limit_values(attribute_map, attribute_map);
       for(const auto& h : held) mesh.point(h.first) = h.second;
+      for(const auto& h : held_values) attribute_values[std::size_t(h.first)] = h.second;
       r.normals = "limit_surface";
     }
-    else
+    else if(fair_geometry || !info.normals_read)
     {
       CGAL::Polygon_mesh_processing::compute_vertex_normals(mesh, normals);
       r.normals = "vertex_normals";
     }
+    else
+      r.normals = "input";   // the geometry was not faired: the input's normals are still right
   }
+  // back into the input's own properties (rounded, clamped), which are written with the mesh
+  if(fair_attributes) scatter(mesh, columns, attribute_values);
+  if(o.has_attribute_weight && mode != AF::Attribute_mode::COUPLED)
+    info.warnings.push_back("--attribute-weight has no effect without --mode coupled");
 
   // printed once OUTPUT exists, so that on failure the failure is the only line starting with "anisotropic_fairing: "
   std::vector<std::string> warnings = info.warnings;
