@@ -5,7 +5,8 @@
 //    (1 + tau l(l+1))^-n; with a fidelity weight w the steady state is w/(w + l(l+1)) Y_l;
 //  - a constant attribute is unchanged in every mode; the geometry is not written in attributes-only
 //    mode, the attributes not in geometry-only mode;
-//  - every supported value type gives the same result through a Surface_mesh property map; colours
+//  - every supported value type (and a user type with its own traits) gives the same result through a
+//    Surface_mesh property map; colours
 //    are the clamped, rounded values of the same run in doubles;
 //  - coupled mode: trace(X^T L X) = 2 Area in R^kappa, and int |H|^2 equals an independent evaluation
 //    of the mean-curvature vector by the Christoffel symbols, H . t_k = 0.
@@ -205,6 +206,18 @@ void constant_attribute(const Mesh& bumpy)
   AF_CHECK(thrown, "coupled mode without an attribute map is refused");
 }
 
+// A user's own value type, made fairable by specialising the traits (as the documentation shows).
+struct Rgb_float { float r, g, b; };
+namespace CGAL { namespace Anisotropic_fairing {
+template <> struct Vector_attribute_traits<Rgb_float>
+{
+  static constexpr int static_dimension = 3;
+  static std::size_t dimension(const Rgb_float&) { return 3; }
+  static double get(const Rgb_float& v, std::size_t i) { return i == 0 ? v.r : i == 1 ? v.g : v.b; }
+  static Rgb_float make(const Rgb_float&, const double* x) { return Rgb_float{ float(x[0]), float(x[1]), float(x[2]) }; }
+};
+} }
+
 // ---------------------------------------------------------------------------------------------------
 // The same three columns through every value type: results agree with the run in doubles.
 template <typename Value, typename Make, typename Read>
@@ -266,6 +279,9 @@ void value_types(const Mesh& bumpy)
   value_type_case<std::array<float, 3>>(bumpy, data, 3, "std::array<float,3>",
       [](const A3& d) { return std::array<float, 3>{ { float(d[0]), float(d[1]), float(d[2]) } }; },
       [](const std::array<float, 3>& x) { return A3{ { x[0], x[1], x[2] } }; }, reference, 2e-4);
+  value_type_case<Rgb_float>(bumpy, data, 3, "user type (own traits)",
+      [](const A3& d) { return Rgb_float{ float(d[0]), float(d[1]), float(d[2]) }; },
+      [](const Rgb_float& x) { return A3{ { x.r, x.g, x.b } }; }, reference, 2e-4);
   value_type_case<std::vector<double>>(bumpy, data, 3, "std::vector<double>",
       [](const A3& d) { return std::vector<double>(d.begin(), d.end()); },
       [](const std::vector<double>& x) { return A3{ { x[0], x[1], x[2] } }; }, reference, 1e-12);
