@@ -6,8 +6,7 @@
 //  - a constant attribute is unchanged in every mode; the geometry is not written in attributes-only
 //    mode, the attributes not in geometry-only mode;
 //  - every supported value type (and a user type with its own traits) gives the same result through a
-//    Surface_mesh property map; colours
-//    are the clamped, rounded values of the same run in doubles;
+//    Surface_mesh property map; colours are the clamped, rounded values of the same run in doubles;
 //  - coupled mode: trace(X^T L X) = 2 Area in R^kappa, and int |H|^2 equals an independent evaluation
 //    of the mean-curvature vector by the Christoffel symbols, H . t_k = 0.
 
