@@ -6,6 +6,7 @@
 
 #include <CGAL/Anisotropic_fairing/Input_error.h>
 #include <CGAL/Anisotropic_fairing/Isotropic_diffusion_tensor.h>
+#include <CGAL/Anisotropic_fairing/Surface_curvature.h>
 #include <CGAL/Anisotropic_fairing/Vector_attribute_traits.h>
 #include <CGAL/Anisotropic_fairing/named_function_parameters.h>
 #include <CGAL/Anisotropic_fairing/internal/Fem_assembly.h>
@@ -182,6 +183,46 @@ public:
 
   /// \name Evaluation
   /// @{
+
+  /// Curvature of the limit surface at a point (see `curvature()`).
+  struct Curvature
+  {
+    Vector_3 mean_curvature_vector;   ///< \f$H = \frac12\Delta_M x\f$ (for the unit sphere, \f$-x\f$)
+    double k1, k2;                    ///< principal curvatures, \f$k_1 \leq k_2\f$, w.r.t. the oriented normal (negative on a convex surface oriented outward)
+    Vector_3 d1, d2;                  ///< unit principal directions
+  };
+
+  /*!
+  the curvature of the limit surface at the point of face `f` with barycentric coordinates `b`, with
+  respect to the normal oriented like the face. At an extraordinary vertex itself (barycentric
+  coordinates (1,0,0) etc. at a vertex of valence other than 6) the Loop limit surface has no finite
+  curvature in general; evaluate next to it instead.
+  \throws Input_error as `evaluate()`.
+  */
+  Curvature curvature(face_descriptor f, const Barycentric_coordinates& b) const
+  {
+    const Limit_point p = evaluate(f, b);
+    const double t1[3] = { p.d1.x(), p.d1.y(), p.d1.z() }, t2[3] = { p.d2.x(), p.d2.y(), p.d2.z() };
+    const double t11[3] = { p.d11.x(), p.d11.y(), p.d11.z() }, t12[3] = { p.d12.x(), p.d12.y(), p.d12.z() },
+                 t22[3] = { p.d22.x(), p.d22.y(), p.d22.z() };
+    Quadrature_point_geometry q;
+    q.face = indexed_->index(f);
+    q.point = -1;
+    q.dimension = 3;
+    q.t1 = t1; q.t2 = t2; q.t11 = t11; q.t12 = t12; q.t22 = t22;
+    q.g11 = p.d1 * p.d1; q.g12 = p.d1 * p.d2; q.g22 = p.d2 * p.d2;
+    q.det = q.g11 * q.g22 - q.g12 * q.g12;
+    q.ring = nullptr; q.basis = nullptr; q.ring_size = 0;
+    double H[3];
+    mean_curvature_vector(q, H);
+    const Principal_curvatures pc = principal_curvatures(q);
+    auto direction = [&](const std::array<double, 2>& c) {
+      const Vector_3 e = c[0] * p.d1 + c[1] * p.d2;
+      const double l = std::sqrt(e * e);
+      return l > 0 ? e / l : e;
+    };
+    return Curvature{ Vector_3(H[0], H[1], H[2]), pc.k1, pc.k2, direction(pc.c1), direction(pc.c2) };
+  }
 
   /*!
   evaluates the limit surface at the point of face `f` with barycentric coordinates `b`.
