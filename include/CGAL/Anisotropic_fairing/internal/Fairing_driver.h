@@ -85,6 +85,16 @@ inline void check_parameter(bool ok, const std::string& message)
   if(!ok) throw Input_error(Input_error::INVALID_PARAMETER, Input_error::no_element, message);
 }
 
+/// Tensors with a scale-relative parameter (`set_length_scale(double)`) get the model's scale l.
+template <typename Tensor>
+auto give_length_scale(Tensor& t, double ell, int) -> decltype(t.set_length_scale(ell), void()) { t.set_length_scale(ell); }
+template <typename Tensor>
+void give_length_scale(Tensor&, double, long) {}
+template <typename Tensor>
+auto wants_length_scale(const Tensor& t, int) -> decltype(const_cast<Tensor&>(t).set_length_scale(1.0), true) { return true; }
+template <typename Tensor>
+bool wants_length_scale(const Tensor&, long) { return false; }
+
 template <typename Cache, typename Tensor, typename Callback>
 Fairing_report run_stepper(const Cache& cache, const Locality_ordering& ordering, Control_matrix& X, Attribute_mode mode,
                            const std::vector<bool>& constrained, const std::vector<bool>& border,
@@ -94,9 +104,18 @@ Fairing_report run_stepper(const Cache& cache, const Locality_ordering& ordering
   Time_stepper<Cache> stepper(cache, std::size_t(X.rows()), constrained);
   stepper.assembler().use_original_indices(&ordering.old_of_new_vertex, &ordering.old_of_new_face);
   stepper.assembler().exclude_from_curvature(&border);
+  const int metric_columns = mode == Attribute_mode::COUPLED ? int(X.cols()) : 3;
+  // l = sqrt(Area / 4 pi) of the input's surface, for a tensor whose threshold is relative to it
+  Tensor scaled = tensor;
+  if(wants_length_scale(tensor, 0))
+  {
+    std::vector<double> m, l;
+    const double area = stepper.assembler().assemble(X, metric_columns, Isotropic_diffusion_tensor(), m, l, false).area;
+    give_length_scale(scaled, std::sqrt(area / (4 * 3.14159265358979323846)), 0);
+  }
   setup_seconds += clock.seconds();
-  if(mode == Attribute_mode::ATTRIBUTES_ONLY) return stepper.run_on_fixed_surface(X, tensor, s, callback);
-  return stepper.run(X, mode == Attribute_mode::COUPLED ? int(X.cols()) : 3, tensor, s, callback);
+  if(mode == Attribute_mode::ATTRIBUTES_ONLY) return stepper.run_on_fixed_surface(X, scaled, s, callback);
+  return stepper.run(X, metric_columns, scaled, s, callback);
 }
 
 template <typename TriangleMesh, typename VertexPointMap, typename AttributeMap, typename NamedParameters>

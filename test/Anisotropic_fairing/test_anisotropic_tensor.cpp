@@ -1,0 +1,197 @@
+// The curvature-driven diffusion tensor (Anisotropic_diffusion_tensor; loop-fem.md section 7):
+//  - cylinder oracle: an open Loop cylinder (32 x 30 net, ends held) shrinks at dr/dt = -g(1/r)/r for
+//    lambda = infinity, 0.5 and 0.25 (one step of tau = 1e-4, radius measured in the middle), to 1e-3;
+//  - L(D) is symmetric, positive semi-definite, L(D) 1 = 0, and L(D) -> L(I) as lambda -> infinity;
+//  - g is even, continuous, 1 below lambda; the relative threshold scales with the model;
+//  - a user's own tensor that reads a per-vertex weight map through the basis functions.
+
+#include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
+#include <CGAL/Surface_mesh.h>
+#include <CGAL/boost/graph/IO/polygon_mesh_io.h>
+
+#include <CGAL/Anisotropic_fairing/anisotropic_fairing.h>
+#include <CGAL/Anisotropic_fairing/Loop_limit_surface.h>
+#include <CGAL/Anisotropic_fairing/internal/Fem_assembly.h>
+#include <CGAL/Anisotropic_fairing/internal/Indexed_mesh.h>
+#include <CGAL/Anisotropic_fairing/internal/Patch_cache.h>
+
+#include "test_support/check.h"
+#include "test_support/mesh_coordinates.h"
+
+#include <Eigen/Dense>
+#include <Eigen/Eigenvalues>
+
+#include <cmath>
+#include <cstdio>
+#include <map>
+#include <string>
+#include <vector>
+
+typedef CGAL::Exact_predicates_inexact_constructions_kernel K;
+typedef CGAL::Surface_mesh<K::Point_3> Mesh;
+typedef Mesh::Vertex_index Vertex;
+namespace AF = CGAL::Anisotropic_fairing;
+namespace AFI = CGAL::Anisotropic_fairing::internal;
+
+// An open cylinder of control radius 1: n around, m rings along, spacing h; quads split alike.
+Mesh cylinder(int n, int m, double h)
+{
+  Mesh c;
+  std::vector<Vertex> v;
+  const double two_pi = 6.283185307179586;
+  for(int j = 0; j < m; ++j)
+    for(int i = 0; i < n; ++i) v.push_back(c.add_vertex(K::Point_3(std::cos(two_pi * i / n), std::sin(two_pi * i / n), j * h)));
+  for(int j = 0; j + 1 < m; ++j)
+    for(int i = 0; i < n; ++i)
+    {
+      const int a = j * n + i, b = j * n + (i + 1) % n, cc = a + n, d = b + n;
+      c.add_face(v[std::size_t(a)], v[std::size_t(b)], v[std::size_t(d)]);
+      c.add_face(v[std::size_t(a)], v[std::size_t(d)], v[std::size_t(cc)]);
+    }
+  return c;
+}
+
+// mean distance to the z axis of the limit points of the middle rings
+double middle_radius(const Mesh& c, int n, int m)
+{
+  const AF::Loop_limit_surface<Mesh> s(c);
+  std::map<Vertex, K::Point_3> lp;
+  s.limit_positions(boost::make_assoc_property_map(lp));
+  double r = 0;
+  int count = 0;
+  for(auto v : c.vertices())
+  {
+    const int ring = int(std::size_t(v)) / n;
+    if(ring < m / 2 - 2 || ring > m / 2 + 2) continue;
+    r += std::hypot(lp[v].x(), lp[v].y());
+    ++count;
+  }
+  return r / count;
+}
+
+void cylinder_oracle()
+{
+  const int n = 32, m = 30;
+  const Mesh c0 = cylinder(n, m, 6.283185307179586 / n);
+  const double r0 = middle_radius(c0, n, m);
+  const double tau = 1e-4;
+  for(double lambda : { std::numeric_limits<double>::infinity(), 0.5, 0.25 })
+  {
+    Mesh c = c0;
+    const AF::Anisotropic_diffusion_tensor D(lambda, false);
+    const AF::Fairing_report r = AF::anisotropic_fairing(c,
+        AF::parameters::diffusion_tensor(D).time_step(tau).number_of_iterations(1u).linear_solver(AF::Linear_solver::CHOLESKY)
+                       .output_positions(AF::Output_positions::CONTROL_POINTS).stopping_criteria(AF::Stopping_criteria::none()));
+    AF_CHECK(r.succeeded(), "cylinder step");
+    const double rate = (middle_radius(c, n, m) - r0) / tau;
+    const double predicted = -D.edge_stopping(1 / r0) / r0;
+    std::printf("cylinder (r0 = %.5f), lambda = %g: dr/dt = %.5f, predicted -g(1/r)/r = %.5f (g = %.4f), rel. error %.2e\n",
+                r0, lambda, rate, predicted, D.edge_stopping(1 / r0), std::abs(rate - predicted) / std::abs(predicted));
+    AF_CHECK_REL(rate, predicted, 1e-3, "cylinder shrink rate -g(1/r)/r");
+  }
+}
+
+Eigen::MatrixXd stiffness(const Mesh& mesh, const AF::Anisotropic_diffusion_tensor& D, Eigen::MatrixXd* L_iso = nullptr)
+{
+  AFI::Indexed_mesh<Mesh> im(mesh);
+  const AFI::Control_matrix X = im.read_points(mesh.points());
+  AFI::Patch_cache cache(im.topology());
+  cache.prepare_quadrature(AFI::Quadrature_spec());
+  AFI::Fem_assembler<AFI::Patch_cache> as(cache, im.number_of_vertices());
+  std::vector<double> mv, lv;
+  as.assemble(X, 3, D, mv, lv);
+  Eigen::SparseMatrix<double> L = as.pattern();
+  std::copy(lv.begin(), lv.end(), L.valuePtr());
+  if(L_iso)
+  {
+    as.assemble(X, 3, AF::Isotropic_diffusion_tensor(), mv, lv);
+    Eigen::SparseMatrix<double> Li = as.pattern();
+    std::copy(lv.begin(), lv.end(), Li.valuePtr());
+    *L_iso = Eigen::MatrixXd(Li);
+  }
+  return Eigen::MatrixXd(L);
+}
+
+void operator_properties(const Mesh& bumpy)
+{
+  Eigen::MatrixXd Li;
+  for(double lambda : { 0.5, 2.0, 1e300 })
+  {
+    AF::Anisotropic_diffusion_tensor D(lambda, false);
+    const Eigen::MatrixXd L = stiffness(bumpy, D, &Li);
+    const double asym = (L - L.transpose()).cwiseAbs().maxCoeff();
+    const double rows = (L * Eigen::VectorXd::Ones(L.rows())).cwiseAbs().maxCoeff() / L.diagonal().cwiseAbs().maxCoeff();
+    Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd> es(L, Eigen::EigenvaluesOnly);
+    const double lmin = es.eigenvalues()[0], lmax = es.eigenvalues()[L.rows() - 1];
+    const double to_iso = (L - Li).cwiseAbs().maxCoeff() / Li.cwiseAbs().maxCoeff();
+    std::printf("bumpy, lambda = %g: |L - L^T| %.2e, |L 1| / max diag %.2e, eigenvalues [%.3e, %.3e], |L(D) - L(I)| / |L(I)| %.3e\n",
+                lambda, asym, rows, lmin, lmax, to_iso);
+    AF_CHECK(asym == 0, "L(D) exactly symmetric");
+    AF_CHECK(rows <= 1e-13, "L(D) 1 = 0");
+    AF_CHECK(lmin >= -1e-12 * lmax, "L(D) positive semi-definite");
+    if(lambda > 1e100) AF_CHECK(to_iso <= 1e-14, "L(D) = L(I) for lambda -> infinity");
+    else AF_CHECK(to_iso > 1e-3, "a finite lambda changes the operator on bumpy");
+  }
+  // g: even, continuous at lambda, 1 below, 1/2 at 2 lambda
+  const AF::Anisotropic_diffusion_tensor D(0.7, false);
+  AF_CHECK(D.edge_stopping(0.69) == 1 && D.edge_stopping(-0.69) == 1 && D.edge_stopping(1.4) == 0.5 && D.edge_stopping(-1.4) == 0.5,
+           "g(s): 1 below lambda, even, 1/2 at 2 lambda");
+  AF_CHECK(std::abs(D.edge_stopping(0.7 + 1e-9) - 1) <= 1e-15, "g continuous at lambda");
+}
+
+// relative threshold: a model scaled by 10 is faired into the scaled result
+void scale_invariance(const Mesh& bumpy)
+{
+  Mesh a = bumpy, b = bumpy;
+  for(auto v : b.vertices()) b.point(v) = K::Point_3(10 * b.point(v).x(), 10 * b.point(v).y(), 10 * b.point(v).z());
+  const auto np = AF::parameters::diffusion_tensor(AF::Anisotropic_diffusion_tensor(2.0)).number_of_iterations(3u)
+                                 .linear_solver(AF::Linear_solver::CHOLESKY).stopping_criteria(AF::Stopping_criteria::none());
+  const AF::Fairing_report ra = AF::anisotropic_fairing(a, np), rb = AF::anisotropic_fairing(b, np);
+  double worst = 0, moved = 0;
+  for(auto v : a.vertices())
+  {
+    worst = std::max(worst, std::sqrt(CGAL::squared_distance(K::Point_3(10 * a.point(v).x(), 10 * a.point(v).y(), 10 * a.point(v).z()), b.point(v))) / 10);
+    moved = std::max(moved, std::sqrt(CGAL::squared_distance(a.point(v), bumpy.point(v))));
+  }
+  std::printf("relative lambda: bumpy x1 and x10 differ by %.3g (relative to the scale), largest motion %.3g\n", worst, moved);
+  AF_CHECK(ra.succeeded() && rb.succeeded() && worst <= 1e-12 && moved > 1e-3, "the relative threshold scales with the model");
+}
+
+// A user tensor: D = w I with w interpolated from a per-vertex map by the basis functions. With w = 2
+// everywhere, one step of tau equals one isotropic step of 2 tau.
+struct Weighted_tensor
+{
+  const std::vector<double>* weight;   // per vertex, in the order of vertices(tm)
+  AF::Parametric_tensor operator()(const AF::Quadrature_point_geometry& q) const
+  {
+    double w = 0;
+    for(int j = 0; j < q.ring_size; ++j) w += q.basis[j] * (*weight)[std::size_t(q.ring[j])];
+    const double inv = w / q.det;
+    return AF::Parametric_tensor{ q.g22 * inv, -q.g12 * inv, q.g11 * inv };
+  }
+};
+
+void user_tensor(const Mesh& bumpy)
+{
+  const std::vector<double> two(bumpy.number_of_vertices(), 2.0);
+  Mesh a = bumpy, b = bumpy;
+  const auto common = AF::parameters::number_of_iterations(1u).linear_solver(AF::Linear_solver::CHOLESKY)
+                                     .stopping_criteria(AF::Stopping_criteria::none());
+  AF::anisotropic_fairing(a, common.diffusion_tensor(Weighted_tensor{ &two }).time_step(1e-4));
+  AF::anisotropic_fairing(b, common.time_step(2e-4));
+  const double d = AF_test::max_abs_difference(AF_test::coordinates(a), AF_test::coordinates(b));
+  std::printf("user tensor w I with w = 2 from a vertex map vs isotropic with 2 tau: largest difference %.3g\n", d);
+  AF_CHECK(d <= 1e-12, "a user tensor reading a per-vertex map");
+}
+
+int main(int argc, char** argv)
+{
+  const std::string data = argc > 1 ? argv[1] : "data";
+  cylinder_oracle();
+  Mesh bumpy;
+  AF_CHECK(CGAL::IO::read_polygon_mesh(data + "/bumpy.off", bumpy), "read bumpy.off");
+  operator_properties(bumpy);
+  scale_invariance(bumpy);
+  user_tensor(bumpy);
+  return AF_test::report();
+}
