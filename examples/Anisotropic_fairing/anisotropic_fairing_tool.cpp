@@ -84,7 +84,8 @@ const char* const usage_text =
 "usage: anisotropic_fairing INPUT OUTPUT [options]\n"
 "\n"
 "Fairs the triangle mesh INPUT by geometric diffusion with Loop-subdivision finite elements\n"
-"(Bajaj & Xu 2003; isotropic tensor: mean-curvature flow) and writes the result to OUTPUT.\n"
+"(Bajaj & Xu 2003; isotropic tensor: mean-curvature flow, or the anisotropic, feature-preserving one)\n"
+"and writes the result to OUTPUT.\n"
 "INPUT and OUTPUT are OFF, OBJ or PLY files (by extension; the formats may differ). The output keeps\n"
 "the vertex order, full double precision and every vertex property of the input that its format can\n"
 "hold (PLY: normals, colours, numeric properties; OFF: colours, texture coordinates, face colours;\n"
@@ -114,7 +115,10 @@ const char* const usage_text =
 "  --element loop|linear     Loop limit-surface elements (default) or linear (P1) elements\n"
 "  --output limit|control    write the points of the faired limit surface (default) or the faired\n"
 "                            control points (the mesh whose Loop limit surface is the faired surface)\n"
-"  --tensor isotropic|anisotropic   the diffusion tensor; only isotropic (default) is available\n"
+"  --tensor isotropic|anisotropic   the diffusion tensor: isotropic (default: mean-curvature flow) or\n"
+"                            anisotropic (curvature-driven, feature-preserving: Anisotropic_diffusion_tensor)\n"
+"  --lambda L                the anisotropic tensor's feature threshold, a curvature in units of 1/l\n"
+"                            (default 2): principal curvatures above it are diffused less\n"
 "  --solver auto|cg|cholesky        linear solver: automatic (default), conjugate gradients, sparse LDL^T\n"
 "  --boundary curve|vertices        on a mesh with borders, hold the limit boundary curve (default: the\n"
 "                            boundary vertices and the interior vertices that shape the curve) or only\n"
@@ -138,7 +142,8 @@ const char* const usage_text =
 "  --help                    print this help and exit\n"
 "Options also accept the form --option=value.\n"
 "\n"
-"JSON report: status, message, input, output, vertices, faces, element, output_positions, tensor,\n"
+"JSON report: status, message, input, output, vertices, faces, element, output_positions, tensor, lambda,\n"
+"lambda_model_units,\n"
 "solver, requested_solver, stop, max_steps, quadrature_degree, time_step, relative_time_step, scale,\n"
 "fidelity_weight, relative_fidelity_weight, mean_edge_length, normals, mode, attributes,\n"
 "attribute_dimension, attribute_weight, boundary_handling,\n"
@@ -198,6 +203,8 @@ struct Options
   AF::Linear_solver solver = AF::Linear_solver::AUTOMATIC;
   AF::Boundary_handling boundary = AF::Boundary_handling::HOLD_BOUNDARY_CURVE;
   int quadrature_degree = 8;
+  bool anisotropic = false, has_lambda = false;
+  double lambda = 2.0;
   std::vector<std::string> attributes;   // the names given to --attributes, in their order
   bool has_mode = false;
   AF::Attribute_mode mode = AF::Attribute_mode::GEOMETRY_ONLY;
@@ -367,9 +374,9 @@ void parse_arguments(int argc, char** argv, Options& o)
       else if(arg == "--tensor")
       {
         const std::string v = next();
-        if(v == "anisotropic")  // a usage error (exit 2), with the exact message of the public interface
-          throw Failure{2, "not_available", "--tensor anisotropic is not available yet (isotropic only in this version)"};
-        if(v != "isotropic") usage_error("--tensor expects isotropic or anisotropic, not '" + v + "'");
+        if(v == "anisotropic") o.anisotropic = true;
+        else if(v == "isotropic") o.anisotropic = false;
+        else usage_error("--tensor expects isotropic or anisotropic, not '" + v + "'");
       }
       else if(arg == "--solver")
       {
@@ -385,6 +392,12 @@ void parse_arguments(int argc, char** argv, Options& o)
         if(v == "curve") o.boundary = AF::Boundary_handling::HOLD_BOUNDARY_CURVE;
         else if(v == "vertices") o.boundary = AF::Boundary_handling::HOLD_BOUNDARY_VERTICES;
         else usage_error("--boundary expects curve or vertices, not '" + v + "'");
+      }
+      else if(arg == "--lambda")
+      {
+        o.lambda = parse_double(arg, next());
+        o.has_lambda = true;
+        if(!(o.lambda > 0)) usage_error("--lambda must be positive");
       }
       else if(arg == "--quadrature-degree")
       {
@@ -427,6 +440,7 @@ void parse_arguments(int argc, char** argv, Options& o)
   if(o.has_fidelity && o.has_relative_fidelity) usage_error("give either --fidelity or --relative-fidelity, not both");
   if(o.attributes.empty() && (o.mode == AF::Attribute_mode::COUPLED || o.mode == AF::Attribute_mode::ATTRIBUTES_ONLY))
     usage_error(std::string("--mode ") + mode_name(o.mode) + " needs --attributes");
+  if(o.has_lambda && !o.anisotropic) usage_error("--lambda needs --tensor anisotropic");
   Format f;
   if(!format_of(o.input, f)) usage_error("INPUT must be an .off, .obj or .ply file: " + o.input);
   if(!format_of(o.output, f)) usage_error("OUTPUT must be an .off, .obj or .ply file: " + o.output);
@@ -1106,7 +1120,9 @@ std::string report_json(const Options& o, const Run_record& r, double wall_secon
   kv("faces", r.mesh_read ? json_count(r.faces) : "null");
   kv("element", json_string(element_name(o.element)));
   kv("output_positions", json_string(output_name(o.output_positions)));
-  kv("tensor", json_string("isotropic"));
+  kv("tensor", json_string(o.anisotropic ? "anisotropic" : "isotropic"));
+  kv("lambda", o.anisotropic ? json_number(o.lambda) : "null");
+  kv("lambda_model_units", o.anisotropic && ran && f.scale > 0 ? json_number(o.lambda / f.scale) : "null");
   kv("solver", ran ? json_string(f.used_cholesky ? "cholesky" : "cg") : "null");
   kv("requested_solver", json_string(solver_name(o.solver)));
   kv("stop", json_string(o.stop_auto ? "auto" : "off"));
@@ -1255,7 +1271,8 @@ int run(const Options& o, Run_record& r)
                       .callback(progress);
   try
   {
-    r.report = with_time_step(base, o, fair);
+    r.report = o.anisotropic ? with_time_step(base.diffusion_tensor(AF::Anisotropic_diffusion_tensor(o.lambda)), o, fair)
+                             : with_time_step(base, o, fair);
   }
   catch(const AF::Input_error& e)
   {

@@ -459,12 +459,29 @@ elseif(MODE STREQUAL "failure_leaves_no_output")
   endforeach()
 
 # ------------------------------------------------------------------------------------------------
-elseif(MODE STREQUAL "rejects_anisotropic")
+elseif(MODE STREQUAL "anisotropic_tensor")
+  # --tensor anisotropic runs the curvature-driven tensor; its threshold is reported in both units
   set(output "${WORK_DIR}/anisotropic.off")
-  run_tool(r "${DATA_DIR}/bumpy.off" "${output}" --tensor anisotropic)
-  check_clean_failure("--tensor anisotropic" "${r_rc}" "${r_err}" 2 "${output}")
-  check("exact message" r_err STREQUAL
-        "anisotropic_fairing: --tensor anisotropic is not available yet (isotropic only in this version)\n")
+  run_tool(r "${DATA_DIR}/bumpy.off" "${output}" --tensor anisotropic --lambda 3 --steps 2 --quiet
+           --report "${WORK_DIR}/anisotropic.json")
+  check("anisotropic: exit 0" r_rc EQUAL 0)
+  check("anisotropic: output written" EXISTS "${output}")
+  file(READ "${WORK_DIR}/anisotropic.json" json)
+  check("anisotropic: tensor reported" json MATCHES "\"tensor\": \"anisotropic\"")
+  check("anisotropic: lambda reported" json MATCHES "\"lambda\": 3,")
+  check("anisotropic: lambda in model units reported" json MATCHES "\"lambda_model_units\": [0-9.e+-]+,")
+  # the same run with the isotropic tensor gives another result
+  run_tool(r "${DATA_DIR}/bumpy.off" "${WORK_DIR}/isotropic.off" --steps 2 --quiet --report "${WORK_DIR}/isotropic.json")
+  off_positions("${output}" pa)
+  off_positions("${WORK_DIR}/isotropic.off" pi)
+  check("anisotropic and isotropic results differ" NOT pa STREQUAL pi)
+  file(READ "${WORK_DIR}/isotropic.json" json)
+  check("isotropic: lambda null" json MATCHES "\"lambda\": null,")
+  # --lambda without the anisotropic tensor, or not positive: usage errors
+  run_tool(r "${DATA_DIR}/bumpy.off" "${WORK_DIR}/bad.off" --lambda 3)
+  check_clean_failure("--lambda without --tensor anisotropic" "${r_rc}" "${r_err}" 2 "${WORK_DIR}/bad.off")
+  run_tool(r "${DATA_DIR}/bumpy.off" "${WORK_DIR}/bad.off" --tensor anisotropic --lambda -1)
+  check_clean_failure("--lambda -1" "${r_rc}" "${r_err}" 2 "${WORK_DIR}/bad.off")
 
 # ------------------------------------------------------------------------------------------------
 elseif(MODE STREQUAL "keeps_ply_properties")

@@ -15,7 +15,12 @@ returns \f$A\f$, which must be positive semi-definite (for \f$D = I\f$, \f$A = G
 The object is copied into the named-parameter pack; pass `std::cref(t)` for a heavy one. With TBB,
 `operator()` is called concurrently from several threads, so it must not modify shared state.
 
+A model may also have `void set_length_scale(double l)`: `anisotropic_fairing()` then calls it on its copy,
+before the first assembly, with the model's scale \f$\ell = \sqrt{\mathrm{Area}/4\pi}\f$ (of the input's
+surface, in \f$\mathbb{R}^{3+d}\f$ in the coupled mode), so that parameters can be given relative to it.
+
 \cgalHasModel `CGAL::Anisotropic_fairing::Isotropic_diffusion_tensor`
+\cgalHasModel `CGAL::Anisotropic_fairing::Anisotropic_diffusion_tensor`
 */
 class DiffusionTensor
 {
