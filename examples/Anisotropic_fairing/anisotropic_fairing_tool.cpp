@@ -119,6 +119,8 @@ const char* const usage_text =
 "                            anisotropic (curvature-driven, feature-preserving: Anisotropic_diffusion_tensor)\n"
 "  --lambda L                the anisotropic tensor's feature threshold, a curvature in units of 1/l\n"
 "                            (default 2): principal curvatures above it are diffused less\n"
+"  --epsilon E               the anisotropic tensor reads curvature on the surface after an isotropic\n"
+"                            step of E (units of l^2; the paper's prefiltered M_eps); default 0: none\n"
 "  --solver auto|cg|cholesky        linear solver: automatic (default), conjugate gradients, sparse LDL^T\n"
 "  --boundary curve|vertices        on a mesh with borders, hold the limit boundary curve (default: the\n"
 "                            boundary vertices and the interior vertices that shape the curve) or only\n"
@@ -143,7 +145,7 @@ const char* const usage_text =
 "Options also accept the form --option=value.\n"
 "\n"
 "JSON report: status, message, input, output, vertices, faces, element, output_positions, tensor, lambda,\n"
-"lambda_model_units,\n"
+"lambda_model_units, epsilon,\n"
 "solver, requested_solver, stop, max_steps, quadrature_degree, time_step, relative_time_step, scale,\n"
 "fidelity_weight, relative_fidelity_weight, mean_edge_length, normals, mode, attributes,\n"
 "attribute_dimension, attribute_weight, boundary_handling,\n"
@@ -203,8 +205,8 @@ struct Options
   AF::Linear_solver solver = AF::Linear_solver::AUTOMATIC;
   AF::Boundary_handling boundary = AF::Boundary_handling::HOLD_BOUNDARY_CURVE;
   int quadrature_degree = 8;
-  bool anisotropic = false, has_lambda = false;
-  double lambda = 2.0;
+  bool anisotropic = false, has_lambda = false, has_epsilon = false;
+  double lambda = 2.0, epsilon = 0.0;
   std::vector<std::string> attributes;   // the names given to --attributes, in their order
   bool has_mode = false;
   AF::Attribute_mode mode = AF::Attribute_mode::GEOMETRY_ONLY;
@@ -399,6 +401,12 @@ void parse_arguments(int argc, char** argv, Options& o)
         o.has_lambda = true;
         if(!(o.lambda > 0)) usage_error("--lambda must be positive");
       }
+      else if(arg == "--epsilon")
+      {
+        o.epsilon = parse_double(arg, next());
+        o.has_epsilon = true;
+        if(!(o.epsilon >= 0)) usage_error("--epsilon must be >= 0");
+      }
       else if(arg == "--quadrature-degree")
       {
         const std::string v = next();
@@ -441,6 +449,7 @@ void parse_arguments(int argc, char** argv, Options& o)
   if(o.attributes.empty() && (o.mode == AF::Attribute_mode::COUPLED || o.mode == AF::Attribute_mode::ATTRIBUTES_ONLY))
     usage_error(std::string("--mode ") + mode_name(o.mode) + " needs --attributes");
   if(o.has_lambda && !o.anisotropic) usage_error("--lambda needs --tensor anisotropic");
+  if(o.has_epsilon && !o.anisotropic) usage_error("--epsilon needs --tensor anisotropic");
   Format f;
   if(!format_of(o.input, f)) usage_error("INPUT must be an .off, .obj or .ply file: " + o.input);
   if(!format_of(o.output, f)) usage_error("OUTPUT must be an .off, .obj or .ply file: " + o.output);
@@ -1123,6 +1132,7 @@ std::string report_json(const Options& o, const Run_record& r, double wall_secon
   kv("tensor", json_string(o.anisotropic ? "anisotropic" : "isotropic"));
   kv("lambda", o.anisotropic ? json_number(o.lambda) : "null");
   kv("lambda_model_units", o.anisotropic && ran && f.scale > 0 ? json_number(o.lambda / f.scale) : "null");
+  kv("epsilon", o.anisotropic ? json_number(o.epsilon) : "null");
   kv("solver", ran ? json_string(f.used_cholesky ? "cholesky" : "cg") : "null");
   kv("requested_solver", json_string(solver_name(o.solver)));
   kv("stop", json_string(o.stop_auto ? "auto" : "off"));
@@ -1271,7 +1281,7 @@ int run(const Options& o, Run_record& r)
                       .callback(progress);
   try
   {
-    r.report = o.anisotropic ? with_time_step(base.diffusion_tensor(AF::Anisotropic_diffusion_tensor(o.lambda)), o, fair)
+    r.report = o.anisotropic ? with_time_step(base.diffusion_tensor(AF::Anisotropic_diffusion_tensor(o.lambda, true, o.epsilon)), o, fair)
                              : with_time_step(base, o, fair);
   }
   catch(const AF::Input_error& e)

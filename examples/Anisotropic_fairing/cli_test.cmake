@@ -462,7 +462,7 @@ elseif(MODE STREQUAL "failure_leaves_no_output")
 elseif(MODE STREQUAL "anisotropic_tensor")
   # --tensor anisotropic runs the curvature-driven tensor; its threshold is reported in both units
   set(output "${WORK_DIR}/anisotropic.off")
-  run_tool(r "${DATA_DIR}/bumpy.off" "${output}" --tensor anisotropic --lambda 3 --steps 2 --quiet
+  run_tool(r "${DATA_DIR}/bumpy.off" "${output}" --tensor anisotropic --lambda 3 --epsilon 1e-3 --steps 2 --quiet
            --report "${WORK_DIR}/anisotropic.json")
   check("anisotropic: exit 0" r_rc EQUAL 0)
   check("anisotropic: output written" EXISTS "${output}")
@@ -470,6 +470,7 @@ elseif(MODE STREQUAL "anisotropic_tensor")
   check("anisotropic: tensor reported" json MATCHES "\"tensor\": \"anisotropic\"")
   check("anisotropic: lambda reported" json MATCHES "\"lambda\": 3,")
   check("anisotropic: lambda in model units reported" json MATCHES "\"lambda_model_units\": [0-9.e+-]+,")
+  check("anisotropic: epsilon reported" json MATCHES "\"epsilon\": 0.001,")
   # the same run with the isotropic tensor gives another result
   run_tool(r "${DATA_DIR}/bumpy.off" "${WORK_DIR}/isotropic.off" --steps 2 --quiet --report "${WORK_DIR}/isotropic.json")
   off_positions("${output}" pa)
@@ -480,6 +481,8 @@ elseif(MODE STREQUAL "anisotropic_tensor")
   # --lambda without the anisotropic tensor, or not positive: usage errors
   run_tool(r "${DATA_DIR}/bumpy.off" "${WORK_DIR}/bad.off" --lambda 3)
   check_clean_failure("--lambda without --tensor anisotropic" "${r_rc}" "${r_err}" 2 "${WORK_DIR}/bad.off")
+  run_tool(r "${DATA_DIR}/bumpy.off" "${WORK_DIR}/bad.off" --epsilon 1e-3)
+  check_clean_failure("--epsilon without --tensor anisotropic" "${r_rc}" "${r_err}" 2 "${WORK_DIR}/bad.off")
   run_tool(r "${DATA_DIR}/bumpy.off" "${WORK_DIR}/bad.off" --tensor anisotropic --lambda -1)
   check_clean_failure("--lambda -1" "${r_rc}" "${r_err}" 2 "${WORK_DIR}/bad.off")
 

@@ -1,6 +1,7 @@
 // The curvature-driven diffusion tensor (Anisotropic_diffusion_tensor; loop-fem.md section 7):
 //  - cylinder oracle: an open Loop cylinder (32 x 30 net, ends held) shrinks at dr/dt = -g(1/r)/r for
 //    lambda = infinity, 0.5 and 0.25 (one step of tau = 1e-4, radius measured in the middle), to 1e-3;
+//    with the prefilter M_eps at -g(1/r_eps)/r, r_eps the radius after the isotropic step of eps;
 //  - L(D) is symmetric, positive semi-definite, L(D) 1 = 0, and L(D) -> L(I) as lambda -> infinity;
 //  - g is even, continuous, 1 below lambda; the relative threshold scales with the model;
 //  - a user's own tensor that reads a per-vertex weight map through the basis functions.
@@ -23,6 +24,7 @@
 
 #include <cmath>
 #include <cstdio>
+#include <limits>
 #include <map>
 #include <string>
 #include <vector>
@@ -88,6 +90,33 @@ void cylinder_oracle()
     std::printf("cylinder (r0 = %.5f), lambda = %g: dr/dt = %.5f, predicted -g(1/r)/r = %.5f (g = %.4f), rel. error %.2e\n",
                 r0, lambda, rate, predicted, D.edge_stopping(1 / r0), std::abs(rate - predicted) / std::abs(predicted));
     AF_CHECK_REL(rate, predicted, 1e-3, "cylinder shrink rate -g(1/r)/r");
+  }
+  // with the prefilter M_eps the curvature is that of the cylinder after an isotropic implicit step
+  // of eps: r_eps = (r0 + sqrt(r0^2 - 4 eps))/2, so the rate is -g(1/r_eps)/r0
+  const double eps = 1e-3, r_eps = 0.5 * (r0 + std::sqrt(r0 * r0 - 4 * eps));
+  {
+    Mesh c = c0;
+    const AF::Anisotropic_diffusion_tensor D(0.5, false, eps);
+    const AF::Fairing_report r = AF::anisotropic_fairing(c,
+        AF::parameters::diffusion_tensor(D).time_step(tau).number_of_iterations(1u).linear_solver(AF::Linear_solver::CHOLESKY)
+                       .output_positions(AF::Output_positions::CONTROL_POINTS).stopping_criteria(AF::Stopping_criteria::none()));
+    AF_CHECK(r.succeeded(), "cylinder step with the prefilter");
+    const double rate = (middle_radius(c, n, m) - r0) / tau;
+    const double predicted = -D.edge_stopping(1 / r_eps) / r0;
+    std::printf("cylinder, lambda = 0.5, prefilter eps = %g (r_eps = %.5f): dr/dt = %.5f, predicted -g(1/r_eps)/r0 = %.5f, "
+                "rel. error %.2e\n", eps, r_eps, rate, predicted, std::abs(rate - predicted) / std::abs(predicted));
+    AF_CHECK_REL(rate, predicted, 1e-3, "prefiltered cylinder rate");
+  }
+  // an infinite threshold with a prefilter is the isotropic flow, bit for bit
+  {
+    Mesh a = c0, b = c0;
+    const auto np = AF::parameters::time_step(tau).number_of_iterations(2u).linear_solver(AF::Linear_solver::CHOLESKY)
+                                   .stopping_criteria(AF::Stopping_criteria::none());
+    AF::anisotropic_fairing(a, np.diffusion_tensor(AF::Anisotropic_diffusion_tensor(std::numeric_limits<double>::infinity(), false, eps)));
+    AF::anisotropic_fairing(b, np);
+    const double d = AF_test::max_abs_difference(AF_test::coordinates(a), AF_test::coordinates(b));
+    std::printf("prefilter with lambda = infinity vs isotropic: largest difference %.3g\n", d);
+    AF_CHECK(d == 0, "prefiltered tensor with lambda = infinity is isotropic");
   }
 }
 

@@ -12,6 +12,7 @@
 #include <CGAL/Anisotropic_fairing/Quadrature_point_geometry.h>
 #include <CGAL/Anisotropic_fairing/Surface_curvature.h>
 
+#include <array>
 #include <cmath>
 #include <limits>
 
@@ -43,16 +44,24 @@ public:
   /// `lambda`: the feature threshold, a curvature, in units of \f$1/\ell\f$ if `relative` (the default;
   /// Bajaj and Xu use 2 to 2.5 on unit-scale models), in model units (1/length) otherwise. A
   /// threshold of \f$+\infty\f$ gives the isotropic tensor.
-  explicit Anisotropic_diffusion_tensor(double lambda = 2.0, bool relative = true)
-    : lambda_(lambda), relative_(relative), threshold_(lambda) {}
+  ///
+  /// `epsilon`: the prefilter time: the curvature is read on \f$M_\varepsilon\f$, the surface after one
+  /// isotropic implicit step of length \f$\varepsilon\f$ from the current one (Bajaj and Xu use
+  /// \f$\varepsilon = 0.001\f$), so that noise does not pass for features; in units of \f$\ell^2\f$ if
+  /// `relative`, like the time step. 0 (the default) reads it on the current surface.
+  explicit Anisotropic_diffusion_tensor(double lambda = 2.0, bool relative = true, double epsilon = 0.0)
+    : lambda_(lambda), epsilon_(epsilon), relative_(relative), threshold_(lambda), prefilter_(epsilon) {}
 
-  /// sets \f$\ell\f$: the threshold becomes \f$\lambda_{rel}/\ell\f$ (relative mode), and the mean
-  /// curvature below which \f$h\f$ is undefined \f$10^{-10}/\ell\f$
+  /// sets \f$\ell\f$: in relative mode the threshold becomes \f$\lambda/\ell\f$ and the prefilter time
+  /// \f$\varepsilon\ell^2\f$; the mean curvature below which \f$h\f$ is undefined is \f$10^{-10}/\ell\f$
   void set_length_scale(double ell)
   {
-    if(relative_) threshold_ = lambda_ / ell;
+    if(relative_) { threshold_ = lambda_ / ell; prefilter_ = epsilon_ * ell * ell; }
     undefined_ = 1e-10 / ell;
   }
+
+  /// the prefilter time \f$\varepsilon\f$ in model units (length squared), as used
+  double prefilter_time() const { return prefilter_; }
 
   /// the threshold in model units (1/length), as used
   double threshold() const { return threshold_; }
@@ -66,22 +75,51 @@ public:
     return 1.0 / (1.0 + d * d);
   }
 
-  /// returns \f$A = \sum_a g(k_a) c_a c_a^T\f$
+  /// returns \f$A = G^{-1} + \sum_a (g(k_a) - 1)\,\hat c_a \hat c_a^T\f$: the \f$k_a\f$ and \f$c_a\f$ of the
+  /// prefiltered surface when the point carries it, re-orthonormalised in the current metric
+  /// (\f$\hat c_a\f$; without a prefilter \f$\hat c_a = c_a\f$ and this is \f$\sum_a g(k_a) c_a c_a^T\f$)
   Parametric_tensor operator()(const Quadrature_point_geometry& q) const
   {
-    const Principal_curvatures pc = principal_curvatures(q, undefined_);
     const double inv = 1.0 / q.det;
-    if(!pc.defined) return Parametric_tensor{ q.g22 * inv, -q.g12 * inv, q.g11 * inv };
-    const double g1 = edge_stopping(pc.k1), g2 = edge_stopping(pc.k2);
-    return Parametric_tensor{ g1 * pc.c1[0] * pc.c1[0] + g2 * pc.c2[0] * pc.c2[0],
-                              g1 * pc.c1[0] * pc.c1[1] + g2 * pc.c2[0] * pc.c2[1],
-                              g1 * pc.c1[1] * pc.c1[1] + g2 * pc.c2[1] * pc.c2[1] };
+    Parametric_tensor A{ q.g22 * inv, -q.g12 * inv, q.g11 * inv };
+    Principal_curvatures pc;
+    if(q.prefiltered_t1)
+    {
+      Quadrature_point_geometry p = q;
+      p.t1 = q.prefiltered_t1; p.t2 = q.prefiltered_t2;
+      p.t11 = q.prefiltered_t11; p.t12 = q.prefiltered_t12; p.t22 = q.prefiltered_t22;
+      p.g11 = p.g12 = p.g22 = 0;
+      for(int c = 0; c < q.dimension; ++c)
+      { p.g11 += p.t1[c] * p.t1[c]; p.g12 += p.t1[c] * p.t2[c]; p.g22 += p.t2[c] * p.t2[c]; }
+      p.det = p.g11 * p.g22 - p.g12 * p.g12;
+      pc = principal_curvatures(p, undefined_);
+    }
+    else pc = principal_curvatures(q, undefined_);
+    if(!pc.defined) return A;
+    // Gram-Schmidt in the current metric: c^T G c
+    auto dot = [&](const std::array<double, 2>& a, const std::array<double, 2>& b) {
+      return a[0] * b[0] * q.g11 + (a[0] * b[1] + a[1] * b[0]) * q.g12 + a[1] * b[1] * q.g22;
+    };
+    std::array<double, 2> c1 = pc.c1, c2 = pc.c2;
+    const double n1 = std::sqrt(dot(c1, c1));
+    if(!(n1 > 0)) return A;
+    c1 = { { c1[0] / n1, c1[1] / n1 } };
+    const double d = dot(c2, c1);
+    c2 = { { c2[0] - d * c1[0], c2[1] - d * c1[1] } };
+    const double n2 = std::sqrt(dot(c2, c2));
+    if(!(n2 > 0)) return A;
+    c2 = { { c2[0] / n2, c2[1] / n2 } };
+    const double w1 = edge_stopping(pc.k1) - 1, w2 = edge_stopping(pc.k2) - 1;
+    A.a11 += w1 * c1[0] * c1[0] + w2 * c2[0] * c2[0];
+    A.a12 += w1 * c1[0] * c1[1] + w2 * c2[0] * c2[1];
+    A.a22 += w1 * c1[1] * c1[1] + w2 * c2[1] * c2[1];
+    return A;
   }
 
 private:
-  double lambda_;
+  double lambda_, epsilon_;
   bool relative_;
-  double threshold_;
+  double threshold_, prefilter_;
   double undefined_ = 0;
 };
 

@@ -33,6 +33,13 @@ struct Quadrature_point_geometry
   const int* ring;         ///< indices (order of `vertices(tm)`) of the control vertices whose basis functions are non-zero on the face
   const double* basis;     ///< the values of those basis functions at the point (sum 1): interpolate per-vertex data with them
   int ring_size;           ///< number of entries of `ring` and `basis`
+  /// The derivatives at the same point of the prefiltered surface \f$M_\varepsilon\f$ (Bajaj and Xu, section 5),
+  /// when the tensor asks for one (a `prefilter_time()` > 0, see `DiffusionTensor`); null pointers otherwise.
+  const double* prefiltered_t1 = nullptr;
+  const double* prefiltered_t2 = nullptr;   ///< see `prefiltered_t1`
+  const double* prefiltered_t11 = nullptr;  ///< see `prefiltered_t1`
+  const double* prefiltered_t12 = nullptr;  ///< see `prefiltered_t1`
+  const double* prefiltered_t22 = nullptr;  ///< see `prefiltered_t1`
 };
 
 /// \ingroup PkgAnisotropicFairingFunctions

@@ -95,6 +95,10 @@ public:
     original_face_ = face_of;
   }
 
+  /// The control points of a prefiltered surface (same rows and columns as X): its derivatives at each
+  /// quadrature point are passed to the tensor (Quadrature_point_geometry::prefiltered_t1, ...); null: none.
+  void set_prefiltered(const Control_matrix* Xp) { prefiltered_ = Xp; }
+
   /// Vertices left out of the discrete curvature integral of an element without second derivatives:
   /// on a border, (L X)_i is the conormal term of the boundary, not a mean curvature.
   void exclude_from_curvature(const std::vector<bool>* border) { border_ = border; }
@@ -163,6 +167,8 @@ private:
     typedef Eigen::Matrix<double, NQ, M, Eigen::RowMajor> Stencil_rows;
     Eigen::Matrix<double, M, K, (K == 1 ? Eigen::ColMajor : Eigen::RowMajor)> Xr;
     Eigen::Matrix<double, NQ, K, (K == 1 ? Eigen::ColMajor : Eigen::RowMajor)> T[5];
+    Eigen::Matrix<double, NQ, K, (K == 1 ? Eigen::ColMajor : Eigen::RowMajor)> P[5];   // of the prefiltered surface
+    Eigen::Matrix<double, M, K, (K == 1 ? Eigen::ColMajor : Eigen::RowMajor)> Pr;
     Eigen::Matrix<double, NQ, M, Eigen::RowMajor> Bm;
     Eigen::Matrix<double, NQ2, M, Eigen::RowMajor> Bl;
     Eigen::Matrix<double, M, M> localM, localL;
@@ -211,6 +217,15 @@ private:
     const int derivative_rows = Cache::has_second_derivatives ? 5 : 2;
     for(int r = 0; r < derivative_rows; ++r)
       b.T[r].noalias() = Rows(cache_.quadrature_rows(cat, D1 + r).data(), nq, m).lazyProduct(b.Xr);
+    const bool prefiltered = prefiltered_ && Cache::has_second_derivatives;
+    if(prefiltered)
+    {
+      b.Pr.resize(m, kappa);
+      for(int k = 0; k < m; ++k)
+        for(int c = 0; c < kappa; ++c) b.Pr(k, c) = (*prefiltered_)(ring[k], c);
+      for(int r = 0; r < 5; ++r)
+        b.P[r].noalias() = Rows(cache_.quadrature_rows(cat, D1 + r).data(), nq, m).lazyProduct(b.Pr);
+    }
     b.Bm.resize(nq, m);
     b.Bl.resize(2 * nq, m);
     if(ws.zeros.size() != std::size_t(kappa)) { ws.zeros.assign(std::size_t(kappa), 0.0); ws.mean_curvature.resize(std::size_t(kappa)); }
@@ -247,6 +262,11 @@ private:
       g.t22 = Cache::has_second_derivatives ? b.T[4].row(q).data() : no_second;
       g.g11 = g11; g.g12 = g12; g.g22 = g22; g.det = det;
       g.basis = S0.row(q).data();
+      g.prefiltered_t1 = prefiltered ? b.P[0].row(q).data() : nullptr;
+      g.prefiltered_t2 = prefiltered ? b.P[1].row(q).data() : nullptr;
+      g.prefiltered_t11 = prefiltered ? b.P[2].row(q).data() : nullptr;
+      g.prefiltered_t12 = prefiltered ? b.P[3].row(q).data() : nullptr;
+      g.prefiltered_t22 = prefiltered ? b.P[4].row(q).data() : nullptr;
       const Parametric_tensor A = tensor(g);
 
       face_area += c;
@@ -331,6 +351,7 @@ private:
   const std::vector<int>* original_vertex_ = nullptr;
   const std::vector<std::size_t>* original_face_ = nullptr;
   const std::vector<bool>* border_ = nullptr;
+  const Control_matrix* prefiltered_ = nullptr;
 };
 
 } // namespace internal

@@ -16,6 +16,7 @@
 
 #include <CGAL/Anisotropic_fairing/Fairing_report.h>
 #include <CGAL/Anisotropic_fairing/Fairing_settings.h>
+#include <CGAL/Anisotropic_fairing/Isotropic_diffusion_tensor.h>
 #include <CGAL/Anisotropic_fairing/internal/Fem_assembly.h>
 #include <CGAL/Anisotropic_fairing/internal/Spd_solvers.h>
 
@@ -190,7 +191,8 @@ public:
 
     const Control_matrix X0 = X;
     Stopwatch clock;
-    Assembly_statistics a = assembler_.assemble(X, metric_columns, tensor, M_, L_);
+    Assembly_statistics a = assemble_at(X, metric_columns, tensor, true);
+    if(!prefilter_error_.empty()) return fail(report, Fairing_status::SOLVER_FAILED, prefilter_error_, total);
     double assemble_seconds = clock.seconds();
     report.initial.area = a.area;
     report.initial.energy = a.energy;
@@ -261,7 +263,9 @@ public:
 
       // the new surface: diagnostics now, and the matrices of the next step
       clock = Stopwatch();
-      a = assembler_.assemble(X, metric_columns, tensor, M_, L_, step < s.maximum_steps);  // the last: statistics only
+      a = assemble_at(X, metric_columns, tensor, step < s.maximum_steps);  // the last: statistics only
+      if(!prefilter_error_.empty())
+        return fail(report, Fairing_status::SOLVER_FAILED, "after step " + std::to_string(step) + ": " + prefilter_error_, total);
       assemble_seconds = clock.seconds();
       st.area = a.area; st.energy = a.energy; st.H_integral = a.H_integral;
       if(step == s.maximum_steps) st.assemble_seconds += assemble_seconds;   // the final surface's statistics
@@ -297,7 +301,8 @@ public:
     report.vertices = std::size_t(X.rows());
     report.constrained_vertices = std::size_t(X.rows()) - free_.size();
     Stopwatch clock;
-    const Assembly_statistics a = assembler_.assemble(X, 3, tensor, M_, L_);
+    const Assembly_statistics a = assemble_at(X, 3, tensor, true);
+    if(!prefilter_error_.empty()) return fail(report, Fairing_status::SOLVER_FAILED, prefilter_error_, total);
     const double assemble_seconds = clock.seconds();
     if(a.degenerate) return fail(report, Fairing_status::DEGENERATE_METRIC, degenerate_message(a, 0), total);
     const Eigen::Index n = X.rows(), k = X.cols() - 3, nfree = Eigen::Index(free_.size());
@@ -402,6 +407,53 @@ private:
     }
   }
 
+  // M and L(D) at X. A tensor with a prefilter time eps > 0 (Bajaj & Xu's M_eps) first gets the surface
+  // after one isotropic implicit step of length eps from X, (M + eps L) X_eps = M X, held vertices
+  // fixed, and reads its curvature there (loop-fem.md section 7).
+  template <typename Tensor>
+  Assembly_statistics assemble_at(const Control_matrix& X, int metric_columns, const Tensor& tensor, bool with_matrices)
+  {
+    const double eps = prefilter_time(tensor, 0);
+    assembler_.set_prefiltered(nullptr);
+    prefilter_error_.clear();
+    if(eps > 0 && !free_.empty())
+    {
+      std::vector<double> Mi, Li;
+      assembler_.assemble(X, metric_columns, Isotropic_diffusion_tensor(), Mi, Li);
+      if(prefilter_A_.rows() != A_.rows()) prefilter_A_ = A_;
+      double* av = prefilter_A_.valuePtr();
+      for(std::size_t e = 0; e < source_.size(); ++e) av[e] = Mi[std::size_t(source_[e])] + eps * Li[std::size_t(source_[e])];
+      const Eigen::SparseMatrix<double>& P = assembler_.pattern();
+      const Eigen::Index nfree = Eigen::Index(free_.size());
+      Dense_block B(nfree, metric_columns), dX = Dense_block::Zero(nfree, metric_columns);
+      for(Eigen::Index i = 0; i < nfree; ++i)
+      {
+        const int row = free_[std::size_t(i)];
+        B.row(i).setZero();
+        for(int p = P.outerIndexPtr()[row]; p < P.outerIndexPtr()[row + 1]; ++p)
+          B.row(i) -= eps * Li[std::size_t(p)] * X.row(P.innerIndexPtr()[p]).head(metric_columns);
+      }
+      Block_conjugate_gradient cg(1e-10, 10000);
+      const Solve_statistics sol = cg.solve(prefilter_A_, B, dX);
+      if(!sol.ok || !dX.allFinite())
+        prefilter_error_ = "the prefiltered surface M_eps could not be computed: " + (sol.ok ? std::string("not finite") : sol.message);
+      else
+      {
+        prefiltered_X_ = X;
+        for(Eigen::Index i = 0; i < nfree; ++i) prefiltered_X_.row(free_[std::size_t(i)]).head(metric_columns) += dX.row(i);
+        assembler_.set_prefiltered(&prefiltered_X_);
+      }
+    }
+    const Assembly_statistics a = assembler_.assemble(X, metric_columns, tensor, M_, L_, with_matrices);
+    assembler_.set_prefiltered(nullptr);
+    return a;
+  }
+
+  template <typename Tensor>
+  static auto prefilter_time(const Tensor& t, int) -> decltype(double(t.prefilter_time())) { return double(t.prefilter_time()); }
+  template <typename Tensor>
+  static double prefilter_time(const Tensor&, long) { return 0.0; }
+
   // trace(F^T L F) over all columns of F
   double dirichlet_energy(const Control_matrix& F) const
   {
@@ -452,6 +504,9 @@ private:
   std::vector<int> source_;
   Eigen::SparseMatrix<double> A_;
   std::vector<double> M_, L_;
+  Eigen::SparseMatrix<double> prefilter_A_;
+  Control_matrix prefiltered_X_;
+  std::string prefilter_error_;
   Dense_block previous_dX_;
 };
 
