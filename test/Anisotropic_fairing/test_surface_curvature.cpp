@@ -194,9 +194,57 @@ void loop_surfaces()
   AF_CHECK(identity <= 1e-12, "k1 + k2 = 2 H . n");
 }
 
+// The interpolating Loop torus: a regular n x m lattice (every vertex of valence 6, so every patch a
+// box spline) whose limit surface passes through the torus points; its principal curvatures against
+// the torus's at the same (u, v), converging as the lattice is refined.
+double torus_curvature_error(int n, int m, double R, double r)
+{
+  Mesh t;
+  std::vector<Mesh::Vertex_index> v;
+  const double two_pi = 6.283185307179586;
+  for(int j = 0; j < m; ++j)
+    for(int i = 0; i < n; ++i)
+    {
+      const double u = two_pi * i / n, w = two_pi * j / m;
+      v.push_back(t.add_vertex(K::Point_3((R + r * std::cos(w)) * std::cos(u), (R + r * std::cos(w)) * std::sin(u), r * std::sin(w))));
+    }
+  for(int j = 0; j < m; ++j)
+    for(int i = 0; i < n; ++i)
+    {
+      const int a = j * n + i, b = j * n + (i + 1) % n, c = ((j + 1) % m) * n + i, d = ((j + 1) % m) * n + (i + 1) % n;
+      t.add_face(v[std::size_t(a)], v[std::size_t(b)], v[std::size_t(d)]);
+      t.add_face(v[std::size_t(a)], v[std::size_t(d)], v[std::size_t(c)]);
+    }
+  AF_test::make_interpolating(t);
+  const AF::Loop_limit_surface<Mesh> s(t);
+  double worst = 0;
+  for(auto f : faces(t))
+  {
+    const auto p = s.evaluate(f, { 1. / 3, 1. / 3, 1. / 3 });
+    const auto c = s.curvature(f, { 1. / 3, 1. / 3, 1. / 3 });
+    const double rho = std::hypot(p.position.x(), p.position.y());
+    const double w = std::atan2(p.position.z(), rho - R);
+    // outward normal (the lattice is oriented like the parametrisation): k = -1/r and -cos w/(R + r cos w)
+    const double ka = -1 / r, kb = -std::cos(w) / (R + r * std::cos(w));
+    worst = std::max({ worst, std::abs(c.k1 - std::min(ka, kb)), std::abs(c.k2 - std::max(ka, kb)) });
+  }
+  return worst;
+}
+
+void loop_torus()
+{
+  const double coarse = torus_curvature_error(24, 12, 2, 0.6), fine = torus_curvature_error(48, 24, 2, 0.6);
+  const double finer = torus_curvature_error(96, 48, 2, 0.6);
+  std::printf("interpolating Loop torus (R = 2, r = 0.6): largest principal-curvature error at face centres "
+              "%.3e (24x12), %.3e (48x24), %.3e (96x48); ratios %.2f, %.2f\n", coarse, fine, finer, coarse / fine, fine / finer);
+  AF_CHECK(finer <= 5e-3 * (1 / 0.6), "torus principal curvatures agree to 0.5% of 1/r on the finest lattice");
+  AF_CHECK(coarse / fine >= 3 && fine / finer >= 3, "the error falls about fourfold as the lattice is halved");
+}
+
 int main()
 {
   analytic_surfaces();
   loop_surfaces();
+  loop_torus();
   return AF_test::report();
 }

@@ -45,11 +45,10 @@ Eigen::MatrixXd interpolating_control_values(const Mesh& mesh, const Eigen::Matr
   return lu.solve(B);
 }
 
-// Control points whose limit surface interpolates the unit-sphere vertices: X = Lambda^-1 P.
+// Replaces the points of a closed mesh by the control points whose limit points are the old points.
 template <class Mesh>
-void make_interpolating_icosphere(Mesh& mesh, int levels)
+void make_interpolating(Mesh& mesh)
 {
-  make_icosphere(mesh, levels);
   Eigen::MatrixXd P(num_vertices(mesh), 3);
   for(auto v : vertices(mesh))
   {
@@ -59,6 +58,14 @@ void make_interpolating_icosphere(Mesh& mesh, int levels)
   const Eigen::MatrixXd X = interpolating_control_values(mesh, P);
   for(auto v : vertices(mesh))
     mesh.point(v) = typename Mesh::Point(X(std::size_t(v), 0), X(std::size_t(v), 1), X(std::size_t(v), 2));
+}
+
+// Control points whose limit surface interpolates the unit-sphere vertices: X = Lambda^-1 P.
+template <class Mesh>
+void make_interpolating_icosphere(Mesh& mesh, int levels)
+{
+  make_icosphere(mesh, levels);
+  make_interpolating(mesh);
 }
 
 } // namespace AF_test
