@@ -36,13 +36,12 @@
 // The anisotropic sweep also takes 20 and 40 steps, each only while the angle still fell over the
 // previous interval (5 -> 10, 10 -> 20); the best cell is reported over all steps and over steps <= 10.
 //
-// usage: bench_denoising [DIR=<repo>/../shared/data/denoising] [MODEL_SUBSTRING] [METHODS=all] [LAMBDAS=1,2,5,10,20,50,100]
+// usage: bench_denoising [DIR=<repo>/../shared/data/denoising] [MODEL_SUBSTRING] [METHODS=loop,p1,smooth] [LAMBDAS=1,2,5,10,20,50,100]
 //                        [EPSILONS=0]
-//   METHODS: "all" or a comma-separated subset of loop, p1, smooth (both smooth_shape sweeps), aniso
+//   METHODS: "all" or a comma-separated subset of loop, p1, smooth (both smooth_shape sweeps), aniso (default: all but aniso)
 //   LAMBDAS: the lambda_rel values of the anisotropic sweep
 //   EPSILONS: prefilter times eps_rel (curvature read on M_eps, one isotropic implicit step of eps_rel l0^2;
-//             default 0: on the current surface), swept as an outer loop around LAMBDAS; needs a library
-//             whose Anisotropic_diffusion_tensor takes (lambda, relative, epsilon)
+//             default 0: on the current surface), swept as an outer loop around LAMBDAS
 
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/Real_timer.h>
@@ -499,7 +498,8 @@ int main(int argc, char** argv)
 {
   std::string dir = argc > 1 && argv[1][0] ? argv[1] : std::string(AF_SOURCE_DIR) + "/../shared/data/denoising";
   const std::string only = argc > 2 ? argv[2] : "";
-  const std::string methods = argc > 3 && argv[3][0] ? argv[3] : "all";
+  // the anisotropic sweep (7 thresholds, up to 40 steps) is opt-in: with it the 8 pairs take hours
+  const std::string methods = argc > 3 && argv[3][0] ? argv[3] : "loop,p1,smooth";
   if(argc > 4 && argv[4][0])
   {
     aniso_lambdas.clear();
@@ -715,8 +715,8 @@ int main(int argc, char** argv)
                 if(aniso_step_counts[c] <= 10) b10.consider(q, set);
               }
             }
-          std::string label = aniso_prefix(aniso_lambdas[i % aniso_lambdas.size()], aniso_epsilons[i / aniso_lambdas.size()]);
-          label = label.substr(0, label.size() - 2);
+          const double E = aniso_epsilons[i / aniso_lambdas.size()], L = aniso_lambdas[i % aniso_lambdas.size()];
+          const std::string label = (with_eps[0] ? fmt("%g", E) + ", " : std::string()) + fmt("%g", L);
           std::printf("| %s | %s | %s | %s | %s | %.1f |\n", label.c_str(), cell(b.q).c_str(), b.setting.c_str(), cell(b10.q).c_str(), b10.setting.c_str(),
                       i < t_per_lambda.size() ? t_per_lambda[i] : 0.0);
         }
