@@ -199,12 +199,7 @@ public:
     report.initial.H_integral = a.H_integral;
     if(a.degenerate) return fail(report, Fairing_status::DEGENERATE_METRIC, degenerate_message(a, 0), total);
 
-    const double scale = std::sqrt(a.area / (4 * 3.14159265358979323846));
-    const double tau = s.relative_time_step ? s.time_step * scale * scale : s.time_step;
-    const double omega = s.relative_fidelity ? s.fidelity_weight / (scale * scale) : s.fidelity_weight;
-    report.scale = scale;
-    report.time_step = tau;
-    report.fidelity_weight = omega;
+    const double scale = set_units(a.area, s, report), tau = report.time_step, omega = report.fidelity_weight;
     const Stopping_criteria& c = s.stopping;
     const double time_unit = c.relative_units ? scale * scale : 1.0;   // (28) and steady speed per this much time
     const double length_unit = c.relative_units ? scale : 1.0;
@@ -251,15 +246,7 @@ public:
       if(!dX.allFinite())
         return fail(report, Fairing_status::NON_FINITE_VALUE, "step " + std::to_string(step) + ": the solution is not finite", total);
 
-      double moved = 0;
-      for(Eigen::Index i = 0; i < nfree; ++i)
-      {
-        X.row(free_[std::size_t(i)]) += dX.row(i);
-        moved = std::max(moved, dX.row(i).head(metric_columns).norm());
-      }
-      st.step_displacement = moved;
-      for(Eigen::Index i = 0; i < n; ++i)
-        st.max_displacement = std::max(st.max_displacement, (X.row(i) - X0.row(i)).head(metric_columns).norm());
+      const double moved = move_free_rows(X, dX, X0, metric_columns, st);
 
       // the new surface: diagnostics now, and the matrices of the next step
       clock = Stopwatch();
@@ -312,12 +299,7 @@ public:
     report.initial.H_integral = a.H_integral;
     report.initial.energy = dirichlet_energy(F);
 
-    const double scale = std::sqrt(a.area / (4 * 3.14159265358979323846));
-    const double tau = s.relative_time_step ? s.time_step * scale * scale : s.time_step;
-    const double omega = s.relative_fidelity ? s.fidelity_weight / (scale * scale) : s.fidelity_weight;
-    report.scale = scale;
-    report.time_step = tau;
-    report.fidelity_weight = omega;
+    const double scale = set_units(a.area, s, report), tau = report.time_step, omega = report.fidelity_weight;
     const Stopping_criteria& c = s.stopping;
     const double time_unit = c.relative_units ? scale * scale : 1.0;
     double spread = 0;
@@ -363,14 +345,7 @@ public:
       if(!sol.ok) return fail(report, Fairing_status::SOLVER_FAILED, "step " + std::to_string(step) + ": " + sol.message, total);
       if(!dF.allFinite())
         return fail(report, Fairing_status::NON_FINITE_VALUE, "step " + std::to_string(step) + ": the solution is not finite", total);
-      double moved = 0;
-      for(Eigen::Index i = 0; i < nfree; ++i)
-      {
-        F.row(free_[std::size_t(i)]) += dF.row(i);
-        moved = std::max(moved, dF.row(i).norm());
-      }
-      st.step_displacement = moved;
-      for(Eigen::Index i = 0; i < n; ++i) st.max_displacement = std::max(st.max_displacement, (F.row(i) - F0.row(i)).norm());
+      const double moved = move_free_rows(F, dF, F0, int(k), st);
       st.area = a.area;
       st.H_integral = a.H_integral;
       st.energy = dirichlet_energy(F);
@@ -453,6 +428,32 @@ private:
   static auto prefilter_time(const Tensor& t, int) -> decltype(double(t.prefilter_time())) { return double(t.prefilter_time()); }
   template <typename Tensor>
   static double prefilter_time(const Tensor&, long) { return 0.0; }
+
+  // l = sqrt(Area / 4 pi), and tau and omega in model units, into the report; returns l
+  static double set_units(double area, const Stepper_settings& s, Fairing_report& report)
+  {
+    const double scale = std::sqrt(area / (4 * 3.14159265358979323846));
+    report.scale = scale;
+    report.time_step = s.relative_time_step ? s.time_step * scale * scale : s.time_step;
+    report.fidelity_weight = s.relative_fidelity ? s.fidelity_weight / (scale * scale) : s.fidelity_weight;
+    return scale;
+  }
+
+  // adds the free rows' displacements to X; records the step's and the total (from X0) largest motion
+  // over the first `columns` columns; returns the step's
+  double move_free_rows(Control_matrix& X, const Dense_block& dX, const Control_matrix& X0, int columns, Fairing_step& st) const
+  {
+    double moved = 0;
+    for(Eigen::Index i = 0; i < dX.rows(); ++i)
+    {
+      X.row(free_[std::size_t(i)]) += dX.row(i);
+      moved = std::max(moved, dX.row(i).head(columns).norm());
+    }
+    st.step_displacement = moved;
+    for(Eigen::Index i = 0; i < X.rows(); ++i)
+      st.max_displacement = std::max(st.max_displacement, (X.row(i) - X0.row(i)).head(columns).norm());
+    return moved;
+  }
 
   // trace(F^T L F) over all columns of F
   double dirichlet_energy(const Control_matrix& F) const
