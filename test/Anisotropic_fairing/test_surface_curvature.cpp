@@ -5,7 +5,11 @@
 //  - sphere of radius r: H = -x/r^2;
 //  - a graph surface in R^4: with nu = h = H/|H|, k1 + k2 = 2|H|, and H is normal to the tangent plane;
 //  - the limit surface of a planar lattice: zero curvature; of the interpolating icosphere: the
-//    principal curvatures lie near -1 (within the parametrisation noise loop-fem measures, [0.80, 1.32]).
+//    principal curvatures lie near -1 (within the parametrisation noise loop-fem measures, [0.80, 1.32]);
+//  - vertex curvatures (Loop_limit_surface::vertex_curvatures, hat-weighted averages of the shape
+//    operator): zero on the plane, near -1 on the icosphere at valence 5 and 6 (much nearer than the
+//    pointwise curvature next to extraordinary vertices), second-order convergent on the torus, and
+//    resample()'s curvature map (vertex values at control vertices, exact curvature elsewhere).
 
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/Surface_mesh.h>
@@ -166,7 +170,17 @@ void loop_surfaces()
     const auto c = plane.curvature(f, { 0.2, 0.3, 0.5 });
     worst = std::max({ worst, std::abs(c.k1), std::abs(c.k2), std::sqrt(c.mean_curvature_vector.squared_length()) });
   }
-  std::printf("planar lattice (with its ghost layer): largest |k| or |H| %.3g\n", worst);
+  // and at its vertices, interior and border (half stars), valences 2 to 6
+  auto planar_vertex_curvature = grid.add_property_map<Mesh::Vertex_index, AF::Loop_limit_surface<Mesh>::Curvature>("v:c").first;
+  plane.vertex_curvatures(planar_vertex_curvature);
+  const K::Vector_3 plane_normal = K::Vector_3(-0.2, 0.4, 1) / std::sqrt(1.2);
+  for(auto x : vertices(grid))
+  {
+    const auto& c = planar_vertex_curvature[x];
+    worst = std::max({ worst, std::abs(c.k1), std::abs(c.k2), std::sqrt(c.mean_curvature_vector.squared_length()),
+                       std::abs(c.d1 * plane_normal), std::abs(c.d2 * plane_normal), std::abs(c.d1.squared_length() - 1) });
+  }
+  std::printf("planar lattice (with its ghost layer): largest |k| or |H| at points and vertices, |d . n|, ||d| - 1|: %.3g\n", worst);
   AF_CHECK(worst <= 1e-13, "the limit surface of a planar lattice is flat");
 
   // the interpolating icosphere: outward-oriented, so k1, k2 near -1
@@ -192,12 +206,65 @@ void loop_surfaces()
   AF_CHECK(kmin >= -1.35 && kmax <= -0.75, "principal curvatures within the parametrisation noise of -1");
   AF_CHECK(std::abs(mean + 1) <= 0.02, "mean curvature about -1");
   AF_CHECK(identity <= 1e-12, "k1 + k2 = 2 H . n");
+
+  // vertex curvatures: the 12 vertices of valence 5, where the limit curvature is not finite, get
+  // the same kind of value as the others; both classes near -1, H along the limit normal
+  auto vc = sphere.add_property_map<Mesh::Vertex_index, AF::Loop_limit_surface<Mesh>::Curvature>("v:c").first;
+  auto vn = sphere.add_property_map<Mesh::Vertex_index, K::Vector_3>("v:n").first;
+  s.vertex_curvatures(vc);
+  s.limit_normals(vn);
+  double lo[2] = { 0, 0 }, hi[2] = { -10, -10 }, normal_error = 0;
+  for(auto x : vertices(sphere))
+  {
+    const int e = degree(x, sphere) == 6 ? 0 : 1;
+    lo[e] = std::min(lo[e], vc[x].k1);
+    hi[e] = std::max(hi[e], vc[x].k2);
+    normal_error = std::max({ normal_error, (vc[x].mean_curvature_vector - 0.5 * (vc[x].k1 + vc[x].k2) * vn[x]).squared_length(),
+                              std::abs(vc[x].d1 * vn[x]), std::abs(vc[x].d2 * vn[x]), std::abs(vc[x].d1 * vc[x].d2),
+                              (CGAL::cross_product(vc[x].d1, vc[x].d2) - vn[x]).squared_length() });
+  }
+  std::printf("  its vertex curvatures: valence 6 in [%.4f, %.4f], valence 5 in [%.4f, %.4f]; frame error %.2g\n",
+              lo[0], hi[0], lo[1], hi[1], normal_error);
+  AF_CHECK(lo[0] >= -1.35 && hi[0] <= -0.75 && lo[1] >= -1.35 && hi[1] <= -0.75, "vertex curvatures near -1, extraordinary ones too");
+  AF_CHECK(normal_error <= 1e-14, "H = (k1 + k2)/2 n, and (d1, d2, n) a right-handed orthonormal frame");
+
+  // Why a vertex gets an average even where the limit curvature is finite: next to the extraordinary
+  // vertices the pointwise curvature of the Loop surface keeps an error that refinement does not remove.
+  for(int level = 3; level <= 4; ++level)
+  {
+    Mesh fine;
+    AF_test::make_interpolating_icosphere(fine, level);
+    const AF::Loop_limit_surface<Mesh> f(fine);
+    auto c = fine.add_property_map<Mesh::Vertex_index, AF::Loop_limit_surface<Mesh>::Curvature>("v:c").first;
+    f.vertex_curvatures(c);
+    double averaged[2] = { 0, 0 }, pointwise = 0;
+    for(auto x : vertices(fine))
+    {
+      const int e = degree(x, fine) == 6 ? 0 : 1;
+      averaged[e] = std::max({ averaged[e], std::abs(c[x].k1 + 1), std::abs(c[x].k2 + 1) });
+      if(e == 1) continue;
+      const auto g = face(halfedge(x, fine), fine);
+      std::array<double, 3> corner{ { 0, 0, 0 } };
+      int k = 0;
+      for(auto y : vertices_around_face(halfedge(g, fine), fine)) corner[std::size_t(k++)] = y == x ? 1 : 0;
+      const auto fc = f.curvature(g, corner);
+      pointwise = std::max({ pointwise, std::abs(fc.k1 + 1), std::abs(fc.k2 + 1) });
+    }
+    std::printf("  interpolating icosphere (%zu): vertex curvature error, valence 5 %.4f, valence 6 %.4f; "
+                "pointwise limit curvature at valence 6 %.4f\n", num_vertices(fine), averaged[1], averaged[0], pointwise);
+    AF_CHECK(averaged[0] <= 0.05 && averaged[1] <= 0.05, "vertex curvatures within 0.05 of -1");
+    AF_CHECK(pointwise >= 3 * averaged[0], "the average is much closer to -1 than the pointwise value next to extraordinary vertices");
+  }
 }
 
 // The interpolating Loop torus: a regular n x m lattice (every vertex of valence 6, so every patch a
 // box spline) whose limit surface passes through the torus points; its principal curvatures against
-// the torus's at the same (u, v), converging as the lattice is refined.
-double torus_curvature_error(int n, int m, double R, double r)
+// the torus's at the same (u, v), converging as the lattice is refined. At face centres the exact
+// limit curvature (`curvature()`), at the vertices the hat-weighted average (`vertex_curvatures()`,
+// also through `resample()`'s curvature map), whose directions must follow the meridian and the parallel.
+struct Torus_errors { double centre, vertex, direction, resampled_control, resampled_new; };
+
+Torus_errors torus_curvature_error(int n, int m, double R, double r)
 {
   Mesh t;
   std::vector<Mesh::Vertex_index> v;
@@ -216,29 +283,83 @@ double torus_curvature_error(int n, int m, double R, double r)
       t.add_face(v[std::size_t(a)], v[std::size_t(d)], v[std::size_t(c)]);
     }
   AF_test::make_interpolating(t);
-  const AF::Loop_limit_surface<Mesh> s(t);
-  double worst = 0;
+  typedef AF::Loop_limit_surface<Mesh> Limit;
+  const Limit s(t);
+  // outward normal (the lattice is oriented like the parametrisation): k = -1/r and -cos w/(R + r cos w)
+  auto principal = [&](const K::Point_3& p) {
+    const double w = std::atan2(p.z(), std::hypot(p.x(), p.y()) - R);
+    return std::array<double, 2>{ { -1 / r, -std::cos(w) / (R + r * std::cos(w)) } };
+  };
+  Torus_errors e{ 0, 0, 0, 0, 0 };
   for(auto f : faces(t))
   {
     const auto p = s.evaluate(f, { 1. / 3, 1. / 3, 1. / 3 });
     const auto c = s.curvature(f, { 1. / 3, 1. / 3, 1. / 3 });
-    const double rho = std::hypot(p.position.x(), p.position.y());
-    const double w = std::atan2(p.position.z(), rho - R);
-    // outward normal (the lattice is oriented like the parametrisation): k = -1/r and -cos w/(R + r cos w)
-    const double ka = -1 / r, kb = -std::cos(w) / (R + r * std::cos(w));
-    worst = std::max({ worst, std::abs(c.k1 - std::min(ka, kb)), std::abs(c.k2 - std::max(ka, kb)) });
+    const auto k = principal(p.position);
+    e.centre = std::max({ e.centre, std::abs(c.k1 - std::min(k[0], k[1])), std::abs(c.k2 - std::max(k[0], k[1])) });
   }
-  return worst;
+  auto limit_point = t.add_property_map<Mesh::Vertex_index, K::Point_3>("v:limit").first;
+  auto curvature = t.add_property_map<Mesh::Vertex_index, Limit::Curvature>("v:curvature").first;
+  s.limit_positions(limit_point);
+  s.vertex_curvatures(curvature);
+  for(auto x : vertices(t))
+  {
+    const K::Point_3 p = limit_point[x];
+    const auto k = principal(p);
+    const Limit::Curvature& c = curvature[x];
+    e.vertex = std::max({ e.vertex, std::abs(c.k1 - std::min(k[0], k[1])), std::abs(c.k2 - std::max(k[0], k[1])) });
+    // k1 = -1/r belongs to the meridian: d1 is orthogonal to the parallel's tangent (-y, x, 0)
+    const double rho = std::hypot(p.x(), p.y());
+    const K::Vector_3 parallel(-p.y() / rho, p.x() / rho, 0);
+    e.direction = std::max({ e.direction, std::abs(c.d1 * parallel), std::abs(std::abs(c.d2 * parallel) - 1),
+                             std::abs(c.mean_curvature_vector.squared_length() - 0.25 * (c.k1 + c.k2) * (c.k1 + c.k2)) });
+  }
+  // resample(): the control vertices first, with the vertex values, then exact curvature elsewhere
+  Mesh dense;
+  auto dense_curvature = dense.add_property_map<Mesh::Vertex_index, Limit::Curvature>("v:curvature").first;
+  s.resample(1, dense, AF::parameters::vertex_curvature_map(dense_curvature));
+  std::size_t i = 0;
+  for(auto x : vertices(dense))
+  {
+    const Limit::Curvature& c = dense_curvature[x];
+    if(i < num_vertices(t))
+    {
+      const Limit::Curvature& cv = curvature[Mesh::Vertex_index(Mesh::size_type(i))];
+      e.resampled_control = std::max({ e.resampled_control, std::abs(c.k1 - cv.k1), std::abs(c.k2 - cv.k2), (c.d1 - cv.d1).squared_length() });
+    }
+    else
+    {
+      const auto k = principal(dense.point(x));
+      e.resampled_new = std::max({ e.resampled_new, std::abs(c.k1 - std::min(k[0], k[1])), std::abs(c.k2 - std::max(k[0], k[1])) });
+    }
+    ++i;
+  }
+  return e;
 }
 
 void loop_torus()
 {
-  const double coarse = torus_curvature_error(24, 12, 2, 0.6), fine = torus_curvature_error(48, 24, 2, 0.6);
-  const double finer = torus_curvature_error(96, 48, 2, 0.6);
+  const Torus_errors coarse = torus_curvature_error(24, 12, 2, 0.6), fine = torus_curvature_error(48, 24, 2, 0.6);
+  const Torus_errors finer = torus_curvature_error(96, 48, 2, 0.6);
   std::printf("interpolating Loop torus (R = 2, r = 0.6): largest principal-curvature error at face centres "
-              "%.3e (24x12), %.3e (48x24), %.3e (96x48); ratios %.2f, %.2f\n", coarse, fine, finer, coarse / fine, fine / finer);
-  AF_CHECK(finer <= 5e-3 * (1 / 0.6), "torus principal curvatures agree to 0.5% of 1/r on the finest lattice");
-  AF_CHECK(coarse / fine >= 3 && fine / finer >= 3, "the error falls about fourfold as the lattice is halved");
+              "%.3e (24x12), %.3e (48x24), %.3e (96x48); ratios %.2f, %.2f\n", coarse.centre, fine.centre, finer.centre,
+              coarse.centre / fine.centre, fine.centre / finer.centre);
+  AF_CHECK(finer.centre <= 5e-3 * (1 / 0.6), "torus principal curvatures agree to 0.5% of 1/r on the finest lattice");
+  AF_CHECK(coarse.centre / fine.centre >= 3 && fine.centre / finer.centre >= 3, "the error falls about fourfold as the lattice is halved");
+  std::printf("  at the vertices (vertex_curvatures): %.3e, %.3e, %.3e; ratios %.2f, %.2f; direction error %.2e, %.2e, %.2e\n",
+              coarse.vertex, fine.vertex, finer.vertex, coarse.vertex / fine.vertex, fine.vertex / finer.vertex,
+              coarse.direction, fine.direction, finer.direction);
+  AF_CHECK(finer.vertex <= 5e-3 * (1 / 0.6), "vertex curvatures agree to 0.5% of 1/r on the finest lattice");
+  AF_CHECK(coarse.vertex / fine.vertex >= 3 && fine.vertex / finer.vertex >= 3, "the vertex error is second order too");
+  AF_CHECK(finer.direction <= 1.5e-3 && coarse.direction / fine.direction >= 3 && fine.direction / finer.direction >= 3,
+           "vertex principal directions along meridian and parallel (second order), |H| = |k1 + k2|/2");
+  std::printf("  resample(1) curvature map: control vertices differ from vertex_curvatures by %.1e; error at the new vertices "
+              "%.3e, %.3e, %.3e\n", std::max({ coarse.resampled_control, fine.resampled_control, finer.resampled_control }),
+              coarse.resampled_new, fine.resampled_new, finer.resampled_new);
+  AF_CHECK(std::max({ coarse.resampled_control, fine.resampled_control, finer.resampled_control }) == 0,
+           "resample's curvature map holds vertex_curvatures() at the control vertices");
+  AF_CHECK(finer.resampled_new <= 5e-3 * (1 / 0.6) && coarse.resampled_new / fine.resampled_new >= 3 && fine.resampled_new / finer.resampled_new >= 3,
+           "resample's curvature map: the exact limit curvature at the new vertices (second-order accurate)");
 }
 
 int main()

@@ -13,6 +13,7 @@
 #include <CGAL/Anisotropic_fairing/internal/Indexed_mesh.h>
 #include <CGAL/Anisotropic_fairing/internal/Limit_resampler.h>
 #include <CGAL/Anisotropic_fairing/internal/Patch_cache.h>
+#include <CGAL/Anisotropic_fairing/internal/Vertex_curvature.h>
 #include <CGAL/Anisotropic_fairing/internal/Vertex_limit_masks.h>
 
 #include <CGAL/Kernel_traits.h>
@@ -188,7 +189,7 @@ public:
   struct Curvature
   {
     Vector_3 mean_curvature_vector;   ///< \f$H = \frac12\Delta_M x\f$ (for the unit sphere, \f$-x\f$)
-    double k1, k2;                    ///< principal curvatures, \f$k_1 \leq k_2\f$, w.r.t. the oriented normal (negative on a convex surface oriented outward)
+    double k1 = 0, k2 = 0;            ///< principal curvatures, \f$k_1 \leq k_2\f$, w.r.t. the oriented normal (negative on a convex surface oriented outward)
     Vector_3 d1, d2;                  ///< unit principal directions
   };
 
@@ -196,32 +197,14 @@ public:
   the curvature of the limit surface at the point of face `f` with barycentric coordinates `b`, with
   respect to the normal oriented like the face. At an extraordinary vertex itself (barycentric
   coordinates (1,0,0) etc. at a vertex of valence other than 6) the Loop limit surface has no finite
-  curvature in general; evaluate next to it instead.
+  curvature in general; evaluate next to it instead, or use `vertex_curvatures()`.
   \throws Input_error as `evaluate()`.
   */
   Curvature curvature(face_descriptor f, const Barycentric_coordinates& b) const
   {
-    const Limit_point p = evaluate(f, b);
-    const double t1[3] = { p.d1.x(), p.d1.y(), p.d1.z() }, t2[3] = { p.d2.x(), p.d2.y(), p.d2.z() };
-    const double t11[3] = { p.d11.x(), p.d11.y(), p.d11.z() }, t12[3] = { p.d12.x(), p.d12.y(), p.d12.z() },
-                 t22[3] = { p.d22.x(), p.d22.y(), p.d22.z() };
-    Quadrature_point_geometry q;
-    q.face = indexed_->index(f);
-    q.point = -1;
-    q.dimension = 3;
-    q.t1 = t1; q.t2 = t2; q.t11 = t11; q.t12 = t12; q.t22 = t22;
-    q.g11 = p.d1 * p.d1; q.g12 = p.d1 * p.d2; q.g22 = p.d2 * p.d2;
-    q.det = q.g11 * q.g22 - q.g12 * q.g12;
-    q.ring = nullptr; q.basis = nullptr; q.ring_size = 0;
-    double H[3];
-    mean_curvature_vector(q, H);
-    const Principal_curvatures pc = principal_curvatures(q);
-    auto direction = [&](const std::array<double, 2>& c) {
-      const Vector_3 e = c[0] * p.d1 + c[1] * p.d2;
-      const double l = std::sqrt(e * e);
-      return l > 0 ? e / l : e;
-    };
-    return Curvature{ Vector_3(H[0], H[1], H[2]), pc.k1, pc.k2, direction(pc.c1), direction(pc.c2) };
+    const std::size_t fi = indexed_->index(f);
+    check_barycentric(fi, b);
+    return curvature_at(fi, b[1] / (b[0] + b[1] + b[2]), b[2] / (b[0] + b[1] + b[2]));
   }
 
   /*!
@@ -309,6 +292,33 @@ public:
     }
   }
 
+  /*!
+  writes the curvature of the limit surface at every control vertex into `out`, a
+  `WritablePropertyMap` with `vertex_descriptor` key and `Curvature` value.
+
+  At a regular vertex (valence 6, on a border 5 incident triangles) this is the exact curvature of the
+  limit surface at the vertex's limit point, as `curvature()` gives it there. At an extraordinary
+  vertex the Loop limit surface has no finite curvature in general (it is unbounded for valence > 6,
+  and for valence 3 to 5 its limit depends on the direction of approach), so such a vertex (and a
+  border vertex with another number of triangles) gets the average of the shape operator
+  \f$S = k_1 e_1 e_1^T + k_2 e_2 e_2^T\f$ over the limit patches of its incident faces, weighted by
+  the vertex's hat function \f$\xi_v\f$ (its barycentric coordinate in each face),
+  \f[ S_v = \frac{\int \xi_v\, S\, dA}{\int \xi_v\, dA}, \f]
+  restricted to the limit tangent plane at the vertex (the normal of `limit_normals()`) and
+  diagonalised there, with `mean_curvature_vector` \f$= \frac12(k_1 + k_2)\f$ times the limit normal.
+  The integrals use the quadrature chosen at construction; on a smooth surface sampled by a regular
+  mesh the average is a second-order approximation of the curvature at the vertex (the star is
+  symmetric to first order). A border vertex averages over its half star. In both cases
+  `k1` \f$\leq\f$ `k2` with unit tangent directions `d1`, `d2` (\f$d_1\times d_2\f$ is the limit
+  normal). A vertex on no face gets zero curvature and zero vectors.
+  */
+  template <typename CurvatureMap>
+  void vertex_curvatures(CurvatureMap out) const
+  {
+    const std::vector<internal::Vertex_curvature_value> c = vertex_curvature_values();
+    for(std::size_t i = 0; i < number_of_vertices(); ++i) put(out, indexed_->vertex(i), to_curvature(c[i]));
+  }
+
   /// writes the limit value of an attribute at every control vertex into `out` (same key and value type as `in`).
   template <typename AttributeMap, typename AttributeOutputMap>
   void limit_values(AttributeMap in, AttributeOutputMap out) const
@@ -378,6 +388,13 @@ public:
     \cgalParamNEnd
     \cgalParamNBegin{vertex_normal_map}
       \cgalParamDescription{if given, receives the unit normal of the limit surface at each new vertex}
+      \cgalParamDefault{unused}
+    \cgalParamNEnd
+    \cgalParamNBegin{vertex_curvature_map}
+      \cgalParamDescription{if given, a `WritablePropertyMap` with `out`'s vertex descriptor as key and
+        `Curvature` as value that receives the curvature of the limit surface at each new vertex: at the
+        vertices of the control mesh the value of `vertex_curvatures()`, at the others (inside edges
+        and faces, where the limit surface is smooth) the exact value of `curvature()`}
       \cgalParamDefault{unused}
     \cgalParamNEnd
   \cgalNamedParamsEnd
@@ -452,13 +469,61 @@ private:
     return E;
   }
 
-  void stencil_at(std::size_t fi, const Barycentric_coordinates& b, internal::Stencil& s) const
+  static void check_barycentric(std::size_t fi, const Barycentric_coordinates& b)
   {
     const double sum = b[0] + b[1] + b[2];
     if(!(b[0] >= 0 && b[1] >= 0 && b[2] >= 0) || !(std::abs(sum - 1.0) <= 1e-12))
       throw Input_error(Input_error::INVALID_PARAMETER, fi,
                         "barycentric coordinates must be non-negative and sum to 1");
+  }
+
+  void stencil_at(std::size_t fi, const Barycentric_coordinates& b, internal::Stencil& s) const
+  {
+    check_barycentric(fi, b);
+    const double sum = b[0] + b[1] + b[2];
     cache_->root_patch(cache_->category(fi)).stencil(b[1] / sum, b[2] / sum, s);
+  }
+
+  // the curvature at parameters (xi1, xi2) of face fi (internal index)
+  Curvature curvature_at(std::size_t fi, double xi1, double xi2) const
+  {
+    internal::Stencil s;
+    cache_->root_patch(cache_->category(fi)).stencil(xi1, xi2, s);
+    const int* ring = cache_->ring(fi);
+    double t[5][3] = {};
+    for(int r = 0; r < 5; ++r)
+      for(int k = 0; k < s.m; ++k)
+        for(int c = 0; c < 3; ++c) t[r][c] += s.row(internal::D1 + r)[k] * X_(ring[k], c);
+    Quadrature_point_geometry q;
+    q.face = fi;
+    q.point = -1;
+    q.dimension = 3;
+    q.t1 = t[0]; q.t2 = t[1]; q.t11 = t[2]; q.t12 = t[3]; q.t22 = t[4];
+    q.g11 = t[0][0] * t[0][0] + t[0][1] * t[0][1] + t[0][2] * t[0][2];
+    q.g12 = t[0][0] * t[1][0] + t[0][1] * t[1][1] + t[0][2] * t[1][2];
+    q.g22 = t[1][0] * t[1][0] + t[1][1] * t[1][1] + t[1][2] * t[1][2];
+    q.det = q.g11 * q.g22 - q.g12 * q.g12;
+    q.ring = nullptr; q.basis = nullptr; q.ring_size = 0;
+    double H[3];
+    mean_curvature_vector(q, H);
+    const Principal_curvatures pc = principal_curvatures(q);
+    auto direction = [&](const std::array<double, 2>& c) {
+      const Vector_3 e(c[0] * t[0][0] + c[1] * t[1][0], c[0] * t[0][1] + c[1] * t[1][1], c[0] * t[0][2] + c[1] * t[1][2]);
+      const double l = std::sqrt(e * e);
+      return l > 0 ? e / l : e;
+    };
+    return Curvature{ Vector_3(H[0], H[1], H[2]), pc.k1, pc.k2, direction(pc.c1), direction(pc.c2) };
+  }
+
+  std::vector<internal::Vertex_curvature_value> vertex_curvature_values() const
+  {
+    return internal::averaged_vertex_curvatures(indexed_->topology(), *cache_, number_of_vertices(), X_);
+  }
+
+  Curvature to_curvature(const internal::Vertex_curvature_value& c) const
+  {
+    return Curvature{ Vector_3(c.H[0], c.H[1], c.H[2]), c.k1, c.k2,
+                      Vector_3(c.d1[0], c.d1[1], c.d1[2]), Vector_3(c.d2[0], c.d2[1], c.d2[2]) };
   }
 
   template <typename OutputMesh>
@@ -488,6 +553,11 @@ private:
     auto onm = choose_parameter(get_parameter(np, CGAL::internal_np::vertex_normal_map),
                                 CGAL::Constant_property_map<out_vertex, Out_vector>(Out_vector(0, 0, 0)));
     const bool with_normals = !is_default_parameter<NamedParameters, CGAL::internal_np::vertex_normal_map_t>::value;
+    auto ocm = choose_parameter(get_parameter(np, internal_np::vertex_curvature_map),
+                                CGAL::Constant_property_map<out_vertex, Curvature>(Curvature()));
+    const bool with_curvatures = !is_default_parameter<NamedParameters, internal_np::vertex_curvature_map_t>::value;
+    std::vector<internal::Vertex_curvature_value> at_vertices;
+    if(with_curvatures) at_vertices = vertex_curvature_values();
 
     std::vector<out_vertex> created;
     created.reserve(std::size_t(r.positions.rows()));
@@ -496,6 +566,11 @@ private:
       out_vertex v = add_vertex(out);
       put(ovpm, v, Out_point(r.positions(i, 0), r.positions(i, 1), r.positions(i, 2)));
       if(with_normals) put(onm, v, Out_vector(r.normals(i, 0), r.normals(i, 1), r.normals(i, 2)));
+      if(with_curvatures)
+      {
+        if(std::size_t(i) < number_of_vertices()) put(ocm, v, to_curvature(at_vertices[std::size_t(i)]));
+        else put(ocm, v, curvature_at(r.face[std::size_t(i)], r.parameter[std::size_t(i)][0], r.parameter[std::size_t(i)][1]));
+      }
       write_attribute(std::size_t(i), v);
       created.push_back(v);
     }

@@ -20,3 +20,4 @@ CGAL_AF_add_named_parameter(attribute_mode_t,            attribute_mode,        
 CGAL_AF_add_named_parameter(attribute_weight_t,          attribute_weight,          attribute_weight)
 CGAL_AF_add_named_parameter(solver_tolerance_t,          solver_tolerance,          solver_tolerance)
 CGAL_AF_add_named_parameter(solver_maximum_iterations_t, solver_maximum_iterations, solver_maximum_iterations)
+CGAL_AF_add_named_parameter(vertex_curvature_map_t,      vertex_curvature_map,      vertex_curvature_map)

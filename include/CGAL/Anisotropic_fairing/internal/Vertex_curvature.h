@@ -1,0 +1,144 @@
+// Copyright (c) 2026 Anisotropic_fairing developers.
+// SPDX-License-Identifier: GPL-3.0-or-later
+//
+// Curvature of the limit surface attributed to a control vertex where it has none. The Loop limit
+// surface has no finite curvature at an extraordinary vertex in general (unbounded for valence > 6, a flat point with
+// direction-dependent limits for valence 3-5), so a vertex gets the average of the shape operator over
+// the limit patches of its incident faces, weighted by its hat function (its barycentric coordinate):
+//   S_v = int xi_v S dA / int xi_v dA,   S = k1 e1 e1^T + k2 e2 e2^T (3x3, ambient),
+// then restricted to the limit tangent plane at the vertex (closed-form tangent masks) and
+// diagonalised there. The singularities are integrable, the quadrature points lie inside the faces,
+// and on a smooth surface the average is second-order accurate (the star is symmetric to first order).
+
+#ifndef CGAL_ANISOTROPIC_FAIRING_INTERNAL_VERTEX_CURVATURE_H
+#define CGAL_ANISOTROPIC_FAIRING_INTERNAL_VERTEX_CURVATURE_H
+
+#include <CGAL/Anisotropic_fairing/Quadrature_point_geometry.h>
+#include <CGAL/Anisotropic_fairing/Surface_curvature.h>
+#include <CGAL/Anisotropic_fairing/internal/Control_matrix.h>
+#include <CGAL/Anisotropic_fairing/internal/Patch_cache.h>
+#include <CGAL/Anisotropic_fairing/internal/Triangle_topology.h>
+#include <CGAL/Anisotropic_fairing/internal/Vertex_limit_masks.h>
+
+#include <array>
+#include <cmath>
+#include <vector>
+
+namespace CGAL {
+namespace Anisotropic_fairing {
+namespace internal {
+
+struct Vertex_curvature_value
+{
+  std::array<double, 3> H{ { 0, 0, 0 } };     // (k1 + k2)/2 times the limit normal
+  double k1 = 0, k2 = 0;                       // k1 <= k2, w.r.t. the oriented limit normal
+  std::array<double, 3> d1{ { 0, 0, 0 } }, d2{ { 0, 0, 0 } };   // unit, tangent to the limit surface
+};
+
+/// Curvatures of the first `vertices` vertices of `topo` (the real ones; X holds the extended
+/// geometry, 3 columns) from the quadrature points of the faces of `cache`. Vertices on no face get zeros.
+inline std::vector<Vertex_curvature_value>
+averaged_vertex_curvatures(const Triangle_topology& topo, const Patch_cache& cache, std::size_t vertices, const Control_matrix& X)
+{
+  std::vector<std::array<double, 6>> S(vertices, std::array<double, 6>{ { 0, 0, 0, 0, 0, 0 } });   // xx xy xz yy yz zz
+  std::vector<double> W(vertices, 0.0);
+  for(std::size_t f = 0; f < cache.number_of_faces(); ++f)
+  {
+    const int cat = cache.category(f), m = cache.ring_size(f);
+    const int* ring = cache.ring(f);
+    const std::vector<Quadrature_point>& points = cache.quadrature_points(cat);
+    for(std::size_t q = 0; q < points.size(); ++q)
+    {
+      const Quadrature_point& qp = points[q];
+      double t[5][3] = {};
+      for(int r = 0; r < 5; ++r)
+        for(int k = 0; k < m; ++k)
+        {
+          const double s = qp.stencil.row(D1 + r)[k];
+          for(int c = 0; c < 3; ++c) t[r][c] += s * X(ring[k], c);
+        }
+      Quadrature_point_geometry g;
+      g.face = f; g.point = int(q); g.dimension = 3;
+      g.t1 = t[0]; g.t2 = t[1]; g.t11 = t[2]; g.t12 = t[3]; g.t22 = t[4];
+      g.g11 = t[0][0] * t[0][0] + t[0][1] * t[0][1] + t[0][2] * t[0][2];
+      g.g12 = t[0][0] * t[1][0] + t[0][1] * t[1][1] + t[0][2] * t[1][2];
+      g.g22 = t[1][0] * t[1][0] + t[1][1] * t[1][1] + t[1][2] * t[1][2];
+      g.det = g.g11 * g.g22 - g.g12 * g.g12;
+      g.ring = nullptr; g.basis = nullptr; g.ring_size = 0;
+      if(!(g.det > 0) || !std::isfinite(g.det)) continue;
+      const Principal_curvatures pc = principal_curvatures(g);
+      double e[2][3];
+      for(int c = 0; c < 3; ++c)
+      {
+        e[0][c] = pc.c1[0] * t[0][c] + pc.c1[1] * t[1][c];
+        e[1][c] = pc.c2[0] * t[0][c] + pc.c2[1] * t[1][c];
+      }
+      const double k[2] = { pc.k1, pc.k2 };
+      std::array<double, 6> s{ { 0, 0, 0, 0, 0, 0 } };
+      for(int a = 0; a < 2; ++a)
+      {
+        s[0] += k[a] * e[a][0] * e[a][0]; s[1] += k[a] * e[a][0] * e[a][1]; s[2] += k[a] * e[a][0] * e[a][2];
+        s[3] += k[a] * e[a][1] * e[a][1]; s[4] += k[a] * e[a][1] * e[a][2]; s[5] += k[a] * e[a][2] * e[a][2];
+      }
+      const double area = qp.weight * std::sqrt(g.det);
+      const double hat[3] = { 1 - qp.xi1 - qp.xi2, qp.xi1, qp.xi2 };   // ring starts with the face's corners
+      for(int corner = 0; corner < 3; ++corner)
+      {
+        const std::size_t v = std::size_t(ring[corner]);
+        if(v >= vertices) continue;
+        const double w = area * hat[corner];
+        W[v] += w;
+        for(int i = 0; i < 6; ++i) S[v][std::size_t(i)] += w * s[std::size_t(i)];
+      }
+    }
+  }
+
+  std::vector<Vertex_curvature_value> out(vertices);
+  for(std::size_t v = 0; v < vertices; ++v)
+  {
+    if(!(W[v] > 0)) continue;
+    double n[3];
+    vertex_limit_normal(topo, X, int(v), n);
+    // a tangent basis u1, u2 of the limit tangent plane
+    const double a[3] = { std::abs(n[0]) < 0.9 ? 1.0 : 0.0, std::abs(n[0]) < 0.9 ? 0.0 : 1.0, 0.0 };
+    double u1[3], u2[3];
+    cross3(n, a, u1);
+    normalize3(u1);
+    cross3(n, u1, u2);
+    const std::array<double, 6>& s = S[v];
+    auto apply = [&](const double* x, double* y) {
+      y[0] = (s[0] * x[0] + s[1] * x[1] + s[2] * x[2]) / W[v];
+      y[1] = (s[1] * x[0] + s[3] * x[1] + s[4] * x[2]) / W[v];
+      y[2] = (s[2] * x[0] + s[4] * x[1] + s[5] * x[2]) / W[v];
+    };
+    double y1[3], y2[3];
+    apply(u1, y1);
+    apply(u2, y2);
+    const double s11 = u1[0] * y1[0] + u1[1] * y1[1] + u1[2] * y1[2];
+    const double s12 = 0.5 * (u2[0] * y1[0] + u2[1] * y1[1] + u2[2] * y1[2] + u1[0] * y2[0] + u1[1] * y2[1] + u1[2] * y2[2]);
+    const double s22 = u2[0] * y2[0] + u2[1] * y2[1] + u2[2] * y2[2];
+    const double mean = 0.5 * (s11 + s22), dev = std::hypot(0.5 * (s11 - s22), s12);
+    Vertex_curvature_value& r = out[v];
+    r.k1 = mean - dev;
+    r.k2 = mean + dev;
+    double c1x, c1y;   // eigenvector of k1 in (u1, u2), from the better conditioned row
+    if(dev == 0) { c1x = 1; c1y = 0; }
+    else if(s11 - r.k1 >= s22 - r.k1) { c1x = -s12; c1y = s11 - r.k1; }
+    else { c1x = s22 - r.k1; c1y = -s12; }
+    const double l = std::hypot(c1x, c1y);
+    c1x /= l; c1y /= l;
+    for(int c = 0; c < 3; ++c)
+    {
+      r.H[std::size_t(c)] = mean * n[c];
+      r.d1[std::size_t(c)] = c1x * u1[c] + c1y * u2[c];
+      r.d2[std::size_t(c)] = -c1y * u1[c] + c1x * u2[c];
+    }
+  }
+  return out;
+}
+
+} // namespace internal
+} // namespace Anisotropic_fairing
+} // namespace CGAL
+
+#endif // CGAL_ANISOTROPIC_FAIRING_INTERNAL_VERTEX_CURVATURE_H
