@@ -16,10 +16,14 @@
 //       the driver uses them (numbering, locality ordering, element set-up, stepper set-up, one
 //       assembly with TBB and with one thread, the statistics-only assembly of the last step, limit
 //       evaluation). Internal API: update with the driver.
+//   (e) what the diffusion tensor costs per step: isotropic, anisotropic (lambda_rel 1) on the current
+//       surface, and anisotropic with the prefilter M_eps (eps_rel 2e-3: one more isotropic assembly
+//       and CG solve per step, counted in the step's assemble_seconds), 3 steps of tau_rel 1e-3 with
+//       CONJUGATE_GRADIENT, on the Fandisk0.3 noisy mesh and the 144k fertility; medians of RUNS.
 //
-// (a) and (c) use the library's default solver tolerance; (b) sets 1e-8 explicitly.
+// (a), (c) and (e) use the library's default solver tolerance; (b) sets 1e-8 explicitly.
 //
-// usage: bench_step_speed [DATA_DIR=<repo>/../shared/data] [PARTS=uabcd] [RUNS=5]
+// usage: bench_step_speed [DATA_DIR=<repo>/../shared/data] [PARTS=uabcde] [RUNS=5]
 
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/Real_timer.h>
@@ -453,10 +457,65 @@ void part_breakdown(const std::string& dir, int runs)
   std::printf("\nA one-step call assembles at X_0 (matrices and statistics) and at X_1 (statistics only: the step's area, energy, int |H|^2 and the stopping test).\n");
 }
 
+// ---------------------------------------------------------------------------------------------
+// (e) the cost of the diffusion tensor
+void part_tensor(const std::string& dir, int runs)
+{
+  std::printf("\n## (e) Cost of the diffusion tensor per step: 3 steps of tau_rel 1e-3, CONJUGATE_GRADIENT, median of %d runs, seconds\n\n"
+              "assemble: per step, mean of the 3 steps' assemble_seconds (with the prefilter: its isotropic assembly and CG solve too);"
+              " solve: per step, mean solve_seconds; CG its: the steps' iterations.\n\n", runs);
+  std::printf("| mesh | tensor | whole call | assemble / step | solve / step | CG its | whole / isotropic |\n"
+              "|---|---|---:|---:|---:|---|---:|\n");
+  struct Input { const char* file; int sub; };
+  for(const Input& in : { Input{ "denoising/Fandisk0.3/Noisy.obj", 0 }, Input{ "fertility.off", 2 } })
+  {
+    Named_mesh s;
+    if(!load(dir, in.file, in.sub, s)) continue;
+    const std::string label = s.name + " (" + sizes(s.mesh) + ")";
+    struct Variant { const char* name; AF::Anisotropic_diffusion_tensor tensor; bool isotropic; };
+    const Variant variants[] = { { "isotropic", AF::Anisotropic_diffusion_tensor(), true },
+                                 { "anisotropic, lambda_rel 1", AF::Anisotropic_diffusion_tensor(1, true, 0), false },
+                                 { "anisotropic, lambda_rel 1, eps_rel 2e-3", AF::Anisotropic_diffusion_tensor(1, true, 2e-3), false } };
+    double isotropic_whole = 0;
+    for(const Variant& v : variants)
+    {
+      std::vector<double> whole, assemble, solve;
+      std::string its, failure;
+      for(int r = 0; r < runs; ++r)
+      {
+        Mesh m = s.mesh;
+        double wall = 0;
+        const auto np = AF::parameters::relative_time_step(1e-3).number_of_iterations(3)
+                          .stopping_criteria(AF::Stopping_criteria::none())
+                          .linear_solver(AF::Linear_solver::CONJUGATE_GRADIENT);
+        const AF::Fairing_report rep = v.isotropic ? run(m, np.diffusion_tensor(AF::Isotropic_diffusion_tensor()), wall)
+                                                   : run(m, np.diffusion_tensor(v.tensor), wall);
+        if(!rep.succeeded() || rep.steps.size() != 3) { failure = rep.message; break; }
+        whole.push_back(wall);
+        double a = 0, b = 0;
+        its.clear();
+        for(const AF::Fairing_step& st : rep.steps)
+        {
+          a += st.assemble_seconds / 3;
+          b += st.solve_seconds / 3;
+          its += (its.empty() ? "" : ",") + std::to_string(st.solver_iterations);
+        }
+        assemble.push_back(a);
+        solve.push_back(b);
+      }
+      if(!failure.empty()) { std::printf("| %s | %s | failed: %s | | | | |\n", label.c_str(), v.name, failure.c_str()); continue; }
+      if(v.isotropic) isotropic_whole = median(whole);
+      std::printf("| %s | %s | %.3f | %.3f | %.3f | %s | %.2f |\n", label.c_str(), v.name, median(whole), median(assemble),
+                  median(solve), its.c_str(), median(whole) / isotropic_whole);
+      std::fflush(stdout);
+    }
+  }
+}
+
 int main(int argc, char** argv)
 {
   const std::string dir = argc > 1 && argv[1][0] ? argv[1] : std::string(AF_SOURCE_DIR) + "/../shared/data";
-  const std::string parts = argc > 2 ? argv[2] : "uabcd";
+  const std::string parts = argc > 2 ? argv[2] : "uabcde";
   const int runs = argc > 3 ? std::max(1, std::atoi(argv[3])) : 5;
   CGAL::Real_timer wall;
   wall.start();
@@ -466,6 +525,7 @@ int main(int argc, char** argv)
   if(parts.find('b') != std::string::npos) part_iterations(dir);
   if(parts.find('c') != std::string::npos) part_solvers(dir, runs);
   if(parts.find('d') != std::string::npos) part_breakdown(dir, runs);
+  if(parts.find('e') != std::string::npos) part_tensor(dir, runs);
   std::printf("\nwall time of the whole run: %.1f s\n", wall.time());
   return 0;
 }

@@ -22,7 +22,11 @@
 //    normals are the exact normals of the faired limit surface at those points.
 //  - `--output control` or the linear element: the written mesh is the surface itself (control
 //    polygon or P1 surface), so the normals are CGAL::Polygon_mesh_processing::compute_vertex_normals.
-// Without input normals the library's LIMIT_SURFACE output is used directly and no normal is written.
+// Without input normals (and without --curvature) the library's LIMIT_SURFACE output is used directly
+// and no normal is written.
+// Curvature (`--curvature`, PLY output): Loop_limit_surface::vertex_curvatures() of the limit surface of
+// the faired control mesh (the same CONTROL_POINTS path as the normals above when the output is the
+// limit surface), written as the double vertex properties k1, k2 and mean_curvature.
 // With `--mode attributes` the geometry is not faired: positions and the input's normals are written
 // unchanged (OBJ vn, which CGAL's reader does not read, are recomputed as for `--output control`).
 //
@@ -139,6 +143,13 @@ const char* const usage_text =
 "                            without --attributes): the attributes are not faired. coupled and\n"
 "                            attributes need --attributes\n"
 "  --attribute-weight W      coupled: the length that one attribute unit counts for (> 0, default 1)\n"
+"  --curvature               also write the curvature of the faired Loop limit surface at each vertex\n"
+"                            as the PLY vertex properties k1, k2 (principal curvatures, k1 <= k2) and\n"
+"                            mean_curvature ((k1 + k2)/2), w.r.t. the oriented normal (negative on a\n"
+"                            convex surface oriented outward); at vertices of valence other than 6,\n"
+"                            where the limit surface has no finite curvature, an average over the\n"
+"                            vertex's faces (Loop_limit_surface::vertex_curvatures). Needs a .ply\n"
+"                            OUTPUT and the Loop element\n"
 "  --report FILE.json        write per-step statistics (also, with status and message, on failure)\n"
 "  --quiet                   no progress line per step on stderr\n"
 "  --help                    print this help and exit\n"
@@ -147,7 +158,7 @@ const char* const usage_text =
 "JSON report: status, message, input, output, vertices, faces, element, output_positions, tensor, lambda,\n"
 "lambda_model_units, epsilon,\n"
 "solver, requested_solver, stop, max_steps, quadrature_degree, time_step, relative_time_step, scale,\n"
-"fidelity_weight, relative_fidelity_weight, mean_edge_length, normals, mode, attributes,\n"
+"fidelity_weight, relative_fidelity_weight, mean_edge_length, normals, curvature, mode, attributes,\n"
 "attribute_dimension, attribute_weight, boundary_handling,\n"
 "boundary_vertices, boundary_held_vertices, boundary_loops, isolated_vertices, constrained_vertices,\n"
 "stop_reason, initial {area,\n"
@@ -212,6 +223,7 @@ struct Options
   AF::Attribute_mode mode = AF::Attribute_mode::GEOMETRY_ONLY;
   bool has_attribute_weight = false;
   double attribute_weight = 1;
+  bool curvature = false;   // --curvature: k1, k2, mean_curvature written as PLY vertex properties
   bool quiet = false;
   bool help = false;
 };
@@ -326,6 +338,7 @@ void parse_arguments(int argc, char** argv, Options& o)
     {
       if(arg == "--help" || arg == "-h") { flag_without_value(); o.help = true; }
       else if(arg == "--quiet" || arg == "-q") { flag_without_value(); o.quiet = true; }
+      else if(arg == "--curvature") { flag_without_value(); o.curvature = true; }
       else if(arg == "--report") o.report = next();
       else if(arg == "--time-step")
       {
@@ -453,6 +466,10 @@ void parse_arguments(int argc, char** argv, Options& o)
   Format f;
   if(!format_of(o.input, f)) usage_error("INPUT must be an .off, .obj or .ply file: " + o.input);
   if(!format_of(o.output, f)) usage_error("OUTPUT must be an .off, .obj or .ply file: " + o.output);
+  if(o.curvature && f != Format::PLY)
+    usage_error("--curvature needs a .ply OUTPUT (k1, k2 and mean_curvature are written as vertex properties)");
+  if(o.curvature && o.element != AF::Finite_element::LOOP)
+    usage_error("--curvature needs --element loop (the linear element has no curvature)");
 }
 
 // ------------------------------------------------------------------------------------------------
@@ -1108,6 +1125,7 @@ struct Run_record
   bool fairing_ran = false;
   AF::Fairing_report report;
   std::string normals = "none";
+  bool curvature = false;   // k1, k2, mean_curvature were added to the output
   bool output_written = false;
 };
 
@@ -1147,6 +1165,7 @@ std::string report_json(const Options& o, const Run_record& r, double wall_secon
                                      : (o.has_relative_fidelity ? json_number(o.relative_fidelity) : "null"));
   kv("mean_edge_length", ran ? json_number(f.mean_edge_length) : "null");
   kv("normals", json_string(r.normals));
+  kv("curvature", r.curvature ? "true" : "false");
   kv("mode", json_string(mode_name(effective_mode(o))));
   {
     std::string names = "[";
@@ -1238,6 +1257,14 @@ int run(const Options& o, Run_record& r)
   r.vertices = mesh.number_of_vertices();
   r.faces = mesh.number_of_faces();
 
+  // --curvature adds three vertex properties; never overwrite the input's own
+  static const char* const curvature_properties[3] = { "v:k1", "v:k2", "v:mean_curvature" };
+  if(o.curvature)
+    for(const std::string& p : mesh.properties<Vertex_index>())
+      for(const char* c : curvature_properties)
+        if(p == c)
+          fail("input_error", "--curvature: " + o.input + " already has a vertex property '" + p.substr(2) + "', which it would overwrite");
+
   // the attributes named (checked in every mode, so that a misspelt name fails), and what is faired
   const AF::Attribute_mode mode = effective_mode(o);
   const std::vector<Attribute_column> columns = resolve_attributes(mesh, info, o.input, o.attributes);
@@ -1251,9 +1278,11 @@ int run(const Options& o, Run_record& r)
 
   // Exact limit normals need the control points: see the comment at the top of this file. With
   // --mode attributes the geometry is fixed: positions and input normals are written as they are.
+  // The curvature of the faired limit surface needs its control points too.
   const bool limit_output = o.element == AF::Finite_element::LOOP && o.output_positions == AF::Output_positions::LIMIT_SURFACE;
   const bool exact_limit_normals = info.has_normals && limit_output && fair_geometry;
-  const AF::Output_positions library_output = exact_limit_normals ? AF::Output_positions::CONTROL_POINTS : o.output_positions;
+  const bool limit_from_control = (exact_limit_normals || o.curvature) && limit_output && fair_geometry;
+  const AF::Output_positions library_output = limit_from_control ? AF::Output_positions::CONTROL_POINTS : o.output_positions;
 
   const unsigned int max_steps = o.steps;
   const bool quiet = o.quiet;
@@ -1295,29 +1324,51 @@ int run(const Options& o, Run_record& r)
          "fairing " + o.input + " failed (" + AF::to_string(r.report.status) + "): " +
          (r.report.message.empty() ? std::string("no detail") : r.report.message));
 
+  if(o.curvature)
+  {
+    // the mesh holds the faired control points (or, --output control or --mode attributes, the points
+    // written, whose limit surface is the faired or fixed surface); the averages at extraordinary
+    // vertices use the run's quadrature
+    typedef AF::Loop_limit_surface<Mesh> Limit;
+    const Limit limit(mesh, AF::parameters::quadrature_degree(o.quadrature_degree));
+    std::vector<Limit::Curvature> values(mesh.number_of_vertices());
+    limit.vertex_curvatures(CGAL::make_property_map(values));
+    auto k1 = mesh.add_property_map<Vertex_index, double>(curvature_properties[0], 0.0).first;
+    auto k2 = mesh.add_property_map<Vertex_index, double>(curvature_properties[1], 0.0).first;
+    auto h = mesh.add_property_map<Vertex_index, double>(curvature_properties[2], 0.0).first;
+    for(Vertex_index v : mesh.vertices())
+    {
+      const Limit::Curvature& c = values[std::size_t(v)];
+      k1[v] = c.k1;
+      k2[v] = c.k2;
+      h[v] = 0.5 * (c.k1 + c.k2);
+    }
+    r.curvature = true;
+  }
+  if(limit_from_control)
+  {
+    // the mesh holds the faired control points; the quadrature is not used here (degree 4 is the cheapest set-up)
+    AF::Loop_limit_surface<Mesh> limit(mesh, AF::parameters::quadrature_degree(4));
+    if(exact_limit_normals) limit.limit_normals(mesh.property_map<Vertex_index, Vector>("v:normal").first);
+    // as in the library's limit output, boundary and isolated vertices keep their (held) positions and attributes
+    std::vector<std::pair<Vertex_index, Point>> held;
+    std::vector<std::pair<Vertex_index, std::vector<double>>> held_values;
+    for(Vertex_index v : mesh.vertices())
+      if(mesh.is_border(v) || mesh.is_isolated(v))
+      {
+        held.emplace_back(v, mesh.point(v));
+        if(fair_attributes) held_values.emplace_back(v, attribute_values[std::size_t(v)]);
+      }
+    limit.limit_positions(mesh.points());
+    if(fair_attributes) limit.limit_values(attribute_map, attribute_map);
+    for(const auto& h : held) mesh.point(h.first) = h.second;
+    for(const auto& h : held_values) attribute_values[std::size_t(h.first)] = h.second;
+  }
   if(info.has_normals)
   {
     Normal_map normals = mesh.property_map<Vertex_index, Vector>("v:normal").first;
     if(exact_limit_normals)
-    {
-      // the mesh holds the faired control points; the quadrature is not used here (degree 4 is the cheapest set-up)
-      AF::Loop_limit_surface<Mesh> limit(mesh, AF::parameters::quadrature_degree(4));
-      limit.limit_normals(normals);
-      // as in the library's limit output, boundary and isolated vertices keep their (held) positions and attributes
-      std::vector<std::pair<Vertex_index, Point>> held;
-      std::vector<std::pair<Vertex_index, std::vector<double>>> held_values;
-      for(Vertex_index v : mesh.vertices())
-        if(mesh.is_border(v) || mesh.is_isolated(v))
-        {
-          held.emplace_back(v, mesh.point(v));
-          if(fair_attributes) held_values.emplace_back(v, attribute_values[std::size_t(v)]);
-        }
-      limit.limit_positions(mesh.points());
-      if(fair_attributes) limit.limit_values(attribute_map, attribute_map);
-      for(const auto& h : held) mesh.point(h.first) = h.second;
-      for(const auto& h : held_values) attribute_values[std::size_t(h.first)] = h.second;
-      r.normals = "limit_surface";
-    }
+      r.normals = "limit_surface";   // written above, with the limit positions
     else if(fair_geometry || !info.normals_read)
     {
       CGAL::Polygon_mesh_processing::compute_vertex_normals(mesh, normals);

@@ -487,6 +487,76 @@ elseif(MODE STREQUAL "anisotropic_tensor")
   check_clean_failure("--lambda -1" "${r_rc}" "${r_err}" 2 "${WORK_DIR}/bad.off")
 
 # ------------------------------------------------------------------------------------------------
+elseif(MODE STREQUAL "curvature")
+  # --curvature writes k1, k2 and mean_curvature of the faired limit surface as PLY vertex properties.
+  # The regular octahedron stays octahedrally symmetric under the flow, and its six vertices have
+  # valence 4 with a 4-fold symmetric star: so k1 = k2 = mean_curvature, the same at all six, negative
+  # (faces oriented outward), and larger in magnitude after the flow has shrunk it. The input's
+  # own properties are kept.
+  foreach(steps 0 3)
+    set(output "${WORK_DIR}/curvature${steps}.ply")
+    run_tool(r "${DATA_DIR}/octahedron_quality.ply" "${output}" --steps ${steps} --stop off --curvature --quiet
+             --report "${WORK_DIR}/curvature${steps}.json")
+    check("--curvature, ${steps} steps: exit 0" r_rc EQUAL 0)
+    file(READ "${WORK_DIR}/curvature${steps}.json" json)
+    check("--curvature reported" json MATCHES "\"curvature\": true,")
+    file(STRINGS "${output}" lines)
+    list(FIND lines "end_header" h)
+    list(SUBLIST lines 0 ${h} header)
+    foreach(p quality k1 k2 mean_curvature)
+      check("property ${p} written" header MATCHES "property [a-z0-9]+ ${p};")
+    endforeach()
+    set(columns "")
+    foreach(line IN LISTS header)
+      if(line MATCHES "^element face")
+        break()
+      endif()
+      if(line MATCHES "^property [a-z0-9]+ ([A-Za-z_]+)$")
+        list(APPEND columns "${CMAKE_MATCH_1}")
+      endif()
+    endforeach()
+    list(FIND columns k1 c1)
+    list(FIND columns k2 c2)
+    list(FIND columns mean_curvature cm)
+    set(values "")
+    foreach(i RANGE 5)
+      math(EXPR li "${h} + 1 + ${i}")
+      list(GET lines ${li} vline)
+      string(STRIP "${vline}" vline)
+      string(REGEX REPLACE "[ \t]+" ";" tokens "${vline}")
+      foreach(c ${c1} ${c2} ${cm})
+        list(GET tokens ${c} value)
+        list(APPEND values "${value}")
+      endforeach()
+    endforeach()
+    # all 18 values equal to 1e-12 relative, and negative (CMake has no floating point: math(EXPR) is
+    # integer, so compare the first 12 significant digits of the mantissas)
+    list(GET values 0 first)
+    check("k negative: ${first}" first MATCHES "^-[0-9]")
+    string(REGEX REPLACE "^-?([0-9])\\.([0-9]+)e?.*$" "\\1\\2" digits "${first}")
+    string(SUBSTRING "${digits}" 0 12 first_digits)
+    foreach(value IN LISTS values)
+      string(REGEX REPLACE "^-?([0-9])\\.([0-9]+)e?.*$" "\\1\\2" d "${value}")
+      string(SUBSTRING "${d}" 0 12 d)
+      check("k1 = k2 = mean_curvature, the same at every vertex: ${value} vs ${first}" d STREQUAL first_digits)
+    endforeach()
+    set(k_${steps} "${first}")
+  endforeach()
+  # |k| grows as the octahedron shrinks: compare the 6 leading digits (both values are -1.8...)
+  string(REGEX REPLACE "^-([0-9])\\.([0-9][0-9][0-9][0-9][0-9]).*$" "\\1\\2" a "${k_0}")
+  string(REGEX REPLACE "^-([0-9])\\.([0-9][0-9][0-9][0-9][0-9]).*$" "\\1\\2" b "${k_3}")
+  check("the faired surface is more curved: ${k_3} vs ${k_0}" b GREATER a)
+  # usage errors: not PLY, not the Loop element
+  run_tool(r "${DATA_DIR}/octahedron_quality.ply" "${WORK_DIR}/bad.off" --curvature)
+  check_clean_failure("--curvature with an OFF output" "${r_rc}" "${r_err}" 2 "${WORK_DIR}/bad.off")
+  run_tool(r "${DATA_DIR}/octahedron_quality.ply" "${WORK_DIR}/bad.ply" --curvature --element linear)
+  check_clean_failure("--curvature with the linear element" "${r_rc}" "${r_err}" 2 "${WORK_DIR}/bad.ply")
+  # an input that has a k1 property already: refused, not overwritten
+  run_tool(r "${WORK_DIR}/curvature0.ply" "${WORK_DIR}/again.ply" --curvature)
+  check_clean_failure("--curvature on an input with k1" "${r_rc}" "${r_err}" 1 "${WORK_DIR}/again.ply")
+  check("names the property" r_err MATCHES "already has a vertex property 'k1'")
+
+# ------------------------------------------------------------------------------------------------
 elseif(MODE STREQUAL "keeps_ply_properties")
   # octahedron_quality.ply: float x y z quality, uchar red green blue. The faired file must keep the
   # vertex order, the faces, and the values of quality and of the colours (CGAL writes the float
