@@ -37,11 +37,12 @@
 // previous interval (5 -> 10, 10 -> 20); the best cell is reported over all steps and over steps <= 10.
 //
 // usage: bench_denoising [DIR=<repo>/../shared/data/denoising] [MODEL_SUBSTRING] [METHODS=loop,p1,smooth] [LAMBDAS=1,2,5,10,20,50,100]
-//                        [EPSILONS=0]
+//                        [EPSILONS=0] [TAUS=1e-4,3e-4,1e-3,3e-3]
 //   METHODS: "all" or a comma-separated subset of loop, p1, smooth (both smooth_shape sweeps), aniso (default: all but aniso)
 //   LAMBDAS: the lambda_rel values of the anisotropic sweep
 //   EPSILONS: prefilter times eps_rel (curvature read on M_eps, one isotropic implicit step of eps_rel l0^2;
 //             default 0: on the current surface), swept as an outer loop around LAMBDAS
+//   TAUS: the tau_rel values of our sweeps (Loop, P1, anisotropic)
 
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/Real_timer.h>
@@ -179,7 +180,7 @@ std::string fmt(const char* f, double x)
   return b;
 }
 
-const std::vector<double> our_taus = {1e-4, 3e-4, 1e-3, 3e-3};
+std::vector<double> our_taus = {1e-4, 3e-4, 1e-3, 3e-3};   // TAUS argument overrides
 const std::vector<int> step_counts = {1, 2, 3, 5, 10};
 const std::vector<double> smooth_taus = {1e-5, 1e-4, 3e-4, 1e-3, 3e-3, 1e-2};
 const std::vector<double> smooth_literal_times = {1e-5, 1e-4, 1e-3, 1e-2};
@@ -494,24 +495,32 @@ std::string summary(const Best& b)
   return s;
 }
 
+// a comma-separated list of positive numbers (or non-negative ones) into `out`
+bool parse_list(const char* text, const char* name, bool zero_allowed, std::vector<double>& out)
+{
+  out.clear();
+  for(const char* c = text; *c;)
+  {
+    char* end = nullptr;
+    const double x = std::strtod(c, &end);
+    if(end == c || !(x > 0 || (zero_allowed && x == 0)))
+    {
+      std::fprintf(stderr, "%s: a comma-separated list of %s numbers\n", name, zero_allowed ? "non-negative" : "positive");
+      return false;
+    }
+    out.push_back(x);
+    c = *end == ',' ? end + 1 : end;
+  }
+  return true;
+}
+
 int main(int argc, char** argv)
 {
   std::string dir = argc > 1 && argv[1][0] ? argv[1] : std::string(AF_SOURCE_DIR) + "/../shared/data/denoising";
   const std::string only = argc > 2 ? argv[2] : "";
   // the anisotropic sweep (7 thresholds, up to 40 steps) is opt-in: with it the 8 pairs take hours
   const std::string methods = argc > 3 && argv[3][0] ? argv[3] : "loop,p1,smooth";
-  if(argc > 4 && argv[4][0])
-  {
-    aniso_lambdas.clear();
-    for(const char* c = argv[4]; *c;)
-    {
-      char* end = nullptr;
-      const double L = std::strtod(c, &end);
-      if(end == c || !(L > 0)) { std::fprintf(stderr, "LAMBDAS: a comma-separated list of positive numbers\n"); return 1; }
-      aniso_lambdas.push_back(L);
-      c = *end == ',' ? end + 1 : end;
-    }
-  }
+  if(argc > 4 && argv[4][0] && !parse_list(argv[4], "LAMBDAS", false, aniso_lambdas)) return 1;
   bool run_loop = false, run_p1 = false, run_smooth = false, run_aniso = false;
   {
     std::size_t start = 0;
@@ -534,17 +543,11 @@ int main(int argc, char** argv)
   }
   if(argc > 5 && argv[5][0])
   {
-    aniso_epsilons.clear();
-    for(const char* c = argv[5]; *c;)
-    {
-      char* end = nullptr;
-      const double E = std::strtod(c, &end);
-      if(end == c || !(E >= 0)) { std::fprintf(stderr, "EPSILONS: a comma-separated list of non-negative numbers\n"); return 1; }
+    if(!parse_list(argv[5], "EPSILONS", true, aniso_epsilons)) return 1;
+    for(double E : aniso_epsilons)
       if(E > 0 && !has_prefilter) { std::fprintf(stderr, "EPSILONS: this library's Anisotropic_diffusion_tensor has no prefilter\n"); return 1; }
-      aniso_epsilons.push_back(E);
-      c = *end == ',' ? end + 1 : end;
-    }
   }
+  if(argc > 6 && argv[6][0] && !parse_list(argv[6], "TAUS", false, our_taus)) return 1;
   CGAL::Real_timer wall;
   wall.start();
 
@@ -559,10 +562,14 @@ int main(int argc, char** argv)
 
   std::printf("# bench_denoising: %s (%zu pairs), methods:%s%s%s%s\n", dir.c_str(), models.size(), run_loop ? " loop" : "",
               run_p1 ? " p1" : "", run_smooth ? " smooth" : "", run_aniso ? " aniso" : "");
-  std::printf("sweep: ours tau_rel {1e-4,3e-4,1e-3,3e-3} x steps {1,2,3,5,10}; smooth_shape tau_rel {1e-5,1e-4,3e-4,1e-3,3e-3,1e-2}"
+  std::printf("sweep: ours tau_rel {%s} x steps {1,2,3,5,10}; smooth_shape tau_rel {1e-5,1e-4,3e-4,1e-3,3e-3,1e-2}"
               " x iterations {1,2,3,5,10} (time = tau_rel*l^2/4), and its literal times {1e-5,1e-4,1e-3,1e-2};"
               " anisotropic Loop: eps_rel {%s} x lambda_rel {%s} x ours, with steps 20 and 40 while the angle still falls;"
               " l^2 = Area(Noisy)/(4 pi); cells: angle(deg) / dist(/bbox diag)\n", [] {
+                std::string l;
+                for(double T : our_taus) l += (l.empty() ? "" : ",") + fmt("%g", T);
+                return l;
+              }().c_str(), [] {
                 std::string l;
                 for(double E : aniso_epsilons) l += (l.empty() ? "" : ",") + fmt("%g", E);
                 return l;

@@ -494,16 +494,7 @@ private:
     for(int r = 0; r < 5; ++r)
       for(int k = 0; k < s.m; ++k)
         for(int c = 0; c < 3; ++c) t[r][c] += s.row(internal::D1 + r)[k] * X_(ring[k], c);
-    Quadrature_point_geometry q;
-    q.face = fi;
-    q.point = -1;
-    q.dimension = 3;
-    q.t1 = t[0]; q.t2 = t[1]; q.t11 = t[2]; q.t12 = t[3]; q.t22 = t[4];
-    q.g11 = t[0][0] * t[0][0] + t[0][1] * t[0][1] + t[0][2] * t[0][2];
-    q.g12 = t[0][0] * t[1][0] + t[0][1] * t[1][1] + t[0][2] * t[1][2];
-    q.g22 = t[1][0] * t[1][0] + t[1][1] * t[1][1] + t[1][2] * t[1][2];
-    q.det = q.g11 * q.g22 - q.g12 * q.g12;
-    q.ring = nullptr; q.basis = nullptr; q.ring_size = 0;
+    const Quadrature_point_geometry q = internal::point_geometry_3(t, fi, -1);
     double H[3];
     mean_curvature_vector(q, H);
     const Principal_curvatures pc = principal_curvatures(q);

@@ -28,6 +28,20 @@ namespace CGAL {
 namespace Anisotropic_fairing {
 namespace internal {
 
+/// The geometry at a point of a face of a surface in R^3 from its derivatives t = (x_1, x_2, x_11, x_12, x_22).
+inline Quadrature_point_geometry point_geometry_3(const double (&t)[5][3], std::size_t face, int point)
+{
+  Quadrature_point_geometry g;
+  g.face = face; g.point = point; g.dimension = 3;
+  g.t1 = t[0]; g.t2 = t[1]; g.t11 = t[2]; g.t12 = t[3]; g.t22 = t[4];
+  g.g11 = t[0][0] * t[0][0] + t[0][1] * t[0][1] + t[0][2] * t[0][2];
+  g.g12 = t[0][0] * t[1][0] + t[0][1] * t[1][1] + t[0][2] * t[1][2];
+  g.g22 = t[1][0] * t[1][0] + t[1][1] * t[1][1] + t[1][2] * t[1][2];
+  g.det = g.g11 * g.g22 - g.g12 * g.g12;
+  g.ring = nullptr; g.basis = nullptr; g.ring_size = 0;
+  return g;
+}
+
 struct Vertex_curvature_value
 {
   std::array<double, 3> H{ { 0, 0, 0 } };     // (k1 + k2)/2 times the limit normal
@@ -57,14 +71,7 @@ averaged_vertex_curvatures(const Triangle_topology& topo, const Patch_cache& cac
           const double s = qp.stencil.row(D1 + r)[k];
           for(int c = 0; c < 3; ++c) t[r][c] += s * X(ring[k], c);
         }
-      Quadrature_point_geometry g;
-      g.face = f; g.point = int(q); g.dimension = 3;
-      g.t1 = t[0]; g.t2 = t[1]; g.t11 = t[2]; g.t12 = t[3]; g.t22 = t[4];
-      g.g11 = t[0][0] * t[0][0] + t[0][1] * t[0][1] + t[0][2] * t[0][2];
-      g.g12 = t[0][0] * t[1][0] + t[0][1] * t[1][1] + t[0][2] * t[1][2];
-      g.g22 = t[1][0] * t[1][0] + t[1][1] * t[1][1] + t[1][2] * t[1][2];
-      g.det = g.g11 * g.g22 - g.g12 * g.g12;
-      g.ring = nullptr; g.basis = nullptr; g.ring_size = 0;
+      const Quadrature_point_geometry g = point_geometry_3(t, f, int(q));
       if(!(g.det > 0) || !std::isfinite(g.det)) continue;
       const Principal_curvatures pc = principal_curvatures(g);
       double e[2][3];
