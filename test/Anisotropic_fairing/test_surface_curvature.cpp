@@ -228,8 +228,9 @@ void loop_surfaces()
   AF_CHECK(lo[0] >= -1.35 && hi[0] <= -0.75 && lo[1] >= -1.35 && hi[1] <= -0.75, "vertex curvatures near -1, extraordinary ones too");
   AF_CHECK(normal_error <= 1e-14, "H = (k1 + k2)/2 n, and (d1, d2, n) a right-handed orthonormal frame");
 
-  // Why a vertex gets an average even where the limit curvature is finite: next to the extraordinary
-  // vertices the pointwise curvature of the Loop surface keeps an error that refinement does not remove.
+  // Why a vertex gets an average even where the limit curvature is finite: on the interpolating
+  // icosphere the pointwise curvature is noisy and does not improve under refinement (the non-uniform
+  // parametrisation around its extraordinary vertices, loop-fem.md section 7); the average smooths it.
   for(int level = 3; level <= 4; ++level)
   {
     Mesh fine;
