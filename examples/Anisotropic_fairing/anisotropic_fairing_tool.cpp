@@ -125,6 +125,9 @@ const char* const usage_text =
 "                            (default 2): principal curvatures above it are diffused less\n"
 "  --epsilon E               the anisotropic tensor reads curvature on the surface after an isotropic\n"
 "                            step of E (units of l^2; the paper's prefiltered M_eps); default 0: none\n"
+"  --tangential-motion remove|keep  the anisotropic flow moves control points along the surface's\n"
+"                            normal only (remove, the default: the tangential part of div(D grad x)\n"
+"                            folds noisy meshes) or also within it, as the paper does (keep)\n"
 "  --solver auto|cg|cholesky        linear solver: automatic (default), conjugate gradients, sparse LDL^T\n"
 "  --boundary curve|vertices        on a mesh with borders, hold the limit boundary curve (default: the\n"
 "                            boundary vertices and the interior vertices that shape the curve) or only\n"
@@ -156,7 +159,7 @@ const char* const usage_text =
 "Options also accept the form --option=value.\n"
 "\n"
 "JSON report: status, message, input, output, vertices, faces, element, output_positions, tensor, lambda,\n"
-"lambda_model_units, epsilon,\n"
+"lambda_model_units, epsilon, tangential_motion,\n"
 "solver, requested_solver, stop, max_steps, quadrature_degree, time_step, relative_time_step, scale,\n"
 "fidelity_weight, relative_fidelity_weight, mean_edge_length, normals, curvature, mode, attributes,\n"
 "attribute_dimension, attribute_weight, boundary_handling,\n"
@@ -217,6 +220,7 @@ struct Options
   AF::Boundary_handling boundary = AF::Boundary_handling::HOLD_BOUNDARY_CURVE;
   int quadrature_degree = 8;
   bool anisotropic = false, has_lambda = false, has_epsilon = false;
+  bool normal_motion_only = true, has_tangential_motion = false;   // --tangential-motion remove|keep
   double lambda = 2.0, epsilon = 0.0;
   std::vector<std::string> attributes;   // the names given to --attributes, in their order
   bool has_mode = false;
@@ -420,6 +424,14 @@ void parse_arguments(int argc, char** argv, Options& o)
         o.has_epsilon = true;
         if(!(o.epsilon >= 0)) usage_error("--epsilon must be >= 0");
       }
+      else if(arg == "--tangential-motion")
+      {
+        const std::string v = next();
+        if(v == "remove") o.normal_motion_only = true;
+        else if(v == "keep") o.normal_motion_only = false;
+        else usage_error("--tangential-motion expects remove or keep, not '" + v + "'");
+        o.has_tangential_motion = true;
+      }
       else if(arg == "--quadrature-degree")
       {
         const std::string v = next();
@@ -463,6 +475,7 @@ void parse_arguments(int argc, char** argv, Options& o)
     usage_error(std::string("--mode ") + mode_name(o.mode) + " needs --attributes");
   if(o.has_lambda && !o.anisotropic) usage_error("--lambda needs --tensor anisotropic");
   if(o.has_epsilon && !o.anisotropic) usage_error("--epsilon needs --tensor anisotropic");
+  if(o.has_tangential_motion && !o.anisotropic) usage_error("--tangential-motion needs --tensor anisotropic");
   Format f;
   if(!format_of(o.input, f)) usage_error("INPUT must be an .off, .obj or .ply file: " + o.input);
   if(!format_of(o.output, f)) usage_error("OUTPUT must be an .off, .obj or .ply file: " + o.output);
@@ -1151,6 +1164,7 @@ std::string report_json(const Options& o, const Run_record& r, double wall_secon
   kv("lambda", o.anisotropic ? json_number(o.lambda) : "null");
   kv("lambda_model_units", o.anisotropic && ran && f.scale > 0 ? json_number(o.lambda / f.scale) : "null");
   kv("epsilon", o.anisotropic ? json_number(o.epsilon) : "null");
+  kv("tangential_motion", json_string(o.anisotropic && o.normal_motion_only ? "removed" : "kept"));
   kv("solver", ran ? json_string(f.used_cholesky ? "cholesky" : "cg") : "null");
   kv("requested_solver", json_string(solver_name(o.solver)));
   kv("stop", json_string(o.stop_auto ? "auto" : "off"));
@@ -1310,7 +1324,7 @@ int run(const Options& o, Run_record& r)
                       .callback(progress);
   try
   {
-    r.report = o.anisotropic ? with_time_step(base.diffusion_tensor(AF::Anisotropic_diffusion_tensor(o.lambda, true, o.epsilon)), o, fair)
+    r.report = o.anisotropic ? with_time_step(base.diffusion_tensor(AF::Anisotropic_diffusion_tensor(o.lambda, true, o.epsilon, o.normal_motion_only)), o, fair)
                              : with_time_step(base, o, fair);
   }
   catch(const AF::Input_error& e)

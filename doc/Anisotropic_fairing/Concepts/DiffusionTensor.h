@@ -19,6 +19,18 @@ A model may also have `void set_length_scale(double l)`: `anisotropic_fairing()`
 before the first assembly, with the model's scale \f$\ell = \sqrt{\mathrm{Area}/4\pi}\f$ (of the input's
 surface, in \f$\mathbb{R}^{3+d}\f$ in the coupled mode), so that parameters can be given relative to it.
 
+A model may also have `double prefilter_time() const`: when it returns \f$\varepsilon > 0\f$, before every
+assembly the surface after one isotropic implicit step of length \f$\varepsilon\f$ (model units) from the
+current one, \f$M_\varepsilon\f$, is computed, and its derivatives at the same quadrature points are passed
+in `Quadrature_point_geometry::prefiltered_t1` etc. (Bajaj and Xu's prefiltered curvature).
+
+A model may also have `bool normal_motion_only() const`: when it returns `true`, each step's displacement
+of a control point loses its component in the limit tangent plane at that vertex (in the coupled mode, in
+\f$\mathbb{R}^{3+d}\f$), so that the surface moves along its normal only; the report's
+`Fairing_report::normal_motion_only` says so. A tensor that varies along the surface moves points
+tangentially too, which only reparametrises the surface in the continuum but can fold it on noisy meshes
+(see `CGAL::Anisotropic_fairing::Anisotropic_diffusion_tensor`).
+
 \cgalHasModel `CGAL::Anisotropic_fairing::Isotropic_diffusion_tensor`
 \cgalHasModel `CGAL::Anisotropic_fairing::Anisotropic_diffusion_tensor`
 */

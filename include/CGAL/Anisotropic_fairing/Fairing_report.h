@@ -115,6 +115,7 @@ struct Fairing_report
   Attribute_mode attribute_mode = Attribute_mode::GEOMETRY_ONLY; ///< how the attributes were faired
   std::size_t attribute_dimension = 0;  ///< number of attribute components faired (0 without attributes or in `GEOMETRY_ONLY`)
   std::size_t isolated_vertices = 0;    ///< vertices on no face (scanner leftovers): held and left as they are
+  bool normal_motion_only = false;      ///< each step's displacement lost its tangential part (the tensor's `normal_motion_only()`, e.g. `Anisotropic_diffusion_tensor`'s default)
   double setup_seconds = 0;       ///< set-up: private numbering, element (patch categories, stencils), sparsity patterns
   double total_seconds = 0;       ///< the whole call
 

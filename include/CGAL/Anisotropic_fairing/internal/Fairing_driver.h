@@ -95,6 +95,12 @@ auto wants_length_scale(const Tensor& t, int) -> decltype(const_cast<Tensor&>(t)
 template <typename Tensor>
 bool wants_length_scale(const Tensor&, long) { return false; }
 
+/// Tensors that vary along the surface may ask for normal motion only (`normal_motion_only()`).
+template <typename Tensor>
+auto wants_normal_motion(const Tensor& t, int) -> decltype(bool(t.normal_motion_only())) { return bool(t.normal_motion_only()); }
+template <typename Tensor>
+bool wants_normal_motion(const Tensor&, long) { return false; }
+
 template <typename Cache, typename Tensor, typename Callback>
 Fairing_report run_stepper(const Cache& cache, const Locality_ordering& ordering, Control_matrix& X, Attribute_mode mode,
                            const std::vector<bool>& constrained, const std::vector<bool>& border,
@@ -102,6 +108,9 @@ Fairing_report run_stepper(const Cache& cache, const Locality_ordering& ordering
 {
   const Stopwatch clock;
   Time_stepper<Cache> stepper(cache, std::size_t(X.rows()), constrained);
+  const Tangential_motion_filter filter(ordering.layer);
+  const bool normal_motion = wants_normal_motion(tensor, 0) && mode != Attribute_mode::ATTRIBUTES_ONLY;
+  if(normal_motion) stepper.set_tangential_filter(&filter);
   stepper.assembler().use_original_indices(&ordering.old_of_new_vertex, &ordering.old_of_new_face);
   stepper.assembler().exclude_from_curvature(&border);
   const int metric_columns = mode == Attribute_mode::COUPLED ? int(X.cols()) : 3;
@@ -115,7 +124,9 @@ Fairing_report run_stepper(const Cache& cache, const Locality_ordering& ordering
   }
   setup_seconds += clock.seconds();
   if(mode == Attribute_mode::ATTRIBUTES_ONLY) return stepper.run_on_fixed_surface(X, scaled, s, callback);
-  return stepper.run(X, metric_columns, scaled, s, callback);
+  Fairing_report report = stepper.run(X, metric_columns, scaled, s, callback);
+  report.normal_motion_only = normal_motion;
+  return report;
 }
 
 template <typename TriangleMesh, typename VertexPointMap, typename AttributeMap, typename NamedParameters>

@@ -18,6 +18,7 @@
 #include <CGAL/Anisotropic_fairing/Fairing_settings.h>
 #include <CGAL/Anisotropic_fairing/Isotropic_diffusion_tensor.h>
 #include <CGAL/Anisotropic_fairing/internal/Fem_assembly.h>
+#include <CGAL/Anisotropic_fairing/internal/Normal_motion.h>
 #include <CGAL/Anisotropic_fairing/internal/Spd_solvers.h>
 
 #include <chrono>
@@ -173,6 +174,8 @@ public:
   }
 
   std::size_t number_of_free_vertices() const { return free_.size(); }
+  /// Each step's displacement of the surface's columns then loses its tangential part (null: kept).
+  void set_tangential_filter(const Tangential_motion_filter* f) { tangential_filter_ = f; }
   Fem_assembler<Cache>& assembler() { return assembler_; }
 
   /// Runs the flow from X (n x kappa; the first `metric_columns` columns define the surface, the
@@ -246,7 +249,15 @@ public:
       if(!dX.allFinite())
         return fail(report, Fairing_status::NON_FINITE_VALUE, "step " + std::to_string(step) + ": the solution is not finite", total);
 
-      const double moved = move_free_rows(X, dX, X0, metric_columns, st);
+      double moved = 0;
+      if(tangential_filter_)
+      {
+        // dX itself stays the solution: the next step's CG starts from it
+        normal_dX_ = dX;
+        tangential_filter_->remove(X, metric_columns, free_, normal_dX_);
+        moved = move_free_rows(X, normal_dX_, X0, metric_columns, st);
+      }
+      else moved = move_free_rows(X, dX, X0, metric_columns, st);
 
       // the new surface: diagnostics now, and the matrices of the next step
       clock = Stopwatch();
@@ -509,6 +520,8 @@ private:
   Control_matrix prefiltered_X_;
   std::string prefilter_error_;
   Dense_block previous_dX_;
+  const Tangential_motion_filter* tangential_filter_ = nullptr;
+  Dense_block normal_dX_;
 };
 
 } // namespace internal
