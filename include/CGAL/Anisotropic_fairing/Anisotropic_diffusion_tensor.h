@@ -45,8 +45,10 @@ where \f$g\f$ drops from 1 to almost 0 within one edge, it slides neighbouring c
 other in a single step and folds the limit surface (on the Nicolo0.2 scan, one step of
 \f$\tau = 10^{-3}\ell^2\f$ raised \f$\int|H|^2\f$ from 2,564 to \f$1.6\cdot 10^6\f$; without the tangential
 part, to 1,817). So by default (`normal_motion_only()`) `anisotropic_fairing()` removes from each step's
-displacement of a control point its component in the limit tangent plane at that vertex (Bajaj and Xu
-keep it; pass `false` to do so).
+displacement of a control point its component in the limit tangent plane at that vertex: of
+\f$M_\varepsilon\f$ when there is a prefilter (on noise the current surface's normal is mostly noise, and
+motion across the noisy surface is what removes it), of the current surface otherwise. Bajaj and Xu keep
+the tangential part; pass `false` to do so.
 */
 class Anisotropic_diffusion_tensor
 {

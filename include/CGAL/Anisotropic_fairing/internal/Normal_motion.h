@@ -7,8 +7,8 @@
 // its shape in the continuum but, on noise, where g jumps from 1 to almost 0 within one edge, slides
 // neighbouring control points over each other in a single step and folds the limit surface. The normal
 // part, sum_a g(k_a) k_a, is the anisotropic flow itself. The tangent plane at a control vertex is the
-// limit tangent plane (closed-form tangent masks) of the current control mesh, in R^kappa for the
-// columns that span the surface.
+// limit tangent plane (closed-form tangent masks) of the control mesh given, in R^kappa for the columns
+// that span the surface: the prefiltered surface M_eps when the tensor has one, the current one otherwise.
 
 #ifndef CGAL_ANISOTROPIC_FAIRING_INTERNAL_NORMAL_MOTION_H
 #define CGAL_ANISOTROPIC_FAIRING_INTERNAL_NORMAL_MOTION_H

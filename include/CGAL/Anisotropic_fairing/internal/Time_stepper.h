@@ -254,7 +254,9 @@ public:
       {
         // dX itself stays the solution: the next step's CG starts from it
         normal_dX_ = dX;
-        tangential_filter_->remove(X, metric_columns, free_, normal_dX_);
+        // the normal of M_eps when the tensor reads its curvature there: on noise, the current
+        // surface's normal is mostly noise, and removing motion in its tangent plane would keep the noise
+        tangential_filter_->remove(prefiltered_valid_ ? prefiltered_X_ : X, metric_columns, free_, normal_dX_);
         moved = move_free_rows(X, normal_dX_, X0, metric_columns, st);
       }
       else moved = move_free_rows(X, dX, X0, metric_columns, st);
@@ -402,6 +404,7 @@ private:
     const double eps = prefilter_time(tensor, 0);
     assembler_.set_prefiltered(nullptr);
     prefilter_error_.clear();
+    prefiltered_valid_ = false;
     if(eps > 0 && !free_.empty())
     {
       std::vector<double> Mi, Li;
@@ -428,6 +431,7 @@ private:
         prefiltered_X_ = X;
         for(Eigen::Index i = 0; i < nfree; ++i) prefiltered_X_.row(free_[std::size_t(i)]).head(metric_columns) += dX.row(i);
         assembler_.set_prefiltered(&prefiltered_X_);
+        prefiltered_valid_ = true;
       }
     }
     const Assembly_statistics a = assembler_.assemble(X, metric_columns, tensor, M_, L_, with_matrices);
@@ -518,6 +522,7 @@ private:
   std::vector<double> M_, L_;
   Eigen::SparseMatrix<double> prefilter_A_;
   Control_matrix prefiltered_X_;
+  bool prefiltered_valid_ = false;
   std::string prefilter_error_;
   Dense_block previous_dX_;
   const Tangential_motion_filter* tangential_filter_ = nullptr;
