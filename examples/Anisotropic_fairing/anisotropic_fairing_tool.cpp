@@ -124,7 +124,8 @@ const char* const usage_text =
 "  --lambda L                the anisotropic tensor's feature threshold, a curvature in units of 1/l\n"
 "                            (default 2): principal curvatures above it are diffused less\n"
 "  --epsilon E               the anisotropic tensor reads curvature on the surface after an isotropic\n"
-"                            step of E (units of l^2; the paper's prefiltered M_eps); default 0: none\n"
+"                            step of E (units of l^2; the paper's prefiltered M_eps); default 1e-3;\n"
+"                            0: on the current surface\n"
 "  --tangential-motion remove|keep  the anisotropic flow moves control points along the surface's\n"
 "                            normal only (remove, the default: the tangential part of div(D grad x)\n"
 "                            folds noisy meshes) or also within it, as the paper does (keep)\n"
@@ -221,7 +222,7 @@ struct Options
   int quadrature_degree = 8;
   bool anisotropic = false, has_lambda = false, has_epsilon = false;
   bool normal_motion_only = true, has_tangential_motion = false;   // --tangential-motion remove|keep
-  double lambda = 2.0, epsilon = 0.0;
+  double lambda = 2.0, epsilon = 1e-3;
   std::vector<std::string> attributes;   // the names given to --attributes, in their order
   bool has_mode = false;
   AF::Attribute_mode mode = AF::Attribute_mode::GEOMETRY_ONLY;

@@ -60,10 +60,12 @@ public:
   /// `epsilon`: the prefilter time: the curvature is read on \f$M_\varepsilon\f$, the surface after one
   /// isotropic implicit step of length \f$\varepsilon\f$ from the current one (Bajaj and Xu use
   /// \f$\varepsilon = 0.001\f$), so that noise does not pass for features; in units of \f$\ell^2\f$ if
-  /// `relative`, like the time step. 0 (the default) reads it on the current surface.
+  /// `relative`, like the time step. The default \f$10^{-3}\f$ did best on the denoising benchmark
+  /// (Fandisk0.3: 3.40 degrees against 4.16 with \f$2\cdot 10^{-3}\f$ and 4.58 with \f$3\cdot 10^{-3}\f$);
+  /// each step then costs one more isotropic assembly and solve. 0 reads the curvature on the current surface.
   ///
   /// `normal_motion_only`: move the control points along the surface's normal only (see above).
-  explicit Anisotropic_diffusion_tensor(double lambda = 2.0, bool relative = true, double epsilon = 0.0,
+  explicit Anisotropic_diffusion_tensor(double lambda = 2.0, bool relative = true, double epsilon = 1e-3,
                                         bool normal_motion_only = true)
     : lambda_(lambda), epsilon_(epsilon), relative_(relative), normal_motion_only_(normal_motion_only),
       threshold_(lambda), prefilter_(epsilon) {}
