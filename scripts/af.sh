@@ -17,12 +17,14 @@ JOBS=2
 DEB_PACKAGES=(libcgal-dev libeigen3-dev libboost-dev libtbb-dev cmake g++)
 
 # The main program: the one place to change what `af.sh main` runs.
-# Fairs the noisy fandisk of the denoising benchmark (6475 vertices, closed): five steps of
-# tau = 1e-4 l^2 (l = sqrt(area/4pi)), the default stopping criteria; report in build/fandisk_faired.json.
+# Fairs the noisy fandisk of the denoising benchmark (6475 vertices, closed) with the anisotropic,
+# feature-preserving tensor (its defaults): ten steps of tau = 3e-4 l^2 (l = sqrt(area/4pi)), the
+# default stopping criteria; report in build/fandisk_faired.json. Mean face-normal error to the
+# noise-free fandisk: 3.60 degrees (noisy 28.42; isotropic, 5 steps of 1e-4: 10.47).
 MAIN_EXE="$BUILD_DIR/bin/anisotropic_fairing"
 MAIN_INPUT="examples/Anisotropic_fairing/data/fandisk_noisy.obj"
 MAIN_OUTPUT="$BUILD_DIR/fandisk_faired.off"
-MAIN_EXTRA_ARGS=(--relative-time-step 1e-4 --steps 5 --report "$BUILD_DIR/fandisk_faired.json")
+MAIN_EXTRA_ARGS=(--tensor anisotropic --relative-time-step 3e-4 --steps 10 --report "$BUILD_DIR/fandisk_faired.json")
 
 log() { printf '[af] %s\n' "$*" >&2; }
 die() { printf '[af] error: %s\n' "$*" >&2; exit 1; }
