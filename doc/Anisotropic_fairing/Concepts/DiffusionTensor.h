@@ -26,7 +26,8 @@ in `Quadrature_point_geometry::prefiltered_t1` etc. (Bajaj and Xu's prefiltered 
 
 A model may also have `bool normal_motion_only() const`: when it returns `true`, each step's displacement
 of a control point loses its component in the limit tangent plane at that vertex (in the coupled mode, in
-\f$\mathbb{R}^{3+d}\f$; of \f$M_\varepsilon\f$ when `prefilter_time()` > 0), so that the surface moves along
+\f$\mathbb{R}^{3+d}\f$; of \f$M_\varepsilon\f$ when `prefilter_time()` > 0; with the linear element, the plane
+of Loop's closed-form tangent masks applied to the mesh's vertices), so that the surface moves along
 its normal only; the report's
 `Fairing_report::normal_motion_only` says so. A tensor that varies along the surface moves points
 tangentially too, which only reparametrises the surface in the continuum but can fold it on noisy meshes

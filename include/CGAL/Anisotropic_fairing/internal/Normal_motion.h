@@ -9,6 +9,7 @@
 // part, sum_a g(k_a) k_a, is the anisotropic flow itself. The tangent plane at a control vertex is the
 // limit tangent plane (closed-form tangent masks) of the control mesh given, in R^kappa for the columns
 // that span the surface: the prefiltered surface M_eps when the tensor has one, the current one otherwise.
+// The linear element uses the same masks on its vertices: a smooth estimate of the vertex normal.
 
 #ifndef CGAL_ANISOTROPIC_FAIRING_INTERNAL_NORMAL_MOTION_H
 #define CGAL_ANISOTROPIC_FAIRING_INTERNAL_NORMAL_MOTION_H
