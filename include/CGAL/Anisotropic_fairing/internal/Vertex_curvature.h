@@ -28,8 +28,9 @@ namespace CGAL {
 namespace Anisotropic_fairing {
 namespace internal {
 
-/// The geometry at a point of a face of a surface in R^3 from its derivatives t = (x_1, x_2, x_11, x_12, x_22).
-inline Quadrature_point_geometry point_geometry_3(const double (&t)[5][3], std::size_t face, int point)
+/// The geometry at a point of a face of a surface in R^3 from its derivatives, the rows t[0..4] =
+/// (x_1, x_2, x_11, x_12, x_22).
+inline Quadrature_point_geometry point_geometry_3(const double (*t)[3], std::size_t face, int point)
 {
   Quadrature_point_geometry g;
   g.face = face; g.point = point; g.dimension = 3;
