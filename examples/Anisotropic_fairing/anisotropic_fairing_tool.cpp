@@ -1339,45 +1339,47 @@ int run(const Options& o, Run_record& r)
          "fairing " + o.input + " failed (" + AF::to_string(r.report.status) + "): " +
          (r.report.message.empty() ? std::string("no detail") : r.report.message));
 
-  if(o.curvature)
+  if(o.curvature || limit_from_control)
   {
-    // the mesh holds the faired control points (or, --output control or --mode attributes, the points
-    // written, whose limit surface is the faired or fixed surface); the averages at extraordinary
-    // vertices use the run's quadrature
+    // The mesh holds the faired control points (or, with --output control or --mode attributes, the
+    // points written, whose limit surface is the faired or fixed surface). The limit surface is a
+    // snapshot: one serves the curvature and the limit positions and normals. Only the curvature's
+    // averages use the quadrature (the run's degree); otherwise degree 4 is the cheapest set-up.
     typedef AF::Loop_limit_surface<Mesh> Limit;
-    const Limit limit(mesh, AF::parameters::quadrature_degree(o.quadrature_degree));
-    std::vector<Limit::Curvature> values(mesh.number_of_vertices());
-    limit.vertex_curvatures(CGAL::make_property_map(values));
-    auto k1 = mesh.add_property_map<Vertex_index, double>(curvature_properties[0], 0.0).first;
-    auto k2 = mesh.add_property_map<Vertex_index, double>(curvature_properties[1], 0.0).first;
-    auto h = mesh.add_property_map<Vertex_index, double>(curvature_properties[2], 0.0).first;
-    for(Vertex_index v : mesh.vertices())
+    const Limit limit(mesh, AF::parameters::quadrature_degree(o.curvature ? o.quadrature_degree : 4));
+    if(o.curvature)
     {
-      const Limit::Curvature& c = values[std::size_t(v)];
-      k1[v] = c.k1;
-      k2[v] = c.k2;
-      h[v] = 0.5 * (c.k1 + c.k2);
-    }
-    r.curvature = true;
-  }
-  if(limit_from_control)
-  {
-    // the mesh holds the faired control points; the quadrature is not used here (degree 4 is the cheapest set-up)
-    AF::Loop_limit_surface<Mesh> limit(mesh, AF::parameters::quadrature_degree(4));
-    if(exact_limit_normals) limit.limit_normals(mesh.property_map<Vertex_index, Vector>("v:normal").first);
-    // as in the library's limit output, boundary and isolated vertices keep their (held) positions and attributes
-    std::vector<std::pair<Vertex_index, Point>> held;
-    std::vector<std::pair<Vertex_index, std::vector<double>>> held_values;
-    for(Vertex_index v : mesh.vertices())
-      if(mesh.is_border(v) || mesh.is_isolated(v))
+      std::vector<Limit::Curvature> values(mesh.number_of_vertices());
+      limit.vertex_curvatures(CGAL::make_property_map(values));
+      auto k1 = mesh.add_property_map<Vertex_index, double>(curvature_properties[0], 0.0).first;
+      auto k2 = mesh.add_property_map<Vertex_index, double>(curvature_properties[1], 0.0).first;
+      auto h = mesh.add_property_map<Vertex_index, double>(curvature_properties[2], 0.0).first;
+      for(Vertex_index v : mesh.vertices())
       {
-        held.emplace_back(v, mesh.point(v));
-        if(fair_attributes) held_values.emplace_back(v, attribute_values[std::size_t(v)]);
+        const Limit::Curvature& c = values[std::size_t(v)];
+        k1[v] = c.k1;
+        k2[v] = c.k2;
+        h[v] = 0.5 * (c.k1 + c.k2);
       }
-    limit.limit_positions(mesh.points());
-    if(fair_attributes) limit.limit_values(attribute_map, attribute_map);
-    for(const auto& h : held) mesh.point(h.first) = h.second;
-    for(const auto& h : held_values) attribute_values[std::size_t(h.first)] = h.second;
+      r.curvature = true;
+    }
+    if(limit_from_control)
+    {
+      if(exact_limit_normals) limit.limit_normals(mesh.property_map<Vertex_index, Vector>("v:normal").first);
+      // as in the library's limit output, boundary and isolated vertices keep their (held) positions and attributes
+      std::vector<std::pair<Vertex_index, Point>> held;
+      std::vector<std::pair<Vertex_index, std::vector<double>>> held_values;
+      for(Vertex_index v : mesh.vertices())
+        if(mesh.is_border(v) || mesh.is_isolated(v))
+        {
+          held.emplace_back(v, mesh.point(v));
+          if(fair_attributes) held_values.emplace_back(v, attribute_values[std::size_t(v)]);
+        }
+      limit.limit_positions(mesh.points());
+      if(fair_attributes) limit.limit_values(attribute_map, attribute_map);
+      for(const auto& h : held) mesh.point(h.first) = h.second;
+      for(const auto& h : held_values) attribute_values[std::size_t(h.first)] = h.second;
+    }
   }
   if(info.has_normals)
   {
