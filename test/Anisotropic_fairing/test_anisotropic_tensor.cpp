@@ -74,6 +74,17 @@ double middle_radius(const Mesh& c, int n, int m)
   return r / count;
 }
 
+// dr/dt of the middle of the cylinder c0 (n x m) over one step of tau with the tensor D; -1e300 on failure
+double cylinder_rate(const Mesh& c0, int n, int m, double tau, const AF::Anisotropic_diffusion_tensor& D)
+{
+  Mesh c = c0;
+  const AF::Fairing_report r = AF::anisotropic_fairing(c,
+      AF::parameters::diffusion_tensor(D).time_step(tau).number_of_iterations(1u).linear_solver(AF::Linear_solver::CHOLESKY)
+                     .output_positions(AF::Output_positions::CONTROL_POINTS).stopping_criteria(AF::Stopping_criteria::none()));
+  AF_CHECK(r.succeeded(), "cylinder step");
+  return r.succeeded() ? (middle_radius(c, n, m) - middle_radius(c0, n, m)) / tau : -1e300;
+}
+
 void cylinder_oracle()
 {
   const int n = 32, m = 30;
@@ -82,13 +93,8 @@ void cylinder_oracle()
   const double tau = 1e-4;
   for(double lambda : { std::numeric_limits<double>::infinity(), 0.5, 0.25 })
   {
-    Mesh c = c0;
     const AF::Anisotropic_diffusion_tensor D(lambda, false, 0);
-    const AF::Fairing_report r = AF::anisotropic_fairing(c,
-        AF::parameters::diffusion_tensor(D).time_step(tau).number_of_iterations(1u).linear_solver(AF::Linear_solver::CHOLESKY)
-                       .output_positions(AF::Output_positions::CONTROL_POINTS).stopping_criteria(AF::Stopping_criteria::none()));
-    AF_CHECK(r.succeeded(), "cylinder step");
-    const double rate = (middle_radius(c, n, m) - r0) / tau;
+    const double rate = cylinder_rate(c0, n, m, tau, D);
     const double predicted = -D.edge_stopping(1 / r0) / r0;
     std::printf("cylinder (r0 = %.5f), lambda = %g: dr/dt = %.5f, predicted -g(1/r)/r = %.5f (g = %.4f), rel. error %.2e\n",
                 r0, lambda, rate, predicted, D.edge_stopping(1 / r0), std::abs(rate - predicted) / std::abs(predicted));
@@ -98,13 +104,8 @@ void cylinder_oracle()
   // of eps: r_eps = (r0 + sqrt(r0^2 - 4 eps))/2, so the rate is -g(1/r_eps)/r0
   const double eps = 1e-3, r_eps = 0.5 * (r0 + std::sqrt(r0 * r0 - 4 * eps));
   {
-    Mesh c = c0;
     const AF::Anisotropic_diffusion_tensor D(0.5, false, eps);
-    const AF::Fairing_report r = AF::anisotropic_fairing(c,
-        AF::parameters::diffusion_tensor(D).time_step(tau).number_of_iterations(1u).linear_solver(AF::Linear_solver::CHOLESKY)
-                       .output_positions(AF::Output_positions::CONTROL_POINTS).stopping_criteria(AF::Stopping_criteria::none()));
-    AF_CHECK(r.succeeded(), "cylinder step with the prefilter");
-    const double rate = (middle_radius(c, n, m) - r0) / tau;
+    const double rate = cylinder_rate(c0, n, m, tau, D);
     const double predicted = -D.edge_stopping(1 / r_eps) / r0;
     std::printf("cylinder, lambda = 0.5, prefilter eps = %g (r_eps = %.5f): dr/dt = %.5f, predicted -g(1/r_eps)/r0 = %.5f, "
                 "rel. error %.2e\n", eps, r_eps, rate, predicted, std::abs(rate - predicted) / std::abs(predicted));
