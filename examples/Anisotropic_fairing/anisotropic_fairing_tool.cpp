@@ -107,20 +107,30 @@ const char* const usage_text =
 "function at the vertices (--output limit: Loop limit masks; even 0 steps smooth them) or the\n"
 "control values (--output control).\n"
 "\n"
+"Without --time-step and --relative-time-step the parameters are automatic: the program estimates\n"
+"the noise of the mesh itself, fairs with the anisotropic tensor (unless --tensor says otherwise) in\n"
+"steps of 0.1 h^2 (h: the mean edge length) and stops when the surface has moved off the input by\n"
+"the noise (a noise-free mesh is left nearly as it is); the report's choices say what was chosen.\n"
+"\n"
 "options:\n"
 "  --time-step T             time step tau in model units (length^2), as in the paper\n"
-"  --relative-time-step R    time step in units of l^2, l = sqrt(area/4pi) of the input (default: the\n"
-"                            library default, 1e-3); give at most one of the two\n"
-"  --steps N                 the most time steps to run (default 10)\n"
-"  --stop auto|off           auto (default): the criteria (27)-(29) and a steady-state test may end the\n"
-"                            run earlier; off: exactly N steps\n"
+"  --relative-time-step R    time step in units of l^2, l = sqrt(area/4pi) of the input (per connected\n"
+"                            component); give at most one of the two (neither: automatic parameters)\n"
+"  --steps N                 the most time steps to run (default 10; with automatic parameters 200)\n"
+"  --stop auto|noise|paper|off   auto (default): noise with automatic parameters, paper otherwise;\n"
+"                            noise: stop when the surface has moved off the input by the estimated\n"
+"                            noise; paper: the criteria (27)-(29) and a steady-state test; off: exactly\n"
+"                            N steps. A step that would fold the surface is retried with a smaller\n"
+"                            time step, and the run ends on the last sound surface if that fails\n"
 "  --fidelity W              fidelity weight omega in model units (1/time), as in the paper (default 0)\n"
 "  --relative-fidelity W     fidelity weight in units of 1/l^2; give at most one of the two\n"
 "  --element loop|linear     Loop limit-surface elements (default) or linear (P1) elements\n"
 "  --output limit|control    write the points of the faired limit surface (default) or the faired\n"
 "                            control points (the mesh whose Loop limit surface is the faired surface)\n"
-"  --tensor isotropic|anisotropic   the diffusion tensor: isotropic (default: mean-curvature flow) or\n"
-"                            anisotropic (curvature-driven, feature-preserving: Anisotropic_diffusion_tensor)\n"
+"  --tensor isotropic|anisotropic   the diffusion tensor: isotropic (mean-curvature flow; the default\n"
+"                            with a time step) or anisotropic (curvature-driven, feature-preserving:\n"
+"                            Anisotropic_diffusion_tensor; the default with automatic parameters, its\n"
+"                            threshold and prefilter then chosen from the mesh unless given)\n"
 "  --lambda L                the anisotropic tensor's feature threshold, a curvature in units of 1/l\n"
 "                            (default 2): principal curvatures above it are diffused less\n"
 "  --epsilon E               the anisotropic tensor reads curvature on the surface after an isotropic\n"
@@ -160,14 +170,16 @@ const char* const usage_text =
 "Options also accept the form --option=value.\n"
 "\n"
 "JSON report: status, message, input, output, vertices, faces, element, output_positions, tensor, lambda,\n"
-"lambda_model_units, epsilon, tangential_motion,\n"
+"lambda_model_units, epsilon, tangential_motion, automatic_parameters, choices, noise_level,\n"
+"noise_deviation, noise_displacement, components, rejected_steps,\n"
 "solver, requested_solver, stop, max_steps, quadrature_degree, time_step, relative_time_step, scale,\n"
 "fidelity_weight, relative_fidelity_weight, mean_edge_length, normals, curvature, mode, attributes,\n"
 "attribute_dimension, attribute_weight, boundary_handling,\n"
 "boundary_vertices, boundary_held_vertices, boundary_loops, isolated_vertices, constrained_vertices,\n"
 "stop_reason, initial {area,\n"
 "energy, H_integral}, steps [{step, time, solver_iterations, residual, area, energy, H_integral,\n"
-"max_displacement, step_displacement, assemble_seconds, solve_seconds, direct_solve}], setup_seconds,\n"
+"max_displacement, step_displacement, assemble_seconds, solve_seconds, direct_solve, time_step,\n"
+"noise_displacement}], setup_seconds,\n"
 "total_seconds (the fairing call), wall_seconds (the whole program). Unknown values are null.\n"
 "\n"
 "exit status: 0 success; 1 failure (unreadable input, a mesh that is not a 2-manifold triangle mesh,\n"
@@ -206,13 +218,17 @@ std::string one_line(std::string s)
 // ------------------------------------------------------------------------------------------------
 enum class Format { OFF, OBJ, PLY };
 
+struct Options;
+bool automatic_parameters(const Options& o);
+
 struct Options
 {
   std::string input, output, report;
   bool has_time_step = false, has_relative_time_step = false;
   double time_step = 0, relative_time_step = 0;
   unsigned int steps = 10;
-  bool stop_auto = true;
+  bool has_steps = false;
+  std::string stop = "auto";   // auto, noise, paper, off
   bool has_fidelity = false, has_relative_fidelity = false;
   double fidelity = 0, relative_fidelity = 0;
   AF::Finite_element element = AF::Finite_element::LOOP;
@@ -220,7 +236,7 @@ struct Options
   AF::Linear_solver solver = AF::Linear_solver::AUTOMATIC;
   AF::Boundary_handling boundary = AF::Boundary_handling::HOLD_BOUNDARY_CURVE;
   int quadrature_degree = 8;
-  bool anisotropic = false, has_lambda = false, has_epsilon = false;
+  bool anisotropic = false, has_tensor = false, has_lambda = false, has_epsilon = false;
   bool normal_motion_only = true, has_tangential_motion = false;   // --tangential-motion remove|keep
   double lambda = 2.0, epsilon = 1e-3;
   std::vector<std::string> attributes;   // the names given to --attributes, in their order
@@ -232,6 +248,13 @@ struct Options
   bool quiet = false;
   bool help = false;
 };
+
+bool automatic_parameters(const Options& o) { return !o.has_time_step && !o.has_relative_time_step; }
+// the anisotropic tensor whose threshold and prefilter are chosen from the mesh
+bool automatic_tensor(const Options& o)
+{
+  return automatic_parameters(o) && o.anisotropic && !o.has_lambda && !o.has_epsilon && o.normal_motion_only;
+}
 
 // --mode, or its default: separate with --attributes, geometry without
 AF::Attribute_mode effective_mode(const Options& o)
@@ -357,13 +380,12 @@ void parse_arguments(int argc, char** argv, Options& o)
         if(!(o.relative_time_step > 0)) usage_error("--relative-time-step must be positive");
         o.has_relative_time_step = true;
       }
-      else if(arg == "--steps") o.steps = parse_unsigned(arg, next());
+      else if(arg == "--steps") { o.steps = parse_unsigned(arg, next()); o.has_steps = true; }
       else if(arg == "--stop")
       {
-        const std::string v = next();
-        if(v == "auto") o.stop_auto = true;
-        else if(v == "off") o.stop_auto = false;
-        else usage_error("--stop expects auto or off, not '" + v + "'");
+        o.stop = next();
+        if(o.stop != "auto" && o.stop != "noise" && o.stop != "paper" && o.stop != "off")
+          usage_error("--stop expects auto, noise, paper or off, not '" + o.stop + "'");
       }
       else if(arg == "--fidelity")
       {
@@ -394,6 +416,7 @@ void parse_arguments(int argc, char** argv, Options& o)
       else if(arg == "--tensor")
       {
         const std::string v = next();
+        o.has_tensor = true;
         if(v == "anisotropic") o.anisotropic = true;
         else if(v == "isotropic") o.anisotropic = false;
         else usage_error("--tensor expects isotropic or anisotropic, not '" + v + "'");
@@ -474,9 +497,13 @@ void parse_arguments(int argc, char** argv, Options& o)
   if(o.has_fidelity && o.has_relative_fidelity) usage_error("give either --fidelity or --relative-fidelity, not both");
   if(o.attributes.empty() && (o.mode == AF::Attribute_mode::COUPLED || o.mode == AF::Attribute_mode::ATTRIBUTES_ONLY))
     usage_error(std::string("--mode ") + mode_name(o.mode) + " needs --attributes");
-  if(o.has_lambda && !o.anisotropic) usage_error("--lambda needs --tensor anisotropic");
-  if(o.has_epsilon && !o.anisotropic) usage_error("--epsilon needs --tensor anisotropic");
-  if(o.has_tangential_motion && !o.anisotropic) usage_error("--tangential-motion needs --tensor anisotropic");
+  // without a time step the parameters are automatic: the anisotropic tensor unless --tensor is given
+  if(automatic_parameters(o) && !o.has_tensor) o.anisotropic = true;
+  if(!o.has_steps && automatic_parameters(o)) o.steps = AF::automatic_maximum_steps;
+  const bool asked_anisotropic = o.has_tensor && o.anisotropic;   // the tensor's options need it said
+  if(o.has_lambda && !asked_anisotropic) usage_error("--lambda needs --tensor anisotropic");
+  if(o.has_epsilon && !asked_anisotropic) usage_error("--epsilon needs --tensor anisotropic");
+  if(o.has_tangential_motion && !asked_anisotropic) usage_error("--tangential-motion needs --tensor anisotropic");
   Format f;
   if(!format_of(o.input, f)) usage_error("INPUT must be an .off, .obj or .ply file: " + o.input);
   if(!format_of(o.output, f)) usage_error("OUTPUT must be an .off, .obj or .ply file: " + o.output);
@@ -1162,13 +1189,15 @@ std::string report_json(const Options& o, const Run_record& r, double wall_secon
   kv("element", json_string(element_name(o.element)));
   kv("output_positions", json_string(output_name(o.output_positions)));
   kv("tensor", json_string(o.anisotropic ? "anisotropic" : "isotropic"));
-  kv("lambda", o.anisotropic ? json_number(o.lambda) : "null");
-  kv("lambda_model_units", o.anisotropic && ran && f.scale > 0 ? json_number(o.lambda / f.scale) : "null");
-  kv("epsilon", o.anisotropic ? json_number(o.epsilon) : "null");
+  // the values the run used (chosen from the mesh when automatic), in units of l, l^2 and 1/length
+  const bool lambda_known = o.anisotropic && (!automatic_tensor(o) || ran);
+  kv("lambda", lambda_known ? json_number(automatic_tensor(o) ? f.feature_threshold * f.scale : o.lambda) : "null");
+  kv("lambda_model_units", o.anisotropic && ran && f.scale > 0 ? json_number(f.feature_threshold) : "null");
+  kv("epsilon", lambda_known ? json_number(automatic_tensor(o) ? f.prefilter_time / scale2 : o.epsilon) : "null");
   kv("tangential_motion", json_string(o.anisotropic && o.normal_motion_only ? "removed" : "kept"));
   kv("solver", ran ? json_string(f.used_cholesky ? "cholesky" : "cg") : "null");
   kv("requested_solver", json_string(solver_name(o.solver)));
-  kv("stop", json_string(o.stop_auto ? "auto" : "off"));
+  kv("stop", json_string(o.stop));
   kv("max_steps", json_count(o.steps));
   kv("quadrature_degree", std::to_string(o.quadrature_degree));
   kv("time_step", ran ? json_number(f.time_step) : (o.has_time_step ? json_number(o.time_step) : "null"));
@@ -1196,6 +1225,13 @@ std::string report_json(const Options& o, const Run_record& r, double wall_secon
   kv("isolated_vertices", ran ? json_count(f.isolated_vertices) : "null");
   kv("constrained_vertices", ran ? json_count(f.constrained_vertices) : "null");
   kv("stop_reason", ran ? json_string(AF::to_string(f.stop_reason)) : "null");
+  kv("automatic_parameters", automatic_parameters(o) ? "true" : "false");
+  kv("choices", ran ? json_string(f.choices) : "null");
+  kv("noise_level", ran ? json_number(f.noise_level) : "null");
+  kv("noise_deviation", ran ? json_number(f.noise_deviation) : "null");
+  kv("noise_displacement", ran ? json_number(f.noise_displacement) : "null");
+  kv("components", ran ? json_count(f.components) : "null");
+  kv("rejected_steps", ran ? json_count(f.rejected_steps) : "null");
   if(ran)
     kv("initial", "{\"area\": " + json_number(f.initial.area) + ", \"energy\": " + json_number(f.initial.energy) +
                   ", \"H_integral\": " + json_number(f.initial.H_integral) + "}");
@@ -1214,7 +1250,9 @@ std::string report_json(const Options& o, const Run_record& r, double wall_secon
           << ", \"step_displacement\": " << json_number(s.step_displacement)
           << ", \"assemble_seconds\": " << json_number(s.assemble_seconds)
           << ", \"solve_seconds\": " << json_number(s.solve_seconds)
-          << ", \"direct_solve\": " << (s.direct_solve ? "true" : "false") << "}";
+          << ", \"direct_solve\": " << (s.direct_solve ? "true" : "false")
+          << ", \"time_step\": " << json_number(s.time_step)
+          << ", \"noise_displacement\": " << json_number(s.noise_displacement) << "}";
   }
   steps << (f.steps.empty() ? "]" : "\n  ]");
   kv("steps", steps.str());
@@ -1313,8 +1351,12 @@ int run(const Options& o, Run_record& r)
     return AF::anisotropic_fairing(mesh, mesh.points(), attribute_map, np);
   };
 
+  const AF::Stopping_criteria stop = o.stop == "off" ? AF::Stopping_criteria::none()
+                                  : o.stop == "paper" ? AF::Stopping_criteria()
+                                  : o.stop == "noise" || automatic_parameters(o) ? AF::Stopping_criteria::automatic()
+                                  : AF::Stopping_criteria();
   const auto base = AF::parameters::number_of_iterations(max_steps)
-                      .stopping_criteria(o.stop_auto ? AF::Stopping_criteria() : AF::Stopping_criteria::none())
+                      .stopping_criteria(stop)
                       .finite_element(o.element)
                       .output_positions(library_output)
                       .linear_solver(o.solver)
@@ -1325,8 +1367,10 @@ int run(const Options& o, Run_record& r)
                       .callback(progress);
   try
   {
-    r.report = o.anisotropic ? with_time_step(base.diffusion_tensor(AF::Anisotropic_diffusion_tensor(o.lambda, true, o.epsilon, o.normal_motion_only)), o, fair)
-                             : with_time_step(base, o, fair);
+    AF::Anisotropic_diffusion_tensor tensor(o.lambda, true, o.epsilon, o.normal_motion_only);
+    if(automatic_tensor(o)) tensor = AF::Anisotropic_diffusion_tensor::automatic();
+    r.report = o.anisotropic ? with_time_step(base.diffusion_tensor(tensor), o, fair)
+                             : with_time_step(base.diffusion_tensor(AF::Isotropic_diffusion_tensor()), o, fair);
   }
   catch(const AF::Input_error& e)
   {
@@ -1445,6 +1489,10 @@ int run(const Options& o, Run_record& r)
   }
   for(const std::string& w : warnings)
     std::fprintf(stderr, "anisotropic_fairing: warning: %s\n", one_line(w).c_str());
+  if(!quiet && !r.report.choices.empty())
+    std::fprintf(stderr, "anisotropic_fairing: automatic parameters: %s\n", one_line(r.report.choices).c_str());
+  if(r.report.stop_reason == AF::Stop_reason::STEP_REJECTED)
+    std::fprintf(stderr, "anisotropic_fairing: warning: stopped early: %s\n", one_line(r.report.message).c_str());
   if(!quiet)
     std::fprintf(stderr, "anisotropic_fairing: wrote %s (%zu vertices, %zu steps, stopped: %s, %.3f s)\n",
                  o.output.c_str(), r.vertices, r.report.steps.size(), AF::to_string(r.report.stop_reason),

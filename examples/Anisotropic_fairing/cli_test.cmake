@@ -154,9 +154,10 @@ function(position_difference a b out_var)
   set(${out_var} ${worst} PARENT_SCOPE)
 endfunction()
 
-set(required_top_keys steps stop_reason total_seconds vertices faces mode attributes attribute_dimension attribute_weight)
+set(required_top_keys steps stop_reason total_seconds vertices faces mode attributes attribute_dimension attribute_weight
+                      automatic_parameters choices noise_level noise_deviation noise_displacement components rejected_steps)
 set(required_step_keys step time solver_iterations residual area energy H_integral max_displacement
-                       assemble_seconds solve_seconds)
+                       assemble_seconds solve_seconds time_step noise_displacement)
 
 # Checks that the report parses and has every required key; sets <prefix>_status, <prefix>_steps
 # (number of step objects), <prefix>_vertices and <prefix>_stop_reason.
@@ -392,15 +393,22 @@ endfunction()
 
 # ------------------------------------------------------------------------------------------------
 if(MODE STREQUAL "fairs_noisy_mesh")
-  # the main job's run (see scripts/af.sh)
+  # the main job's run (see scripts/af.sh): the default run, parameters chosen from the mesh
   set(output "${WORK_DIR}/fandisk_faired.off")
   set(report "${WORK_DIR}/fandisk_faired.json")
-  run_tool(r "${DATA_DIR}/fandisk_noisy.obj" "${output}" --tensor anisotropic --relative-time-step 3e-4 --steps 10 --report "${report}")
+  run_tool(r "${DATA_DIR}/fandisk_noisy.obj" "${output}" --report "${report}")
   check("exit code 0" r_rc EQUAL 0)
   check("output exists" EXISTS "${output}")
+  check("the automatic parameters are printed" r_err MATCHES "automatic parameters: noise 0\\.[0-9]+ h")
   check_report("${report}" rep)
   check("report status success" rep_status STREQUAL "success")
-  check("report has 1 to 10 steps" rep_steps GREATER 0 AND rep_steps LESS_EQUAL 10)
+  check("report has 1 to 20 steps" rep_steps GREATER 0 AND rep_steps LESS_EQUAL 20)
+  check("the run stops at the noise level" rep_stop_reason STREQUAL "noise_level")
+  file(READ "${report}" json)
+  check("automatic parameters reported" json MATCHES "\"automatic_parameters\": true,")
+  check("the anisotropic tensor by default" json MATCHES "\"tensor\": \"anisotropic\",")
+  check("the noise level reported" json MATCHES "\"noise_level\": 0\\.[0-9]+,")
+  check("the choices reported" json MATCHES "\"choices\": \"noise ")
   check("report vertices 6475" rep_vertices EQUAL 6475)
   check("report stop_reason set" rep_stop_reason MATCHES "^[a-z_]+$")
   if(EXISTS "${output}")
@@ -463,7 +471,7 @@ elseif(MODE STREQUAL "anisotropic_tensor")
   # --tensor anisotropic runs the curvature-driven tensor; its threshold is reported in both units
   set(output "${WORK_DIR}/anisotropic.off")
   run_tool(r "${DATA_DIR}/bumpy.off" "${output}" --tensor anisotropic --lambda 3 --epsilon 1e-3 --steps 2 --quiet
-           --report "${WORK_DIR}/anisotropic.json")
+           --relative-time-step 1e-3 --report "${WORK_DIR}/anisotropic.json")
   check("anisotropic: exit 0" r_rc EQUAL 0)
   check("anisotropic: output written" EXISTS "${output}")
   file(READ "${WORK_DIR}/anisotropic.json" json)
@@ -482,7 +490,8 @@ elseif(MODE STREQUAL "anisotropic_tensor")
   run_tool(r "${DATA_DIR}/bumpy.off" "${WORK_DIR}/bad.off" --tensor anisotropic --tangential-motion sideways)
   check_clean_failure("--tangential-motion sideways" "${r_rc}" "${r_err}" 2 "${WORK_DIR}/bad.off")
   # the same run with the isotropic tensor gives another result
-  run_tool(r "${DATA_DIR}/bumpy.off" "${WORK_DIR}/isotropic.off" --steps 2 --quiet --report "${WORK_DIR}/isotropic.json")
+  run_tool(r "${DATA_DIR}/bumpy.off" "${WORK_DIR}/isotropic.off" --tensor isotropic --relative-time-step 1e-3 --steps 2 --quiet
+           --report "${WORK_DIR}/isotropic.json")
   off_positions("${output}" pa)
   off_positions("${WORK_DIR}/isotropic.off" pi)
   check("anisotropic and isotropic results differ" NOT pa STREQUAL pi)

@@ -177,7 +177,7 @@ void constant_attribute(const Mesh& bumpy)
     auto c = m.add_property_map<Vertex, std::array<double, 2>>("v:c", { { 0.25, -3.0 } }).first;
     const std::vector<double> before = AF_test::coordinates(m);
     const AF::Fairing_report r = AF::anisotropic_fairing(m, m.points(), c,
-        AF::parameters::attribute_mode(mode).number_of_iterations(3u).stopping_criteria(AF::Stopping_criteria::none()));
+        AF::parameters::relative_time_step(1e-3).attribute_mode(mode).number_of_iterations(3u).stopping_criteria(AF::Stopping_criteria::none()));
     double worst = 0;
     for(auto v : m.vertices()) worst = std::max({ worst, std::abs(c[v][0] - 0.25), std::abs(c[v][1] + 3.0) });
     const double moved = AF_test::max_abs_difference(before, AF_test::coordinates(m));
@@ -194,13 +194,13 @@ void constant_attribute(const Mesh& bumpy)
   for(auto v : m.vertices()) c[v] = std::sin(m.point(v).x());
   const Mesh before = m;
   auto c0 = before.property_map<Vertex, double>("v:c").first;
-  AF::anisotropic_fairing(m, m.points(), c, AF::parameters::attribute_mode(AF::Attribute_mode::GEOMETRY_ONLY).number_of_iterations(2u));
+  AF::anisotropic_fairing(m, m.points(), c, AF::parameters::relative_time_step(1e-3).attribute_mode(AF::Attribute_mode::GEOMETRY_ONLY).number_of_iterations(2u));
   bool same = true;
   for(auto v : m.vertices()) same = same && c[v] == c0[v];
   AF_CHECK(same, "geometry only: the attribute map is not written");
   // coupled and attributes-only modes need an attribute map
   bool thrown = false;
-  try { AF::anisotropic_fairing(m, AF::parameters::attribute_mode(AF::Attribute_mode::COUPLED)); }
+  try { AF::anisotropic_fairing(m, AF::parameters::relative_time_step(1e-3).attribute_mode(AF::Attribute_mode::COUPLED)); }
   catch(const AF::Input_error& e) { thrown = e.kind() == AF::Input_error::INVALID_PARAMETER; }
   AF_CHECK(thrown, "coupled mode without an attribute map is refused");
 }
@@ -227,7 +227,7 @@ void value_type_case(const Mesh& mesh, const std::vector<std::array<double, 3>>&
   auto map = m.add_property_map<Vertex, Value>("v:attribute").first;
   for(auto v : m.vertices()) map[v] = make(data[std::size_t(v)]);
   const AF::Fairing_report r = AF::anisotropic_fairing(m, m.points(), map,
-      AF::parameters::attribute_mode(AF::Attribute_mode::ATTRIBUTES_ONLY).number_of_iterations(2u)
+      AF::parameters::relative_time_step(1e-3).attribute_mode(AF::Attribute_mode::ATTRIBUTES_ONLY).number_of_iterations(2u)
                      .stopping_criteria(AF::Stopping_criteria::none()));
   double worst = 0;
   for(auto v : m.vertices())
@@ -250,7 +250,7 @@ void value_types(const Mesh& bumpy)
   Mesh ref = bumpy;
   auto rmap = ref.add_property_map<Vertex, std::array<double, 3>>("v:r").first;
   for(auto v : ref.vertices()) rmap[v] = data[std::size_t(v)];
-  AF::anisotropic_fairing(ref, ref.points(), rmap, AF::parameters::attribute_mode(AF::Attribute_mode::ATTRIBUTES_ONLY)
+  AF::anisotropic_fairing(ref, ref.points(), rmap, AF::parameters::relative_time_step(1e-3).attribute_mode(AF::Attribute_mode::ATTRIBUTES_ONLY)
                                                        .number_of_iterations(2u).stopping_criteria(AF::Stopping_criteria::none()));
   std::vector<std::array<double, 3>> reference(bumpy.number_of_vertices());
   double overshoot = 0;
@@ -264,7 +264,7 @@ void value_types(const Mesh& bumpy)
   Mesh sref = bumpy;
   auto smap = sref.add_property_map<Vertex, double>("v:s").first;
   for(auto v : sref.vertices()) smap[v] = data[std::size_t(v)][0];
-  AF::anisotropic_fairing(sref, sref.points(), smap, AF::parameters::attribute_mode(AF::Attribute_mode::ATTRIBUTES_ONLY)
+  AF::anisotropic_fairing(sref, sref.points(), smap, AF::parameters::relative_time_step(1e-3).attribute_mode(AF::Attribute_mode::ATTRIBUTES_ONLY)
                                                         .number_of_iterations(2u).stopping_criteria(AF::Stopping_criteria::none()));
   std::vector<A3> scalar_reference(bumpy.number_of_vertices());
   for(auto v : sref.vertices()) scalar_reference[std::size_t(v)] = { { smap[v], 0, 0 } };
@@ -297,7 +297,7 @@ void value_types(const Mesh& bumpy)
   Mesh ref2 = bumpy;
   auto rmap2 = ref2.add_property_map<Vertex, std::array<double, 2>>("v:r2").first;
   for(auto v : ref2.vertices()) rmap2[v] = { { data[std::size_t(v)][0], data[std::size_t(v)][1] } };
-  AF::anisotropic_fairing(ref2, ref2.points(), rmap2, AF::parameters::attribute_mode(AF::Attribute_mode::ATTRIBUTES_ONLY)
+  AF::anisotropic_fairing(ref2, ref2.points(), rmap2, AF::parameters::relative_time_step(1e-3).attribute_mode(AF::Attribute_mode::ATTRIBUTES_ONLY)
                                                          .number_of_iterations(2u).stopping_criteria(AF::Stopping_criteria::none()));
   std::vector<A3> reference2(bumpy.number_of_vertices());
   for(auto v : ref2.vertices()) reference2[std::size_t(v)] = { { rmap2[v][0], rmap2[v][1], 0 } };
@@ -313,7 +313,7 @@ void value_types(const Mesh& bumpy)
   Mesh cref = bumpy;
   auto cmap = cref.add_property_map<Vertex, A3>("v:cr").first;
   for(auto v : cref.vertices()) cmap[v] = idata[std::size_t(v)];
-  AF::anisotropic_fairing(cref, cref.points(), cmap, AF::parameters::attribute_mode(AF::Attribute_mode::ATTRIBUTES_ONLY)
+  AF::anisotropic_fairing(cref, cref.points(), cmap, AF::parameters::relative_time_step(1e-3).attribute_mode(AF::Attribute_mode::ATTRIBUTES_ONLY)
                                                         .number_of_iterations(2u).stopping_criteria(AF::Stopping_criteria::none()));
   std::vector<A3> colour_reference(bumpy.number_of_vertices());
   std::size_t clamped = 0;
@@ -357,7 +357,7 @@ void coupled(const Mesh& bumpy)
   for(auto v : m.vertices()) c[v] = { { std::sin(2 * m.point(v).x()) + noise(rng), m.point(v).y() * m.point(v).z() } };
   const double weight = 0.7;
   const AF::Fairing_report r = AF::anisotropic_fairing(m, m.points(), c,
-      AF::parameters::attribute_mode(AF::Attribute_mode::COUPLED).attribute_weight(weight).number_of_iterations(1u)
+      AF::parameters::relative_time_step(1e-3).attribute_mode(AF::Attribute_mode::COUPLED).attribute_weight(weight).number_of_iterations(1u)
                      .stopping_criteria(AF::Stopping_criteria::none()));
   std::printf("coupled (kappa = 5): energy %.15g, 2 Area %.15g\n", r.initial.energy, 2 * r.initial.area);
   AF_CHECK(r.succeeded(), "coupled run");

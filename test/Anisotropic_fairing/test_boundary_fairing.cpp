@@ -188,7 +188,7 @@ void hemisphere()
   {
     Mesh m = input;
     const AF::Fairing_report r = AF::anisotropic_fairing(m,
-        AF::parameters::number_of_iterations(10u).boundary_handling(b).output_positions(AF::Output_positions::CONTROL_POINTS)
+        AF::parameters::relative_time_step(1e-3).number_of_iterations(10u).boundary_handling(b).output_positions(AF::Output_positions::CONTROL_POINTS)
                        .stopping_criteria(AF::Stopping_criteria::none()));
     AF_CHECK(r.succeeded() && r.steps.size() == 10, "hemisphere: 10 steps");
     const double moved = max_abs_difference(curve0, limit_boundary_curve(m));
@@ -213,7 +213,7 @@ void hemisphere()
   for(auto v : m.vertices()) f[v] = std::sin(3 * m.point(v).x()) + m.point(v).z();
   const Mesh before = m;
   auto f0 = before.property_map<Vertex, double>("v:f").first;
-  const AF::Fairing_report r = AF::anisotropic_fairing(m, m.points(), f, AF::parameters::number_of_iterations(5u));
+  const AF::Fairing_report r = AF::anisotropic_fairing(m, m.points(), f, AF::parameters::relative_time_step(1e-3).number_of_iterations(5u));
   AF_CHECK(r.succeeded(), "hemisphere with an attribute: " + r.message);
   std::size_t kept = 0, changed = 0;
   for(auto v : m.vertices())
@@ -231,7 +231,7 @@ void hemisphere()
   Polyhedron p;
   AF_CHECK(CGAL::IO::read_polygon_mesh(data_dir + "/hemisphere.off", p), "read hemisphere.off as Polyhedron_3");
   Mesh s = input;
-  const auto np = AF::parameters::number_of_iterations(3u).stopping_criteria(AF::Stopping_criteria::none());
+  const auto np = AF::parameters::relative_time_step(1e-3).number_of_iterations(3u).stopping_criteria(AF::Stopping_criteria::none());
   const AF::Fairing_report rp = AF::anisotropic_fairing(p, np);
   const AF::Fairing_report rs = AF::anisotropic_fairing(s, np);
   const double d = max_abs_difference(coordinates(p), coordinates(s));
@@ -241,7 +241,7 @@ void hemisphere()
 
   // P1 on a border: stopping criteria and the curvature integral (which leaves the border rows out) work
   Mesh q = input;
-  const AF::Fairing_report rq = AF::anisotropic_fairing(q, AF::parameters::number_of_iterations(200u)
+  const AF::Fairing_report rq = AF::anisotropic_fairing(q, AF::parameters::relative_time_step(1e-3).number_of_iterations(200u)
                                                                  .finite_element(AF::Finite_element::LINEAR));
   std::printf("hemisphere.off, P1, default stopping: %zu steps, stop %s, int|H|^2 %.4g -> %.4g\n", rq.steps.size(),
               AF::to_string(rq.stop_reason), rq.initial.H_integral, rq.steps.empty() ? 0.0 : rq.steps.back().H_integral);
@@ -278,7 +278,7 @@ void punched_icosphere()
   const std::vector<double> curve0 = limit_boundary_curve(m);
   const std::vector<double> before = coordinates(m);
   const AF::Fairing_report r = AF::anisotropic_fairing(m,
-      AF::parameters::number_of_iterations(10u).output_positions(AF::Output_positions::CONTROL_POINTS)
+      AF::parameters::relative_time_step(1e-3).number_of_iterations(10u).output_positions(AF::Output_positions::CONTROL_POINTS)
                      .stopping_criteria(AF::Stopping_criteria::none()));
   const double moved = max_abs_difference(curve0, limit_boundary_curve(m));
   std::printf("punched icosphere (%zu vertices, %zu loops, %zu border vertices, %zu held): limit boundary curve moved %.3g, "
@@ -338,7 +338,7 @@ void scans()
     for(auto v : m.vertices()) isolated += m.is_isolated(v) ? 1 : 0;
     const std::size_t loops = border_loops(m), borders = count_border_vertices(m);
     const Mesh input = m;
-    const AF::Fairing_report r = AF::anisotropic_fairing(m, AF::parameters::number_of_iterations(2u));
+    const AF::Fairing_report r = AF::anisotropic_fairing(m, AF::parameters::relative_time_step(1e-3).number_of_iterations(2u));
     std::size_t kept = 0, moved = 0;
     for(auto v : m.vertices())
     {
@@ -351,7 +351,10 @@ void scans()
                 s.file, m.number_of_vertices(), r.boundary_loops, r.boundary_vertices, r.isolated_vertices,
                 r.boundary_held_vertices, r.steps.size(), AF::to_string(r.status), kept, borders + isolated, moved,
                 r.total_seconds);
-    AF_CHECK(r.succeeded() && r.steps.size() == 2, std::string(s.file) + " fairs: " + r.message);
+    // (mean-curvature flow folds the camel head's scan where its triangulation has slivers: the step
+    // control then ends the run early on the last sound surface, and says so)
+    AF_CHECK(r.succeeded() && (r.steps.size() == 2 || r.stop_reason == AF::Stop_reason::STEP_REJECTED),
+             std::string(s.file) + " fairs: " + r.message);
     AF_CHECK(loops == s.loops && r.boundary_loops == loops, "boundary loops");
     AF_CHECK(isolated == s.isolated && r.isolated_vertices == isolated, "isolated vertices counted");
     AF_CHECK(r.boundary_vertices == borders, "border vertices counted");

@@ -70,6 +70,33 @@ public:
     : lambda_(lambda), epsilon_(epsilon), relative_(relative), normal_motion_only_(normal_motion_only),
       threshold_(lambda), prefilter_(epsilon) {}
 
+  /// The tensor `anisotropic_fairing()` uses when no tensor and no time step are given: its threshold
+  /// and prefilter time are chosen from the mesh (in units of the mean edge length h, from the noise the
+  /// package estimates; `Fairing_report::choices` says which) before the first step.
+  static Anisotropic_diffusion_tensor automatic()
+  {
+    Anisotropic_diffusion_tensor t;
+    t.automatic_ = true;
+    return t;
+  }
+
+  /// whether the threshold and prefilter time are still to be chosen from the mesh
+  bool is_automatic() const { return automatic_; }
+
+  /// sets the threshold and the prefilter time of an automatic tensor, relative to the length scale
+  /// given next to `set_length_scale()` (the mean edge length for automatic tensors); a threshold of
+  /// \f$+\infty\f$ and a prefilter time of 0 make it the isotropic tensor, with tangential motion kept
+  void choose(double lambda, double epsilon)
+  {
+    lambda_ = threshold_ = lambda;
+    epsilon_ = prefilter_ = epsilon;
+    if(std::isinf(lambda) && epsilon == 0) normal_motion_only_ = false;
+  }
+
+  /// the threshold \f$\lambda\f$ and the prefilter time \f$\varepsilon\f$ as given (or chosen), before `set_length_scale()`
+  double lambda() const { return lambda_; }
+  double epsilon() const { return epsilon_; }
+
   /// whether `anisotropic_fairing()` removes the tangential part of each step's displacement
   bool normal_motion_only() const { return normal_motion_only_; }
 
@@ -77,7 +104,7 @@ public:
   /// \f$\varepsilon\ell^2\f$; the mean curvature below which \f$h\f$ is undefined is \f$10^{-10}/\ell\f$
   void set_length_scale(double ell)
   {
-    if(relative_) { threshold_ = lambda_ / ell; prefilter_ = epsilon_ * ell * ell; }
+    if(relative_) { threshold_ = lambda_ / ell; prefilter_ = epsilon_ * ell * ell; }   // (an infinite lambda stays infinite)
     undefined_ = 1e-10 / ell;
   }
 
@@ -88,13 +115,7 @@ public:
   double threshold() const { return threshold_; }
 
   /// the edge-stopping function \f$g\f$
-  double edge_stopping(double s) const
-  {
-    const double a = std::abs(s);
-    if(!(a > threshold_)) return 1.0;   // also for an infinite threshold
-    const double d = (a - threshold_) / threshold_;
-    return 1.0 / (1.0 + d * d);
-  }
+  double edge_stopping(double s) const { return edge_stopping(s, threshold_); }
 
   /// returns \f$A = G^{-1} + \sum_a (g(k_a) - 1)\,\hat c_a \hat c_a^T\f$: the \f$k_a\f$ and \f$c_a\f$ of the
   /// prefiltered surface when the point carries it, re-orthonormalised in the current metric
@@ -113,10 +134,11 @@ public:
       for(int c = 0; c < q.dimension; ++c)
       { p.g11 += p.t1[c] * p.t1[c]; p.g12 += p.t1[c] * p.t2[c]; p.g22 += p.t2[c] * p.t2[c]; }
       p.det = p.g11 * p.g22 - p.g12 * p.g12;
-      pc = principal_curvatures(p, undefined_);
+      pc = principal_curvatures(p, relative_ ? undefined_ / q.component_scale : undefined_);
     }
-    else pc = principal_curvatures(q, undefined_);
+    else pc = principal_curvatures(q, relative_ ? undefined_ / q.component_scale : undefined_);
     if(!pc.defined) return A;
+    const double threshold = relative_ ? threshold_ / q.component_scale : threshold_;
     // Gram-Schmidt in the current metric: c^T G c
     auto dot = [&](const std::array<double, 2>& a, const std::array<double, 2>& b) {
       return a[0] * b[0] * q.g11 + (a[0] * b[1] + a[1] * b[0]) * q.g12 + a[1] * b[1] * q.g22;
@@ -130,7 +152,7 @@ public:
     const double n2 = std::sqrt(dot(c2, c2));
     if(!(n2 > 0)) return A;
     c2 = { { c2[0] / n2, c2[1] / n2 } };
-    const double w1 = edge_stopping(pc.k1) - 1, w2 = edge_stopping(pc.k2) - 1;
+    const double w1 = edge_stopping(pc.k1, threshold) - 1, w2 = edge_stopping(pc.k2, threshold) - 1;
     A.a11 += w1 * c1[0] * c1[0] + w2 * c2[0] * c2[0];
     A.a12 += w1 * c1[0] * c1[1] + w2 * c2[0] * c2[1];
     A.a22 += w1 * c1[1] * c1[1] + w2 * c2[1] * c2[1];
@@ -138,8 +160,17 @@ public:
   }
 
 private:
+  static double edge_stopping(double s, double threshold)
+  {
+    const double a = std::abs(s);
+    if(!(a > threshold)) return 1.0;   // also for an infinite threshold
+    const double d = (a - threshold) / threshold;
+    return 1.0 / (1.0 + d * d);
+  }
+
   double lambda_, epsilon_;
   bool relative_, normal_motion_only_;
+  bool automatic_ = false;
   double threshold_, prefilter_;
   double undefined_ = 0;
 };

@@ -22,7 +22,8 @@ enum class Fairing_status {
   SOLVER_FAILED,      ///< the linear solver failed (no convergence, or factorisation failure)
   NON_FINITE_VALUE,   ///< a NaN or infinite value appeared in the solution
   DEGENERATE_METRIC,  ///< the surface pinched: \f$\sqrt{\det G} \le 0\f$ (or not finite) at a quadrature point
-  COLLAPSED           ///< the surface shrank to (almost) nothing: area below \f$10^{-8}\f$ of the initial one
+  COLLAPSED,          ///< a connected component of the surface shrank to (almost) nothing: area below 1% of its initial one
+  FOLDED              ///< the first step folded the surface (or made \f$\int|H|^2\f$ explode) even when retried with 1/1024 of the time step
 };
 
 /// \ingroup PkgAnisotropicFairingFunctions
@@ -35,7 +36,9 @@ enum class Stop_reason {
   STEADY_STATE,         ///< the flow stopped moving
   CALLBACK,             ///< the callback asked to stop
   NO_FREE_VERTEX,       ///< every vertex is held (constrained or on a border): nothing can move, no step is taken
-  FAILURE               ///< see `Fairing_report::status`
+  FAILURE,              ///< see `Fairing_report::status`
+  NOISE_LEVEL,          ///< the written surface moved off the input by the estimated noise (`Stopping_criteria::noise_discrepancy`); also before any step, when the limit surface of the input already does
+  STEP_REJECTED         ///< a step would have left an unsound surface (folded, pinched, overflowing, \f$\int|H|^2\f$ exploding) even with 1/1024 of the time step: the run ended on the last sound surface, and `Fairing_report::message` says what failed
 };
 
 /// \ingroup PkgAnisotropicFairingFunctions
@@ -51,6 +54,8 @@ inline const char* to_string(Stop_reason r)
     case Stop_reason::STEADY_STATE: return "steady_state";
     case Stop_reason::CALLBACK: return "callback";
     case Stop_reason::NO_FREE_VERTEX: return "no_free_vertex";
+    case Stop_reason::NOISE_LEVEL: return "noise_level";
+    case Stop_reason::STEP_REJECTED: return "step_rejected";
     default: return "failure";
   }
 }
@@ -65,6 +70,7 @@ inline const char* to_string(Fairing_status s)
     case Fairing_status::SOLVER_FAILED: return "solver_failed";
     case Fairing_status::NON_FINITE_VALUE: return "non_finite_value";
     case Fairing_status::DEGENERATE_METRIC: return "degenerate_metric";
+    case Fairing_status::FOLDED: return "folded";
     default: return "collapsed";
   }
 }
@@ -77,7 +83,8 @@ Statistics of one time step \f$t_{n-1} \to t_n\f$; the geometric quantities are 
 struct Fairing_step
 {
   std::size_t step = 0;         ///< n (1 for the first step)
-  double time = 0;              ///< \f$t_n = n\tau\f$, model units
+  double time = 0;              ///< \f$t_n\f$, the sum of the time steps taken (of the largest connected component), model units
+  double time_step = 0;         ///< the time step of this step: \f$\tau\f$, or a fraction of it after a rejected step
   int solver_iterations = 0;    ///< CG iterations (the largest over the columns), 1 for a direct solve
   double residual = 0;          ///< largest relative residual \f$\|b - AX\|/\|b\|\f$ over the columns
   double area = 0;              ///< area of the surface
@@ -88,6 +95,7 @@ struct Fairing_step
   double assemble_seconds = 0;  ///< wall time to assemble the system of this step (for the last step, plus the final surface's statistics)
   double solve_seconds = 0;     ///< wall time to solve it
   bool direct_solve = false;    ///< solved by the sparse factorisation (else by conjugate gradients)
+  double noise_displacement = 0;///< how far the written surface moved off the input along the input's normals, in units of the local edge length (robust deviation; see `Fairing_report::noise_level`); 0 without the noise criterion
 };
 
 /*!
@@ -98,7 +106,7 @@ struct Fairing_report
 {
   Fairing_status status = Fairing_status::SUCCESS; ///< how the run ended
   Stop_reason stop_reason = Stop_reason::MAXIMUM_STEPS; ///< why it ended
-  std::string message;            ///< a one-line explanation of a failure (empty on success)
+  std::string message;            ///< a one-line explanation of a failure, or of a run that ended early on the last sound surface (`Stop_reason::STEP_REJECTED`); empty otherwise
   std::vector<Fairing_step> steps;///< one entry per completed step
   Fairing_step initial;           ///< area, energy and \f$\int|H|^2\f$ of the input surface (step 0)
   double scale = 0;               ///< \f$\ell = \sqrt{\mathrm{Area}(M(0))/4\pi}\f$, the length unit of relative parameters
@@ -116,6 +124,15 @@ struct Fairing_report
   std::size_t attribute_dimension = 0;  ///< number of attribute components faired (0 without attributes or in `GEOMETRY_ONLY`)
   std::size_t isolated_vertices = 0;    ///< vertices on no face (scanner leftovers): held and left as they are
   bool normal_motion_only = false;      ///< each step's displacement lost its tangential part (the tensor's `normal_motion_only()`, e.g. `Anisotropic_diffusion_tensor`'s default)
+  std::size_t components = 0;     ///< connected components of the surface; relative parameters are measured per component
+  std::size_t rejected_steps = 0; ///< steps rejected because they left an unsound surface, each retried with a quarter of the time step
+  bool automatic_parameters = false; ///< the time step, the stopping rule and (unless given) the tensor were chosen from the mesh (no time step was given)
+  double noise_level = 0;         ///< the input's noise estimated from the mesh itself: deviation along the normal in units of the local mean edge length (robust)
+  double noise_deviation = 0;     ///< the same in model units, \f$\sigma \approx\f$ `noise_level` \f$\times\f$ `mean_edge_length`
+  double noise_displacement = 0;  ///< how far the written surface moved off the input (as `Fairing_step::noise_displacement`), at the end
+  double feature_threshold = 0;   ///< the anisotropic tensor's threshold \f$\lambda\f$ used, model units (1/length); 0 for the isotropic tensor
+  double prefilter_time = 0;      ///< the anisotropic tensor's prefilter time \f$\varepsilon\f$ used, model units; 0 without prefilter
+  std::string choices;            ///< with automatic parameters: what was chosen and why, in one sentence
   double setup_seconds = 0;       ///< set-up: private numbering, element (patch categories, stencils), sparsity patterns
   double total_seconds = 0;       ///< the whole call
 

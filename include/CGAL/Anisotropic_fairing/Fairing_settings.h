@@ -98,7 +98,12 @@ With \f$\mathcal{H}(t) = \int_{M(t)} |H|^2 dA / \int_{M(0)} |H|^2 dA\f$ and its 
 - (27) \f$|\mathcal{H}'(t)/\mathcal{H}'(0)| \le\f$ `curvature_rate_ratio` (from the second step on);
 - (28) \f$|\mathcal{H}'(t)| \le\f$ `curvature_rate`;
 - (29) \f$\max_i |x_i(t) - x_i(0)| \ge\f$ `displacement` (control points);
-- steady state: \f$\max_i |x_i(t_{n+1}) - x_i(t_n)| / \tau \le\f$ `steady_speed` (the flow has stopped, e.g. balanced by the fidelity term).
+- steady state: \f$\max_i |x_i(t_{n+1}) - x_i(t_n)| / \tau \le\f$ `steady_speed` (the flow has stopped, e.g. balanced by the fidelity term);
+- noise level (the discrepancy principle): the written surface has moved off the input, along the input's
+  normals and in units of the local edge length (robust deviation over the vertices), by `noise_discrepancy`
+  times the noise the package estimates from the input itself (`Fairing_report::noise_level`). Removing noise
+  of deviation \f$\sigma\f$ moves the vertices by about \f$\sigma\f$; diffusing further removes shape.
+  The run ends on the surface where the level is reached, interpolated within the last step.
 
 A criterion is disabled by a value \f$\le 0\f$. With `relative_units` (the default) the scale-dependent
 thresholds are measured with the model's scale \f$\ell = \sqrt{\mathrm{Area}(M(0))/4\pi}\f$ (the radius of
@@ -112,16 +117,38 @@ struct Stopping_criteria
   double curvature_rate = 8.0;         ///< epsilon_2 of (28)
   double displacement = 0.2;           ///< epsilon_3 of (29)
   double steady_speed = 1e-4;          ///< steady-state speed
+  double noise_discrepancy = 0;        ///< the noise criterion: displacement in units of the estimated noise (0: off)
   bool relative_units = true;          ///< thresholds relative to the model's scale
+
+  /// the default when no time step is given (automatic parameters): the noise criterion at
+  /// `automatic_noise_discrepancy` and the steady state; (27)-(29) off, since they stop denoising runs early
+  static Stopping_criteria automatic();
 
   /// no criterion: exactly `number_of_iterations` steps are taken (unless a failure or the callback stops the run)
   static Stopping_criteria none()
   {
     Stopping_criteria s;
-    s.curvature_rate_ratio = s.curvature_rate = s.displacement = s.steady_speed = 0;
+    s.curvature_rate_ratio = s.curvature_rate = s.displacement = s.steady_speed = s.noise_discrepancy = 0;
     return s;
   }
 };
+
+/// \ingroup PkgAnisotropicFairingFunctions
+/// The most steps of a run with automatic parameters (no time step and no `number_of_iterations` given);
+/// the noise criterion normally ends it far earlier.
+constexpr unsigned automatic_maximum_steps = 200;
+
+/// \ingroup PkgAnisotropicFairingFunctions
+/// The noise criterion's factor in `Stopping_criteria::automatic()`.
+constexpr double automatic_noise_discrepancy = 1.0;
+
+inline Stopping_criteria Stopping_criteria::automatic()
+{
+  Stopping_criteria s = none();
+  s.noise_discrepancy = automatic_noise_discrepancy;
+  s.steady_speed = 1e-4;
+  return s;
+}
 
 } // namespace Anisotropic_fairing
 } // namespace CGAL

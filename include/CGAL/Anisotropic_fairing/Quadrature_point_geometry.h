@@ -40,6 +40,10 @@ struct Quadrature_point_geometry
   const double* prefiltered_t11 = nullptr;  ///< see `prefiltered_t1`
   const double* prefiltered_t12 = nullptr;  ///< see `prefiltered_t1`
   const double* prefiltered_t22 = nullptr;  ///< see `prefiltered_t1`
+  /// The length scale of the face's connected component relative to the one given to the tensor's
+  /// `set_length_scale()` (1 on a mesh of one component): a scale-relative tensor divides its
+  /// curvature threshold by it, so that each component is faired as if it were alone.
+  double component_scale = 1.0;
 };
 
 /// \ingroup PkgAnisotropicFairingFunctions

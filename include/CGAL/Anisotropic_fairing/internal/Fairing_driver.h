@@ -14,11 +14,16 @@
 #include <CGAL/Anisotropic_fairing/Isotropic_diffusion_tensor.h>
 #include <CGAL/Anisotropic_fairing/Vector_attribute_traits.h>
 #include <CGAL/Anisotropic_fairing/named_function_parameters.h>
+#include <CGAL/Anisotropic_fairing/Anisotropic_diffusion_tensor.h>
+#include <CGAL/Anisotropic_fairing/internal/Automatic_parameters.h>
 #include <CGAL/Anisotropic_fairing/internal/Boundary_constraints.h>
 #include <CGAL/Anisotropic_fairing/internal/Ghosted_patch_cache.h>
 #include <CGAL/Anisotropic_fairing/internal/Indexed_mesh.h>
 #include <CGAL/Anisotropic_fairing/internal/Linear_element_cache.h>
 #include <CGAL/Anisotropic_fairing/internal/Locality_ordering.h>
+#include <CGAL/Anisotropic_fairing/internal/Mesh_components.h>
+#include <CGAL/Anisotropic_fairing/internal/Noise_estimate.h>
+#include <CGAL/Anisotropic_fairing/internal/Tensor_hooks.h>
 #include <CGAL/Anisotropic_fairing/internal/Time_stepper.h>
 #include <CGAL/Anisotropic_fairing/internal/Vertex_limit_masks.h>
 
@@ -28,6 +33,7 @@
 #include <boost/property_map/property_map.hpp>
 
 #include <cmath>
+#include <cstdio>
 #include <string>
 #include <type_traits>
 #include <utility>
@@ -85,47 +91,31 @@ inline void check_parameter(bool ok, const std::string& message)
   if(!ok) throw Input_error(Input_error::INVALID_PARAMETER, Input_error::no_element, message);
 }
 
-/// Tensors with a scale-relative parameter (`set_length_scale(double)`) get the model's scale l.
-template <typename Tensor>
-auto give_length_scale(Tensor& t, double ell, int) -> decltype(t.set_length_scale(ell), void()) { t.set_length_scale(ell); }
-template <typename Tensor>
-void give_length_scale(Tensor&, double, long) {}
-template <typename Tensor>
-auto wants_length_scale(const Tensor& t, int) -> decltype(const_cast<Tensor&>(t).set_length_scale(1.0), true) { return true; }
-template <typename Tensor>
-bool wants_length_scale(const Tensor&, long) { return false; }
 
-/// Tensors that vary along the surface may ask for normal motion only (`normal_motion_only()`).
-template <typename Tensor>
-auto wants_normal_motion(const Tensor& t, int) -> decltype(bool(t.normal_motion_only())) { return bool(t.normal_motion_only()); }
-template <typename Tensor>
-bool wants_normal_motion(const Tensor&, long) { return false; }
+/// The default tensor: chosen from the mesh when the time step is too (automatic parameters).
+inline Anisotropic_diffusion_tensor default_tensor(std::true_type) { return Anisotropic_diffusion_tensor::automatic(); }
+inline Isotropic_diffusion_tensor default_tensor(std::false_type) { return Isotropic_diffusion_tensor(); }
 
 template <typename Cache, typename Tensor, typename Callback>
-Fairing_report run_stepper(const Cache& cache, const Locality_ordering& ordering, Control_matrix& X, Attribute_mode mode,
+Fairing_report run_stepper(const Cache& cache, const Locality_ordering& ordering, const Mesh_components& components,
+                           const std::vector<double>& component_edge, double mean_edge, Control_matrix& X, Attribute_mode mode,
                            const std::vector<bool>& constrained, const std::vector<bool>& border,
-                           const Tensor& tensor, const Stepper_settings& s, Callback& callback, double& setup_seconds)
+                           const Tensor& tensor, const Stepper_settings& s, Callback& callback, double& setup_seconds,
+                           double& limit_weight)
 {
   const Stopwatch clock;
-  Time_stepper<Cache> stepper(cache, std::size_t(X.rows()), constrained);
+  Time_stepper<Cache> stepper(cache, std::size_t(X.rows()), constrained, ordering.layer, components, component_edge, mean_edge);
   const Tangential_motion_filter filter(ordering.layer);
   const bool normal_motion = wants_normal_motion(tensor, 0) && mode != Attribute_mode::ATTRIBUTES_ONLY;
   if(normal_motion) stepper.set_tangential_filter(&filter);
   stepper.assembler().use_original_indices(&ordering.old_of_new_vertex, &ordering.old_of_new_face);
   stepper.assembler().exclude_from_curvature(&border);
   const int metric_columns = mode == Attribute_mode::COUPLED ? int(X.cols()) : 3;
-  // l = sqrt(Area / 4 pi) of the input's surface, for a tensor whose threshold is relative to it
-  Tensor scaled = tensor;
-  if(wants_length_scale(tensor, 0))
-  {
-    std::vector<double> m, l;
-    const double area = stepper.assembler().assemble(X, metric_columns, Isotropic_diffusion_tensor(), m, l, false).area;
-    give_length_scale(scaled, std::sqrt(area / (4 * 3.14159265358979323846)), 0);
-  }
   setup_seconds += clock.seconds();
-  if(mode == Attribute_mode::ATTRIBUTES_ONLY) return stepper.run_on_fixed_surface(X, scaled, s, callback);
-  Fairing_report report = stepper.run(X, metric_columns, scaled, s, callback);
+  if(mode == Attribute_mode::ATTRIBUTES_ONLY) return stepper.run_on_fixed_surface(X, tensor, s, callback);
+  Fairing_report report = stepper.run(X, metric_columns, tensor, s, callback);
   report.normal_motion_only = normal_motion;
+  limit_weight = stepper.limit_weight();
   return report;
 }
 
@@ -139,12 +129,15 @@ Fairing_report fair(TriangleMesh& tm, VertexPointMap vpm, AttributeMap attribute
   typedef typename boost::property_traits<VertexPointMap>::value_type Point;
   Stopwatch total;
 
-  // parameters
+  // parameters; without a time step the package chooses the time step, the stopping rule and (unless
+  // given) the tensor from the mesh (Automatic_parameters.h)
   Stepper_settings s;
   const bool absolute_tau = !is_default_parameter<NamedParameters, internal_np::time_step_t>::value;
   const bool relative_tau = !is_default_parameter<NamedParameters, internal_np::relative_time_step_t>::value;
+  constexpr bool automatic = is_default_parameter<NamedParameters, internal_np::time_step_t>::value &&
+                             is_default_parameter<NamedParameters, internal_np::relative_time_step_t>::value;
   check_parameter(!(absolute_tau && relative_tau), "give either time_step or relative_time_step, not both");
-  s.relative_time_step = !absolute_tau;
+  s.time_unit = absolute_tau ? Length_unit::MODEL : relative_tau ? Length_unit::SCALE : Length_unit::EDGE;
   s.time_step = absolute_tau ? double(choose_parameter(get_parameter(np, internal_np::time_step), 0.0))
                              : double(choose_parameter(get_parameter(np, internal_np::relative_time_step), 1e-3));
   check_parameter(std::isfinite(s.time_step) && s.time_step > 0, "the time step must be positive and finite");
@@ -155,11 +148,13 @@ Fairing_report fair(TriangleMesh& tm, VertexPointMap vpm, AttributeMap attribute
   s.fidelity_weight = absolute_w ? double(choose_parameter(get_parameter(np, internal_np::fidelity_weight), 0.0))
                                  : double(choose_parameter(get_parameter(np, internal_np::relative_fidelity_weight), 0.0));
   check_parameter(std::isfinite(s.fidelity_weight) && s.fidelity_weight >= 0, "the fidelity weight must be finite and >= 0");
-  s.maximum_steps = std::size_t(choose_parameter(get_parameter(np, CGAL::internal_np::number_of_iterations), 10u));
-  s.stopping = choose_parameter(get_parameter(np, internal_np::stopping_criteria), Stopping_criteria());
+  s.maximum_steps = std::size_t(choose_parameter(get_parameter(np, CGAL::internal_np::number_of_iterations),
+                                                  automatic ? automatic_maximum_steps : 10u));
+  s.stopping = choose_parameter(get_parameter(np, internal_np::stopping_criteria),
+                                automatic ? Stopping_criteria::automatic() : Stopping_criteria());
   check_parameter(std::isfinite(s.stopping.curvature_rate_ratio) && std::isfinite(s.stopping.curvature_rate) &&
-                  std::isfinite(s.stopping.displacement) && std::isfinite(s.stopping.steady_speed),
-                  "stopping thresholds must be finite");
+                  std::isfinite(s.stopping.displacement) && std::isfinite(s.stopping.steady_speed) &&
+                  std::isfinite(s.stopping.noise_discrepancy), "stopping thresholds must be finite");
   s.solver = choose_parameter(get_parameter(np, internal_np::linear_solver), Linear_solver::AUTOMATIC);
   s.solver_tolerance = choose_parameter(get_parameter(np, internal_np::solver_tolerance), 1e-8);
   check_parameter(s.solver_tolerance > 0 && s.solver_tolerance < 1, "the solver tolerance must lie in (0, 1)");
@@ -180,7 +175,8 @@ Fairing_report fair(TriangleMesh& tm, VertexPointMap vpm, AttributeMap attribute
   Quadrature_spec spec;
   spec.degree = choose_parameter(get_parameter(np, internal_np::quadrature_degree), 8);
   spec.tiling_depth = choose_parameter(get_parameter(np, internal_np::quadrature_tiling_depth), 0);
-  const auto tensor = choose_parameter(get_parameter(np, internal_np::diffusion_tensor), Isotropic_diffusion_tensor());
+  auto tensor = choose_parameter(get_parameter(np, internal_np::diffusion_tensor),
+                                 default_tensor(std::integral_constant<bool, automatic>()));
   auto vcm = choose_parameter(get_parameter(np, CGAL::internal_np::vertex_is_constrained),
                               CGAL::Static_boolean_property_map<vertex_descriptor, false>());
   auto callback = choose_parameter(get_parameter(np, CGAL::internal_np::callback),
@@ -221,6 +217,43 @@ Fairing_report fair(TriangleMesh& tm, VertexPointMap vpm, AttributeMap attribute
     return count;
   };
 
+  // the units of relative parameters, per connected component; the noise, from the mesh itself
+  const Mesh_components components = make_mesh_components(*layer.topology, n, layer.real_faces);
+  std::vector<double> component_edge(components.count, 0.0), edges_counted(components.count, 0.0);
+  for(std::size_t f = 0; f < layer.real_faces; ++f)
+    for(int k = 0; k < 3; ++k)
+    {
+      const auto& t = layer.topology->face(f);
+      component_edge[std::size_t(components.of_face[f])] += (X.row(t[k]).head(3) - X.row(t[(k + 1) % 3]).head(3)).norm();
+      edges_counted[std::size_t(components.of_face[f])] += 1;
+    }
+  for(std::size_t c = 0; c < components.count; ++c) component_edge[c] /= edges_counted[c];
+  const double mean_edge = mean_edge_length(layer, X);
+  std::vector<bool> sampled(n);
+  for(std::size_t i = 0; i < n; ++i) sampled[i] = !constrained[i] && !border[i];
+  const Noise_estimate noise(*layer.topology, X, sampled);
+  s.noise = &noise;
+  s.limit_output = element == Finite_element::LOOP && output == Output_positions::LIMIT_SURFACE;
+  std::string choices;
+  if(automatic)
+  {
+    const Automatic_parameters a;
+    s.time_step = a.time_step;
+    const bool tensor_chosen = is_automatic_tensor(tensor, 0);
+    if(tensor_chosen) choose_tensor(tensor, a.lambda, a.epsilon, 0);
+    char text[400];
+    std::snprintf(text, sizeof text, "noise %.3g h (robust estimate over %zu vertices); time step %.3g h^2 per step until the surface "
+                  "has moved by %.3g x the noise%s", noise.relative_sigma(), noise.number_of_samples(), a.time_step,
+                  s.stopping.noise_discrepancy, tensor_chosen ? "" : "; the tensor given");
+    choices = text;
+    if(tensor_chosen)
+    {
+      std::snprintf(text, sizeof text, "; anisotropic tensor: principal curvatures above %.3g / h are features, read on M_eps, "
+                    "the surface after an isotropic step of %.3g h^2", a.lambda, a.epsilon);
+      choices += text;
+    }
+  }
+
   Fairing_report report;
   double setup_seconds = 0;
   std::size_t boundary_held = 0;
@@ -229,12 +262,16 @@ Fairing_report fair(TriangleMesh& tm, VertexPointMap vpm, AttributeMap attribute
     Ghosted_patch_cache cache(layer, spec);
     boundary_held = hold(boundary_constrained_vertices(layer, cache, boundary == Boundary_handling::HOLD_BOUNDARY_CURVE));
     setup_seconds = setup.seconds();
-    report = run_stepper(cache, ordering, X, mode, constrained, border, tensor, s, callback, setup_seconds);
+    const Control_matrix input = X;
+    double limit_weight = 1;
+    report = run_stepper(cache, ordering, components, component_edge, mean_edge, X, mode, constrained, border, tensor, s,
+                         callback, setup_seconds, limit_weight);
     if(report.succeeded() && output == Output_positions::LIMIT_SURFACE)
     {
       const Control_matrix extended = layer.extend(X);
       for(std::size_t i = 0; i < n; ++i)
         if(!isolated[i]) vertex_limit_value(*layer.topology, extended, int(i), X.row(Eigen::Index(i)).data());
+      if(limit_weight < 1) X.leftCols(3) = input.leftCols(3) + limit_weight * (X.leftCols(3) - input.leftCols(3));
     }
   }
   else
@@ -242,7 +279,9 @@ Fairing_report fair(TriangleMesh& tm, VertexPointMap vpm, AttributeMap attribute
     Linear_element_cache cache(*layer.topology, layer.real_faces);
     boundary_held = hold(border);
     setup_seconds = setup.seconds();
-    report = run_stepper(cache, ordering, X, mode, constrained, border, tensor, s, callback, setup_seconds);
+    double limit_weight = 1;   // the linear element writes its control points: no limit surface to approach
+    report = run_stepper(cache, ordering, components, component_edge, mean_edge, X, mode, constrained, border, tensor, s,
+                         callback, setup_seconds, limit_weight);
   }
   if(mode == Attribute_mode::COUPLED && A.cols() > 0) X.rightCols(A.cols()) /= attribute_weight;
   report.faces = im.number_of_faces();
@@ -254,6 +293,10 @@ Fairing_report fair(TriangleMesh& tm, VertexPointMap vpm, AttributeMap attribute
   report.attribute_dimension = std::size_t(A.cols());
   report.setup_seconds = setup_seconds;
   report.mean_edge_length = mean_edge_length(im.ghost_layer(), P);
+  report.automatic_parameters = automatic;
+  report.choices = choices;
+  report.noise_level = noise.relative_sigma();
+  report.noise_deviation = noise.relative_sigma() * report.mean_edge_length;
 
   if(report.succeeded())
   {

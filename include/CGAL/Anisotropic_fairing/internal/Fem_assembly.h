@@ -14,6 +14,7 @@
 #include <CGAL/Anisotropic_fairing/internal/Control_matrix.h>
 #include <CGAL/Anisotropic_fairing/internal/Patch_cache.h>
 #include <CGAL/Anisotropic_fairing/internal/Sparse_pattern.h>
+#include <CGAL/Anisotropic_fairing/internal/Vertex_limit_masks.h>
 
 #ifdef CGAL_LINKED_WITH_TBB
 #include <tbb/parallel_for.h>
@@ -56,6 +57,10 @@ void scatter_local_matrices(const Local* const (&local)[N], const int* ring, int
   }
 }
 
+// cosines of the turning angles at which a surface counts as folded, and as nearly folded
+constexpr double turn_120 = -0.5;
+constexpr double turn_110 = -0.34202014332566871;
+
 struct Assembly_statistics
 {
   double area = 0;
@@ -63,11 +68,20 @@ struct Assembly_statistics
   double H_integral = 0;   // int |H|^2 dA
   bool degenerate = false; // sqrt(det G) <= 0 or not finite somewhere
   std::size_t degenerate_face = 0;
+  std::size_t degenerate_points = 0;  // quadrature points where it is
+  std::size_t reversed_faces = 0;     // faces whose limit normal turns by more than 120 degrees within the face
+  std::size_t bent_faces = 0;         // ... by more than 110 degrees (nearly reversed: Step_safety.h)
+  std::vector<double> component_area; // per connected component (when the assembler knows them)
 
   void add(const Assembly_statistics& o)
   {
     area += o.area; energy += o.energy; H_integral += o.H_integral;
+    degenerate_points += o.degenerate_points;
+    reversed_faces += o.reversed_faces;
+    bent_faces += o.bent_faces;
     if(o.degenerate && !degenerate) { degenerate = true; degenerate_face = o.degenerate_face; }
+    if(component_area.size() < o.component_area.size()) component_area.resize(o.component_area.size(), 0.0);
+    for(std::size_t c = 0; c < o.component_area.size(); ++c) component_area[c] += o.component_area[c];
   }
 };
 
@@ -103,6 +117,15 @@ public:
   /// on a border, (L X)_i is the conormal term of the boundary, not a mean curvature.
   void exclude_from_curvature(const std::vector<bool>* border) { border_ = border; }
 
+  /// The connected component of each face and each component's length scale relative to the tensor's
+  /// (Quadrature_point_geometry::component_scale); the statistics then carry the area per component.
+  void use_components(const std::vector<int>* face_component, std::size_t count)
+  {
+    face_component_ = face_component;
+    components_ = count;
+  }
+  void set_component_scales(const std::vector<double>* scale) { component_scale_ = scale; }
+
   /// The symmetric pattern (all values zero) that M and L fill: value arrays index its non-zeros.
   const Eigen::SparseMatrix<double>& pattern() const { return pattern_; }
   std::size_t number_of_nonzeros() const { return std::size_t(pattern_.nonZeros()); }
@@ -122,6 +145,7 @@ public:
       L.assign(nnz, 0.0);
     }
     std::vector<Assembly_statistics> stats{ std::size_t(chunks_) };
+    for(Assembly_statistics& st : stats) st.component_area.assign(components_, 0.0);
     auto run_chunk = [&](int k) {
       double* mv = M.data();
       double* lv = L.data();
@@ -151,6 +175,7 @@ public:
       for(std::size_t p = 0; p < nnz; ++p) { M[p] += pm[p]; L[p] += pl[p]; }
     }
     Assembly_statistics total;
+    total.component_area.assign(components_, 0.0);
     for(const Assembly_statistics& s : stats) total.add(s);
     if(!Cache::has_second_derivatives) total.H_integral = discrete_H_integral(X, metric_columns, M, L);
     return total;
@@ -233,6 +258,10 @@ private:
 
     Quadrature_point_geometry g;
     g.face = original_face_ ? (*original_face_)[f] : f;
+    const int component = face_component_ ? (*face_component_)[f] : -1;
+    if(component >= 0 && component_scale_) g.component_scale = (*component_scale_)[std::size_t(component)];
+    double first_normal[3] = { 0, 0, 0 };
+    double lowest_dot = 1;
     g.dimension = kappa; g.ring = ring; g.ring_size = m;
     if(original_vertex_)
     {
@@ -251,11 +280,20 @@ private:
       const double det = g11 * g22 - g12 * g12;
       if(!(det > 0) || !std::isfinite(det))
       {
+        ++stats.degenerate_points;
         if(!stats.degenerate) { stats.degenerate = true; stats.degenerate_face = g.face; }
         b.Bm.row(q).setZero(); b.Bl.row(2 * q).setZero(); b.Bl.row(2 * q + 1).setZero();
         continue;
       }
       const double c = w[q] * std::sqrt(det);
+      {
+        // a fold inside the face: the normal (of the geometry's 3 coordinates) turns by more than 120
+        // degrees between the first point and this one
+        double nq[3] = { t1[1] * t2[2] - t1[2] * t2[1], t1[2] * t2[0] - t1[0] * t2[2], t1[0] * t2[1] - t1[1] * t2[0] };
+        normalize3(nq);
+        if(first_normal[0] == 0 && first_normal[1] == 0 && first_normal[2] == 0) { first_normal[0] = nq[0]; first_normal[1] = nq[1]; first_normal[2] = nq[2]; }
+        else lowest_dot = std::min(lowest_dot, nq[0] * first_normal[0] + nq[1] * first_normal[1] + nq[2] * first_normal[2]);
+      }
       g.point = int(q); g.t1 = t1; g.t2 = t2;
       g.t11 = Cache::has_second_derivatives ? b.T[2].row(q).data() : no_second;
       g.t12 = Cache::has_second_derivatives ? b.T[3].row(q).data() : no_second;
@@ -284,6 +322,9 @@ private:
       b.Bl.row(2 * q + 1) = r22 * S2.row(q);
     }
     stats.area += face_area;
+    if(component >= 0) stats.component_area[std::size_t(component)] += face_area;
+    if(lowest_dot < turn_120) ++stats.reversed_faces;
+    if(lowest_dot < turn_110) ++stats.bent_faces;
     stats.energy += face_energy;
     stats.H_integral += face_H;
     if(!mv) return;
@@ -352,6 +393,9 @@ private:
   const std::vector<std::size_t>* original_face_ = nullptr;
   const std::vector<bool>* border_ = nullptr;
   const Control_matrix* prefiltered_ = nullptr;
+  const std::vector<int>* face_component_ = nullptr;
+  const std::vector<double>* component_scale_ = nullptr;
+  std::size_t components_ = 0;
 };
 
 } // namespace internal

@@ -3,8 +3,10 @@
 //
 // The semi-implicit step ((1 + tau w) M + tau L(D)) X_{n+1} = M (X_n + tau w X_0) of Bajaj & Xu
 // (eq. 26 with the fidelity term written consistently, loop-fem.md section 8), repeated until a
-// stopping criterion (27)-(29) holds, with the monitoring that makes failure loud. It knows nothing
-// of the element: any cache the Fem_assembler accepts will do (Loop patches or P1 faces).
+// stopping criterion holds, controlled as an ODE integrator would be: a step that leaves an unsound
+// surface (Step_safety.h) is rejected and retried with a quarter of the time step; when even
+// 1/1024 of it fails, the run ends on the last sound surface. It knows nothing of the element: any
+// cache the Fem_assembler accepts will do (Loop patches or P1 faces).
 //
 // Constrained vertices are eliminated: the unknowns are the displacements of the free vertices,
 //   A_FF dX_F = tau (w M (X_0 - X_n) - L X_n)_F,
@@ -18,8 +20,18 @@
 #include <CGAL/Anisotropic_fairing/Fairing_settings.h>
 #include <CGAL/Anisotropic_fairing/Isotropic_diffusion_tensor.h>
 #include <CGAL/Anisotropic_fairing/internal/Fem_assembly.h>
+#include <CGAL/Anisotropic_fairing/internal/Ghost_layer.h>
+#include <CGAL/Anisotropic_fairing/internal/Mesh_components.h>
+#include <CGAL/Anisotropic_fairing/internal/Noise_estimate.h>
+#include <CGAL/Anisotropic_fairing/internal/Step_safety.h>
+#include <CGAL/Anisotropic_fairing/internal/Step_units.h>
+#include <CGAL/Anisotropic_fairing/internal/Stepper_settings.h>
+#include <CGAL/Anisotropic_fairing/internal/Tensor_hooks.h>
+#include <CGAL/Anisotropic_fairing/internal/Vertex_limit_masks.h>
 #include <CGAL/Anisotropic_fairing/internal/Normal_motion.h>
 #include <CGAL/Anisotropic_fairing/internal/Spd_solvers.h>
+#include <CGAL/Anisotropic_fairing/internal/Solver_choice.h>
+#include <CGAL/Anisotropic_fairing/internal/Stopping_monitor.h>
 
 #include <chrono>
 #include <algorithm>
@@ -34,125 +46,16 @@ namespace CGAL {
 namespace Anisotropic_fairing {
 namespace internal {
 
-struct Stepper_settings
-{
-  double time_step = 1e-3;          // tau, relative or absolute
-  bool relative_time_step = true;   // tau = time_step * scale^2
-  double fidelity_weight = 0;       // omega, relative (omega = w / scale^2) or absolute
-  bool relative_fidelity = true;
-  std::size_t maximum_steps = 10;
-  Stopping_criteria stopping;
-  Linear_solver solver = Linear_solver::AUTOMATIC;
-  double solver_tolerance = 1e-8;
-  int solver_maximum_iterations = 10000;
-  bool verbose = false;
-};
-
-/// The stopping criteria (27)-(29) and the steady-state test, fed after every step with the
-/// monitored functional (int |H|^2 of the surface, or the Dirichlet energy of attributes on a fixed
-/// surface) and the displacements, in the units the criteria are read in.
-class Stopping_monitor
-{
-public:
-  Stopping_monitor(const Stopping_criteria& c, double time_step_in_units, double initial_value)
-    : c_(c), dt_(time_step_in_units), F0_(initial_value) {}
-
-  /// true (and the reason) when the run should end after this step
-  bool should_stop(std::size_t step, double value, double max_displacement, double step_displacement, Stop_reason& reason)
-  {
-    if(F0_ > 0)
-    {
-      const double F = value / F0_;
-      const double rate = (F - F_prev_) / dt_;
-      if(step == 1) rate0_ = rate;
-      F_prev_ = F;
-      if(step >= 2 && c_.curvature_rate_ratio > 0 && rate0_ != 0 && std::abs(rate / rate0_) <= c_.curvature_rate_ratio)
-      { reason = Stop_reason::CURVATURE_RATE_RATIO; return true; }
-      if(c_.curvature_rate > 0 && std::abs(rate) <= c_.curvature_rate)
-      { reason = Stop_reason::CURVATURE_RATE; return true; }
-    }
-    if(c_.displacement > 0 && max_displacement >= c_.displacement)
-    { reason = Stop_reason::DISPLACEMENT; return true; }
-    if(c_.steady_speed > 0 && step_displacement / dt_ <= c_.steady_speed)
-    { reason = Stop_reason::STEADY_STATE; return true; }
-    return false;
-  }
-
-private:
-  Stopping_criteria c_;
-  double dt_, F0_, F_prev_ = 1.0, rate0_ = 0;
-};
-
-/// Milliseconds-resolution wall clock.
-class Stopwatch
-{
-public:
-  Stopwatch() : start_(std::chrono::steady_clock::now()) {}
-  double seconds() const { return std::chrono::duration<double>(std::chrono::steady_clock::now() - start_).count(); }
-private:
-  std::chrono::steady_clock::time_point start_;
-};
-
-/// Which solver runs each step. AUTOMATIC starts with conjugate gradients; when a step needs many
-/// iterations it times one factorised step and keeps whichever was faster (bench_step_speed: CG wins
-/// per step on every mesh tried at tau/h^2 <= 1, the factorisation wins by up to 5x once CG needs
-/// hundreds of iterations on a few thousand vertices).
-class Solver_choice
-{
-public:
-  Solver_choice(Linear_solver requested, std::size_t free_vertices)
-    : automatic_(requested == Linear_solver::AUTOMATIC),
-      may_factorise_(requested == Linear_solver::CHOLESKY ||
-                     (automatic_ && free_vertices <= std::size_t(automatic_cholesky_limit))),
-      mode_(requested == Linear_solver::CHOLESKY ? FACTORISE : ITERATE)
-  {}
-
-  bool factorise_now() const { return mode_ != ITERATE; }
-  bool may_fall_back() const { return automatic_ && may_factorise_; }
-  Sparse_cholesky& cholesky()
-  {
-    if(!cholesky_) cholesky_.reset(new Sparse_cholesky());
-    return *cholesky_;
-  }
-
-  void record(bool direct, const Solve_statistics& sol, double seconds)
-  {
-    if(!automatic_) return;
-    if(direct && !sol.ok) { mode_ = ITERATE; tried_ = true; factorised_seconds_ = HUGE_VAL; return; }
-    if(direct)
-    {
-      factorised_seconds_ = seconds - sol.analysis_seconds;   // what every further factorised step costs
-      mode_ = (mode_ != TRIAL || factorised_seconds_ < predicted_iterate_seconds_) ? FACTORISE : ITERATE;
-      tried_ = true;
-      return;
-    }
-    // CG work often grows from step to step as the surface roughens or pinches: predict the next
-    // step's cost from the growth of the iteration count
-    const double growth = previous_iterations_ > 0 ? std::max(1.0, double(sol.iterations) / previous_iterations_) : 1.0;
-    predicted_iterate_seconds_ = seconds * growth;
-    previous_iterations_ = sol.iterations;
-    if(!may_factorise_) return;
-    if(tried_ && predicted_iterate_seconds_ > factorised_seconds_) mode_ = FACTORISE;
-    else if(!tried_ && sol.iterations > automatic_cholesky_trial_iterations) mode_ = TRIAL;
-  }
-
-private:
-  enum Mode { ITERATE, TRIAL, FACTORISE };
-  bool automatic_, may_factorise_;
-  Mode mode_;
-  bool tried_ = false;
-  double predicted_iterate_seconds_ = 0, factorised_seconds_ = HUGE_VAL;
-  int previous_iterations_ = 0;
-  std::unique_ptr<Sparse_cholesky> cholesky_;
-};
-
 template <typename Cache>
 class Time_stepper
 {
 public:
-  /// `constrained[i]` holds vertex i fixed.
-  Time_stepper(const Cache& cache, std::size_t n, const std::vector<bool>& constrained)
-    : assembler_(cache, n), free_index_(n, -1)
+  /// `constrained[i]` holds vertex i fixed. `layer`: the mesh (with its ghosts); `components`: its
+  /// connected components, `component_edge[c]` the mean edge length of component c, `mean_edge` of all.
+  Time_stepper(const Cache& cache, std::size_t n, const std::vector<bool>& constrained, const Ghost_layer& layer,
+               const Mesh_components& components, const std::vector<double>& component_edge, double mean_edge)
+    : assembler_(cache, n), free_index_(n, -1), layer_(layer), components_(components),
+      component_edge_(component_edge), mean_edge_(mean_edge)
   {
     for(std::size_t i = 0; i < n; ++i)
       if(!constrained[i]) { free_index_[i] = int(free_.size()); free_.push_back(int(i)); }
@@ -166,63 +69,102 @@ public:
       for(int p = P.outerIndexPtr()[free_[k]]; p < P.outerIndexPtr()[free_[k] + 1]; ++p)
       {
         const int r = free_index_[std::size_t(P.innerIndexPtr()[p])];
-        if(r >= 0) { inner.push_back(r); source_.push_back(p); }   // rows stay sorted: free_ is increasing
+        if(r >= 0) { inner.push_back(r); source_.push_back(p); entry_row_.push_back(int(k)); }   // rows stay sorted: free_ is increasing
       }
       outer.push_back(int(inner.size()));
     }
     A_ = sparse_matrix_from_pattern(Eigen::Index(free_.size()), Eigen::Index(free_.size()), outer, inner);
+    assembler_.use_components(&components_.of_face, components_.count);
   }
 
   std::size_t number_of_free_vertices() const { return free_.size(); }
   /// Each step's displacement of the surface's columns then loses its tangential part (null: kept).
   void set_tangential_filter(const Tangential_motion_filter* f) { tangential_filter_ = f; }
   Fem_assembler<Cache>& assembler() { return assembler_; }
+  /// 1, or the fraction of the way from the input to the limit points of the result to write (a run
+  /// that ended before its first step because the limit surface alone moved by more than the noise)
+  double limit_weight() const { return limit_weight_; }
 
   /// Runs the flow from X (n x kappa; the first `metric_columns` columns define the surface, the
   /// others are carried along with the same operator). On success X holds the faired control points.
   /// On failure X is unspecified and the report says why.
   template <typename Tensor, typename Callback>
-  Fairing_report run(Control_matrix& X, int metric_columns, const Tensor& tensor,
+  Fairing_report run(Control_matrix& X, int metric_columns, const Tensor& tensor_in,
                      const Stepper_settings& s, Callback& callback)
   {
     Stopwatch total;
     Fairing_report report;
     report.vertices = std::size_t(X.rows());
     report.constrained_vertices = std::size_t(X.rows()) - free_.size();
+    limit_output_ = s.limit_output;
     Block_conjugate_gradient cg(s.solver_tolerance, s.solver_maximum_iterations);
     Solver_choice choice(s.solver, free_.size());
-
     const Control_matrix X0 = X;
     Stopwatch clock;
-    Assembly_statistics a = assemble_at(X, metric_columns, tensor, true);
-    if(!prefilter_error_.empty()) return fail(report, Fairing_status::SOLVER_FAILED, prefilter_error_, total);
+    Tensor tensor = tensor_in;
+    Assembly_statistics a;
+    if(!set_units(X, metric_columns, s, tensor, report, a, total)) return report;
     double assemble_seconds = clock.seconds();
-    report.initial.area = a.area;
-    report.initial.energy = a.energy;
-    report.initial.H_integral = a.H_integral;
-    if(a.degenerate) return fail(report, Fairing_status::DEGENERATE_METRIC, degenerate_message(a, 0), total);
+    const double time_unit = s.stopping.relative_units ? report.scale * report.scale : 1.0;   // (28), steady speed
+    Stopping_monitor monitor(s.stopping, a.H_integral);
 
-    const double scale = set_units(a.area, s, report), tau = report.time_step, omega = report.fidelity_weight;
-    const Stopping_criteria& c = s.stopping;
-    const double time_unit = c.relative_units ? scale * scale : 1.0;   // (28) and steady speed per this much time
-    const double length_unit = c.relative_units ? scale : 1.0;
-    Stopping_monitor monitor(c, tau / time_unit, a.H_integral);
+    // the noise criterion: stop once the written surface moved off the input by the noise
+    Control_matrix Y;
+    output_positions(X, Y);
+    Surface_soundness initial{ a, count_folded_edges(*layer_.topology, layer_.real_faces, Y),
+                               count_folded_edges(*layer_.topology, layer_.real_faces, Y, turn_110), true };
+    Surface_soundness accepted = initial;
+    const std::size_t input_folds = count_folded_edges(*layer_.topology, layer_.real_faces, X0);
+    double lowest_H = a.H_integral;
+    const bool noise_stop = s.noise && s.stopping.noise_discrepancy > 0;
+    const double target = noise_stop ? s.stopping.noise_discrepancy * s.noise->relative_sigma() : 0.0;
+    double discrepancy = noise_stop ? s.noise->relative_displacement(Y, X0, {}) : 0.0;
+    report.noise_displacement = discrepancy;
+    // before the first step, the limit surface of the input may round its creases by more than the
+    // noise while leaving most vertices in place: a clean mesh, whatever the typical vertex says
+    const double first_discrepancy = noise_stop ? std::max(discrepancy, s.noise->relative_displacement(Y, X0, {}, true)) : 0.0;
 
     const Eigen::Index n = X.rows(), k = X.cols(), nfree = Eigen::Index(free_.size());
     Dense_block R(n, k), B(nfree, k), dX = Dense_block::Zero(nfree, k);
+    Control_matrix Xc, X_previous;
+    // the last surface with no more folded edges than the input (or its limit surface): what the run
+    // falls back to if the surface it ends on has more
+    const std::size_t allowed_folds = std::max(input_folds, initial.folded_edges);
+    Control_matrix X_unfolded = X;
+    std::size_t unfolded_steps = 0;
+    double factor = 1, time = 0;
+    int rejections = 0, cramped = 0;   // cramped: steps in a row accepted only with <= 1/16 of the time step
+    std::string last_why;
     if(nfree == 0) report.stop_reason = Stop_reason::NO_FREE_VERTEX;
-    for(std::size_t step = 1; step <= s.maximum_steps && nfree > 0; ++step)
+    else if(noise_stop && first_discrepancy >= target)
+    {
+      // the input's own limit surface is already off it by more than the noise: the result lies between
+      // the two, where the noise level is reached
+      report.stop_reason = Stop_reason::NOISE_LEVEL;
+      limit_weight_ = first_discrepancy > 0 ? target / first_discrepancy : 0.0;
+      report.noise_displacement = target;
+    }
+    for(std::size_t step = 1; step <= s.maximum_steps && nfree > 0 && report.stop_reason != Stop_reason::NOISE_LEVEL;)
     {
       Fairing_step st;
       st.step = step;
-      st.time = double(step) * tau;
-      // system and right-hand side at X_n
+      st.time_step = factor * report.time_step;
+      // system and right-hand side at X_n, divided by sys so that a huge tau cannot overflow
       clock = Stopwatch();
+      const double sys = system_scale(factor);
       double* av = A_.valuePtr();
       for(std::size_t e = 0; e < source_.size(); ++e)
-        av[e] = (1 + tau * omega) * M_[std::size_t(source_[e])] + tau * L_[std::size_t(source_[e])];
-      residual_rhs(X, X0, tau, omega, R);
+      {
+        const std::size_t p = std::size_t(source_[e]);
+        const int row = free_[std::size_t(entry_row_[e])];
+        const double tau = factor * units_.tau[std::size_t(row)];
+        av[e] = ((1 + tau * units_.omega[std::size_t(row)]) * M_[p] + tau * L_[p]) / sys;
+        if(!unknown_scale_.empty()) av[e] /= unknown_scale_[std::size_t(row)] * unknown_scale_[std::size_t(row)];
+      }
+      residual_rhs(X, X0, factor / sys, R);
       for(Eigen::Index i = 0; i < nfree; ++i) B.row(i) = R.row(free_[std::size_t(i)]);
+      if(!unknown_scale_.empty())
+        for(Eigen::Index i = 0; i < nfree; ++i) B.row(i) /= std::pow(unknown_scale_[std::size_t(free_[std::size_t(i)])], 3);
       st.assemble_seconds = assemble_seconds + clock.seconds();
 
       clock = Stopwatch();
@@ -245,43 +187,133 @@ public:
       report.used_cholesky = report.used_cholesky || st.direct_solve;
       st.solver_iterations = sol.iterations;
       st.residual = sol.residual;
-      if(!sol.ok) return fail(report, Fairing_status::SOLVER_FAILED, "step " + std::to_string(step) + ": " + sol.message, total);
-      if(!dX.allFinite())
-        return fail(report, Fairing_status::NON_FINITE_VALUE, "step " + std::to_string(step) + ": the solution is not finite", total);
-
-      double moved = 0;
-      if(tangential_filter_)
+      if(!unknown_scale_.empty())
       {
-        // dX itself stays the solution: the next step's CG starts from it
-        normal_dX_ = dX;
-        // the normal of M_eps when the tensor reads its curvature there: on noise, the current
-        // surface's normal is mostly noise, and removing motion in its tangent plane would keep the noise
-        tangential_filter_->remove(prefiltered_valid_ ? prefiltered_X_ : X, metric_columns, free_, normal_dX_);
-        moved = move_free_rows(X, normal_dX_, X0, metric_columns, st);
+        step_dX_ = dX;
+        for(Eigen::Index i = 0; i < nfree; ++i) step_dX_.row(i) *= unknown_scale_[std::size_t(free_[std::size_t(i)])];
       }
-      else moved = move_free_rows(X, dX, X0, metric_columns, st);
+      const Dense_block& dX_model = unknown_scale_.empty() ? dX : step_dX_;
+      const bool finite = dX_model.allFinite() && std::isfinite(sol.residual);
+      if(!sol.ok && finite) return fail(report, Fairing_status::SOLVER_FAILED, "step " + std::to_string(step) + ": " + sol.message, total);
 
-      // the new surface: diagnostics now, and the matrices of the next step
+      // the candidate surface: its matrices (for the next step) and its soundness
+      Xc = X;
+      if(finite)
+      {
+        if(tangential_filter_)
+        {
+          // dX itself stays the solution: the next step's CG starts from it. The tangent plane is that
+          // of M_eps when the tensor reads its curvature there: on noise, the current surface's normal
+          // is mostly noise, and removing motion in its tangent plane would keep the noise
+          normal_dX_ = dX_model;
+          tangential_filter_->remove(prefiltered_valid_ ? prefiltered_X_ : X, metric_columns, free_, normal_dX_);
+          move_free_rows(Xc, normal_dX_, X0, metric_columns, st);
+        }
+        else move_free_rows(Xc, dX_model, X0, metric_columns, st);
+      }
       clock = Stopwatch();
-      a = assemble_at(X, metric_columns, tensor, step < s.maximum_steps);  // the last: statistics only
-      if(!prefilter_error_.empty())
-        return fail(report, Fairing_status::SOLVER_FAILED, "after step " + std::to_string(step) + ": " + prefilter_error_, total);
+      save_operator();
+      Surface_soundness candidate;
+      candidate.finite = finite && Xc.allFinite();
+      if(candidate.finite)
+      {
+        candidate.statistics = assemble_at(Xc, metric_columns, tensor, step < s.maximum_steps);  // the last: statistics only
+        if(!prefilter_error_.empty())
+          return fail(report, Fairing_status::SOLVER_FAILED, "after step " + std::to_string(step) + ": " + prefilter_error_, total);
+        output_positions(Xc, Y);
+        candidate.finite = Y.allFinite();
+        if(candidate.finite)
+        {
+          candidate.folded_edges = count_folded_edges(*layer_.topology, layer_.real_faces, Y);
+          candidate.bent_edges = count_folded_edges(*layer_.topology, layer_.real_faces, Y, turn_110);
+        }
+      }
       assemble_seconds = clock.seconds();
-      st.area = a.area; st.energy = a.energy; st.H_integral = a.H_integral;
+      std::string why;
+      const Step_verdict verdict = judge_step(initial, accepted, input_folds, lowest_H, candidate, why);
+      if(verdict == Step_verdict::COLLAPSED)
+        return fail(report, Fairing_status::COLLAPSED, "step " + std::to_string(step) + ": " + why +
+                    ": mean-curvature flow shrinks closed surfaces to points; use fewer steps or a larger fidelity weight", total);
+      if(verdict == Step_verdict::UNSOUND)
+      {
+        restore_operator();
+        ++report.rejected_steps;
+        last_why = why;
+        if(s.verbose) std::cerr << "step " << step << " rejected (" << why << "); retrying with a quarter of the time step\n";
+        if(++rejections <= s.maximum_rejections) { factor /= 4; continue; }
+        const std::string what = "step " + std::to_string(step) + ": " + why + " even with 1/" +
+                                 std::to_string(1 << (2 * s.maximum_rejections)) + " of the time step";
+        if(report.steps.empty())
+          return fail(report, !candidate.finite ? Fairing_status::NON_FINITE_VALUE : Fairing_status::FOLDED, what, total);
+        report.stop_reason = Stop_reason::STEP_REJECTED;
+        report.message = what + "; the run ends on the last sound surface (step " + std::to_string(step - 1) + ")";
+        break;
+      }
+
+      // accepted; a flow that only crawls on with a sliver of its time step is heading into a fold
+      cramped = factor <= 1.0 / 16 ? cramped + 1 : 0;
+      rejections = 0;
+      X_previous.swap(X);
+      X.swap(Xc);
+      accepted = candidate;
+      if(candidate.folded_edges <= allowed_folds) { X_unfolded = X; unfolded_steps = report.steps.size() + 1; }
+      lowest_H = std::min(lowest_H, candidate.statistics.H_integral);
+      time += st.time_step;
+      st.time = time;
+      st.area = accepted.statistics.area; st.energy = accepted.statistics.energy; st.H_integral = accepted.statistics.H_integral;
       if(step == s.maximum_steps) st.assemble_seconds += assemble_seconds;   // the final surface's statistics
+      const double previous_discrepancy = discrepancy;
+      if(noise_stop) discrepancy = s.noise->relative_displacement(Y, X0, {});
+      st.noise_displacement = discrepancy;
+      if(noise_stop && discrepancy >= target)
+      {
+        // the noise level is reached within this step: end on the surface where it is reached exactly
+        const double theta = std::min(1.0, std::max(0.0, (target - previous_discrepancy) / (discrepancy - previous_discrepancy)));
+        if(theta < 1)
+        {
+          X = X_previous + theta * (X - X_previous);
+          const Assembly_statistics b = assemble_at(X, metric_columns, tensor, false);
+          st.time = time - (1 - theta) * st.time_step;
+          st.area = b.area; st.energy = b.energy; st.H_integral = b.H_integral;
+          st.max_displacement = 0;
+          for(Eigen::Index i = 0; i < n; ++i)
+            st.max_displacement = std::max(st.max_displacement, (X.row(i) - X0.row(i)).head(metric_columns).norm());
+          output_positions(X, Y);
+          st.noise_displacement = s.noise->relative_displacement(Y, X0, {});
+        }
+        report.stop_reason = Stop_reason::NOISE_LEVEL;
+      }
+      report.noise_displacement = st.noise_displacement;
       report.steps.push_back(st);
       if(s.verbose) print(st);
-      if(a.degenerate) return fail(report, Fairing_status::DEGENERATE_METRIC, degenerate_message(a, step), total);
-      if(!std::isfinite(a.area) || !std::isfinite(a.H_integral) || !std::isfinite(a.energy))
-        return fail(report, Fairing_status::NON_FINITE_VALUE, "step " + std::to_string(step) + ": the surface's area or curvature is not finite", total);
-      if(a.area < 1e-8 * report.initial.area)
-        return fail(report, Fairing_status::COLLAPSED, "step " + std::to_string(step) + ": the surface collapsed to a point (area " +
-                    ratio_text(a.area / report.initial.area) + " of the initial one): mean-curvature flow shrinks closed surfaces to points; use fewer steps or a larger fidelity weight", total);
+      if(report.stop_reason == Stop_reason::NOISE_LEVEL) { callback(report.steps.back()); break; }
+      if(cramped >= 4)
+      {
+        report.stop_reason = Stop_reason::STEP_REJECTED;
+        report.message = "steps " + std::to_string(step - 3) + " to " + std::to_string(step) + " went on only with 1/16 of the time "
+                         "step or less (" + last_why + " otherwise); the run ends on the last sound surface (step " + std::to_string(step) + ")";
+        callback(report.steps.back());
+        break;
+      }
 
       // stopping criteria (27)-(29) and the steady state
-      bool stop = monitor.should_stop(step, a.H_integral, st.max_displacement / length_unit, moved / length_unit, report.stop_reason);
+      bool stop = monitor.should_stop(step, st.time_step / time_unit, st.H_integral, max_relative_, moved_relative_, report.stop_reason);
       if(!callback(report.steps.back()) && !stop) { report.stop_reason = Stop_reason::CALLBACK; stop = true; }
       if(stop) break;
+      factor = std::min(1.0, 2 * factor);
+      ++step;
+    }
+    // the end: never a surface with more folded edges than the input
+    output_positions(X, Y);
+    const std::size_t folds = count_folded_edges(*layer_.topology, layer_.real_faces, Y);
+    if(folds > allowed_folds && report.succeeded())
+    {
+      X = X_unfolded;
+      report.steps.resize(unfolded_steps);
+      report.stop_reason = Stop_reason::STEP_REJECTED;
+      report.message = "the surface folded at " + std::to_string(folds) + " edges (the input at " + std::to_string(allowed_folds) +
+                       "); the run ends on the last surface without new folds (step " + std::to_string(unfolded_steps) + ")";
+      if(noise_stop) { output_positions(X, Y); report.noise_displacement = s.noise->relative_displacement(Y, X0, {}); }
     }
     report.total_seconds = total.seconds();
     return report;
@@ -292,29 +324,27 @@ public:
   /// and every step is one solve for the other columns. The stopping criteria read the attributes'
   /// Dirichlet energy trace(A^T L A) in place of int |H|^2 (27, 28), and the steady-state speed in units
   /// of the attributes' spread, the root mean square of A_0 - mean(A_0). (29) bounds how far the surface
-  /// moves; with the surface fixed it does not apply (noisy values move by about the noise in one step).
+  /// moves; with the surface fixed it does not apply (noisy values move by about the noise in one step),
+  /// nor does the noise criterion, which measures the surface.
   template <typename Tensor, typename Callback>
-  Fairing_report run_on_fixed_surface(Control_matrix& X, const Tensor& tensor, const Stepper_settings& s, Callback& callback)
+  Fairing_report run_on_fixed_surface(Control_matrix& X, const Tensor& tensor_in, const Stepper_settings& s, Callback& callback)
   {
     Stopwatch total;
     Fairing_report report;
     report.vertices = std::size_t(X.rows());
     report.constrained_vertices = std::size_t(X.rows()) - free_.size();
     Stopwatch clock;
-    const Assembly_statistics a = assemble_at(X, 3, tensor, true);
-    if(!prefilter_error_.empty()) return fail(report, Fairing_status::SOLVER_FAILED, prefilter_error_, total);
+    Tensor tensor = tensor_in;
+    Assembly_statistics a;
+    if(!set_units(X, 3, s, tensor, report, a, total)) return report;
     const double assemble_seconds = clock.seconds();
-    if(a.degenerate) return fail(report, Fairing_status::DEGENERATE_METRIC, degenerate_message(a, 0), total);
     const Eigen::Index n = X.rows(), k = X.cols() - 3, nfree = Eigen::Index(free_.size());
     const Control_matrix F0 = X.rightCols(k);
     Control_matrix F = F0;
-    report.initial.area = a.area;
-    report.initial.H_integral = a.H_integral;
     report.initial.energy = dirichlet_energy(F);
 
-    const double scale = set_units(a.area, s, report), tau = report.time_step, omega = report.fidelity_weight;
     const Stopping_criteria& c = s.stopping;
-    const double time_unit = c.relative_units ? scale * scale : 1.0;
+    const double time_unit = c.relative_units ? report.scale * report.scale : 1.0;
     double spread = 0;
     {
       const Eigen::RowVectorXd mean = F0.colwise().mean();
@@ -324,13 +354,17 @@ public:
     const double value_unit = spread > 0 ? spread : 1.0;
     Stopping_criteria criteria = c;
     criteria.displacement = 0;
-    Stopping_monitor monitor(criteria, tau / time_unit, report.initial.energy);
+    Stopping_monitor monitor(criteria, report.initial.energy);
 
     // the constant system, and its solver: factorised once (up to automatic_cholesky_limit free
     // vertices for AUTOMATIC), or conjugate gradients warm-started from the last step
+    const double sys = system_scale(1.0);
     double* av = A_.valuePtr();
     for(std::size_t e = 0; e < source_.size(); ++e)
-      av[e] = (1 + tau * omega) * M_[std::size_t(source_[e])] + tau * L_[std::size_t(source_[e])];
+    {
+      const std::size_t p = std::size_t(source_[e]), row = std::size_t(free_[std::size_t(entry_row_[e])]);
+      av[e] = ((1 + units_.tau[row] * units_.omega[row]) * M_[p] + units_.tau[row] * L_[p]) / sys;
+    }
     const bool factorise = s.solver == Linear_solver::CHOLESKY ||
                            (s.solver == Linear_solver::AUTOMATIC && free_.size() <= std::size_t(automatic_cholesky_limit));
     Sparse_cholesky cholesky;
@@ -344,9 +378,10 @@ public:
     {
       Fairing_step st;
       st.step = step;
-      st.time = double(step) * tau;
+      st.time_step = report.time_step;
+      st.time = double(step) * report.time_step;
       clock = Stopwatch();
-      residual_rhs(F, F0, tau, omega, R);
+      residual_rhs(F, F0, 1.0 / sys, R);
       for(Eigen::Index i = 0; i < nfree; ++i) B.row(i) = R.row(free_[std::size_t(i)]);
       st.assemble_seconds = (step == 1 ? assemble_seconds : 0.0) + clock.seconds();
       clock = Stopwatch();
@@ -355,16 +390,17 @@ public:
       st.direct_solve = factorise;
       st.solver_iterations = sol.iterations;
       st.residual = sol.residual;
-      if(!sol.ok) return fail(report, Fairing_status::SOLVER_FAILED, "step " + std::to_string(step) + ": " + sol.message, total);
-      if(!dF.allFinite())
+      if(!dF.allFinite() || !std::isfinite(sol.residual))
         return fail(report, Fairing_status::NON_FINITE_VALUE, "step " + std::to_string(step) + ": the solution is not finite", total);
+      if(!sol.ok) return fail(report, Fairing_status::SOLVER_FAILED, "step " + std::to_string(step) + ": " + sol.message, total);
       const double moved = move_free_rows(F, dF, F0, int(k), st);
       st.area = a.area;
       st.H_integral = a.H_integral;
       st.energy = dirichlet_energy(F);
       report.steps.push_back(st);
       if(s.verbose) print(st);
-      bool stop = monitor.should_stop(step, st.energy, st.max_displacement / value_unit, moved / value_unit, report.stop_reason);
+      bool stop = monitor.should_stop(step, report.time_step / time_unit, st.energy, st.max_displacement / value_unit,
+                                      moved / value_unit, report.stop_reason);
       if(!callback(report.steps.back()) && !stop) { report.stop_reason = Stop_reason::CALLBACK; stop = true; }
       if(stop) break;
     }
@@ -374,8 +410,8 @@ public:
   }
 
 private:
-  // R = tau (omega M (X0 - X) - L X), all rows
-  void residual_rhs(const Control_matrix& X, const Control_matrix& X0, double tau, double omega, Dense_block& R) const
+  // R = f tau_i (omega_i M (X0 - X) - L X)_i, all rows
+  void residual_rhs(const Control_matrix& X, const Control_matrix& X0, double f, Dense_block& R) const
   {
     const Eigen::SparseMatrix<double>& P = assembler_.pattern();
     const int* outer = P.outerIndexPtr();
@@ -385,14 +421,112 @@ private:
     {
       double* r = R.row(i).data();
       std::fill(r, r + k, 0.0);
+      const double omega = units_.omega[std::size_t(i)];
       for(int p = outer[i]; p < outer[i + 1]; ++p)
       {
         const Eigen::Index j = rows[p];
         const double l = L_[std::size_t(p)], m = omega * M_[std::size_t(p)];
         for(Eigen::Index col = 0; col < k; ++col) r[col] += m * (X0(j, col) - X(j, col)) - l * X(j, col);
       }
+      const double tau = f * units_.tau[std::size_t(i)];
       for(Eigen::Index col = 0; col < k; ++col) r[col] *= tau;
     }
+  }
+
+  // 1, or what the system of a step with f times the time step is divided by so that a huge time
+  // step cannot overflow its norms (the solution does not change)
+  double system_scale(double f) const
+  {
+    double largest = 0;
+    for(int i : free_) largest = std::max(largest, f * units_.tau[std::size_t(i)] * (units_.omega[std::size_t(i)] + 1 / (mean_edge_ * mean_edge_)));
+    return largest > 1e6 ? largest : 1.0;
+  }
+
+  // The units of every vertex from the input's area per component, the tensor told its length scale,
+  // then M and L(D) at X: false (and a failed report) when the input has no surface.
+  template <typename Tensor>
+  bool set_units(const Control_matrix& X, int metric_columns, const Stepper_settings& s, Tensor& tensor,
+                 Fairing_report& report, Assembly_statistics& a, const Stopwatch& total)
+  {
+    const bool scaled_tensor = wants_length_scale(tensor, 0);
+    std::vector<double> m, l;
+    if(scaled_tensor) a = assembler_.assemble(X, metric_columns, Isotropic_diffusion_tensor(), m, l, false);
+    else a = assemble_at(X, metric_columns, tensor, true);
+    for(std::size_t c = 0; c < a.component_area.size(); ++c)
+      if(!(a.component_area[c] > 0) || !std::isfinite(a.component_area[c]) || !(component_edge_[c] > 0))
+      {
+        fail(report, Fairing_status::DEGENERATE_METRIC, "the input's limit surface has no area" +
+             (components_.count > 1 ? " in connected component " + std::to_string(c) : std::string()) +
+             " (sqrt(det G) <= 0 on face " + std::to_string(a.degenerate_face) + "): its control points do not span a surface", total);
+        return false;
+      }
+    const Length_unit tensor_unit = is_automatic_tensor(tensor, 0) ? Length_unit::EDGE : Length_unit::SCALE;
+    units_ = make_step_units(a, components_, std::size_t(X.rows()), s.time_step, s.time_unit, s.fidelity_weight,
+                             s.relative_fidelity, s.stopping.relative_units, tensor_unit, component_edge_, mean_edge_);
+    report.scale = units_.scale;
+    report.time_step = units_.time_step;
+    report.fidelity_weight = units_.fidelity_weight;
+    report.components = components_.count;
+    // several components: each solved in its own units (unknowns dX / l_c, equations / l_c^2 and l_c^3),
+    // so that the solver's tolerance means the same on a small part as on a large one
+    unknown_scale_.clear();
+    if(components_.count > 1 && units_.length.size() == std::size_t(X.rows()))
+      for(std::size_t i = 0; i < std::size_t(X.rows()); ++i)
+      {
+        const int c = components_.of_vertex[i];
+        unknown_scale_.push_back(c >= 0 ? std::sqrt(a.component_area[std::size_t(c)] / (4 * 3.14159265358979323846)) : 1.0);
+      }
+    eps_.assign(std::size_t(X.rows()), 0.0);
+    if(scaled_tensor)
+    {
+      // each component's prefilter time as the tensor measures it at that component's scale
+      std::vector<double> eps(components_.count);
+      for(std::size_t c = 0; c < components_.count; ++c)
+      {
+        Tensor t = tensor;
+        give_length_scale(t, units_.tensor_unit * units_.tensor_scale[c], 0);
+        eps[c] = prefilter_time(t, 0);
+      }
+      for(std::size_t i = 0; i < eps_.size(); ++i)
+        if(components_.of_vertex[i] >= 0) eps_[i] = eps[std::size_t(components_.of_vertex[i])];
+      assembler_.set_component_scales(&units_.tensor_scale);
+      give_length_scale(tensor, units_.tensor_unit, 0);
+      report.feature_threshold = std::isfinite(threshold_of(tensor, 0)) ? threshold_of(tensor, 0) : 0.0;
+      report.prefilter_time = prefilter_time(tensor, 0);
+      a = assemble_at(X, metric_columns, tensor, true);
+    }
+    else eps_.assign(eps_.size(), prefilter_time(tensor, 0));
+    report.initial.area = a.area;
+    report.initial.energy = a.energy;
+    report.initial.H_integral = a.H_integral;
+    if(!prefilter_error_.empty()) { fail(report, Fairing_status::SOLVER_FAILED, prefilter_error_, total); return false; }
+    return true;
+  }
+
+  // the positions written for X: its Loop limit points, or X itself
+  void output_positions(const Control_matrix& X, Control_matrix& Y) const
+  {
+    if(!limit_output_) { Y = X; return; }
+    const Control_matrix extended = layer_.has_boundary() ? layer_.extend(X) : Control_matrix();
+    const Control_matrix& E = layer_.has_boundary() ? extended : X;
+    Y.resize(X.rows(), X.cols());
+    for(Eigen::Index i = 0; i < X.rows(); ++i) vertex_limit_value(*layer_.topology, E, int(i), Y.row(i).data());
+  }
+
+  // the operator of the accepted surface, kept while a candidate step is judged
+  void save_operator()
+  {
+    saved_M_.swap(M_);
+    saved_L_.swap(L_);
+    saved_prefiltered_X_ = prefiltered_X_;
+    saved_prefiltered_valid_ = prefiltered_valid_;
+  }
+  void restore_operator()
+  {
+    saved_M_.swap(M_);
+    saved_L_.swap(L_);
+    prefiltered_X_.swap(saved_prefiltered_X_);
+    prefiltered_valid_ = saved_prefiltered_valid_;
   }
 
   // M and L(D) at X. A tensor with a prefilter time eps > 0 (Bajaj & Xu's M_eps) first gets the surface
@@ -401,29 +535,38 @@ private:
   template <typename Tensor>
   Assembly_statistics assemble_at(const Control_matrix& X, int metric_columns, const Tensor& tensor, bool with_matrices)
   {
-    const double eps = prefilter_time(tensor, 0);
+    bool prefilter = false;
+    for(double e : eps_) prefilter = prefilter || e > 0;
     assembler_.set_prefiltered(nullptr);
     prefilter_error_.clear();
     prefiltered_valid_ = false;
-    if(eps > 0 && !free_.empty())
+    if(prefilter && !free_.empty())
     {
       std::vector<double> Mi, Li;
       assembler_.assemble(X, metric_columns, Isotropic_diffusion_tensor(), Mi, Li);
       if(prefilter_A_.rows() != A_.rows()) prefilter_A_ = A_;
       double* av = prefilter_A_.valuePtr();
-      for(std::size_t e = 0; e < source_.size(); ++e) av[e] = Mi[std::size_t(source_[e])] + eps * Li[std::size_t(source_[e])];
+      for(std::size_t e = 0; e < source_.size(); ++e)
+        av[e] = Mi[std::size_t(source_[e])] + eps_[std::size_t(free_[std::size_t(entry_row_[e])])] * Li[std::size_t(source_[e])];
       const Eigen::SparseMatrix<double>& P = assembler_.pattern();
       const Eigen::Index nfree = Eigen::Index(free_.size());
       Dense_block B(nfree, metric_columns), dX = Dense_block::Zero(nfree, metric_columns);
       for(Eigen::Index i = 0; i < nfree; ++i)
       {
         const int row = free_[std::size_t(i)];
+        const double eps = eps_[std::size_t(row)];
         B.row(i).setZero();
         for(int p = P.outerIndexPtr()[row]; p < P.outerIndexPtr()[row + 1]; ++p)
           B.row(i) -= eps * Li[std::size_t(p)] * X.row(P.innerIndexPtr()[p]).head(metric_columns);
       }
       Block_conjugate_gradient cg(1e-10, 10000);
-      const Solve_statistics sol = cg.solve(prefilter_A_, B, dX);
+      Solve_statistics sol = cg.solve(prefilter_A_, B, dX);
+      if(!sol.ok)   // near-degenerate faces (quantised scans) can make it too ill-conditioned for CG
+      {
+        Sparse_cholesky cholesky;
+        dX.setZero();
+        sol = cholesky.solve(prefilter_A_, B, dX);
+      }
       if(!sol.ok || !dX.allFinite())
         prefilter_error_ = "the prefiltered surface M_eps could not be computed: " + (sol.ok ? std::string("not finite") : sol.message);
       else
@@ -439,34 +582,29 @@ private:
     return a;
   }
 
-  template <typename Tensor>
-  static auto prefilter_time(const Tensor& t, int) -> decltype(double(t.prefilter_time())) { return double(t.prefilter_time()); }
-  template <typename Tensor>
-  static double prefilter_time(const Tensor&, long) { return 0.0; }
-
-  // l = sqrt(Area / 4 pi), and tau and omega in model units, into the report; returns l
-  static double set_units(double area, const Stepper_settings& s, Fairing_report& report)
-  {
-    const double scale = std::sqrt(area / (4 * 3.14159265358979323846));
-    report.scale = scale;
-    report.time_step = s.relative_time_step ? s.time_step * scale * scale : s.time_step;
-    report.fidelity_weight = s.relative_fidelity ? s.fidelity_weight / (scale * scale) : s.fidelity_weight;
-    return scale;
-  }
-
   // adds the free rows' displacements to X; records the step's and the total (from X0) largest motion
   // over the first `columns` columns; returns the step's
-  double move_free_rows(Control_matrix& X, const Dense_block& dX, const Control_matrix& X0, int columns, Fairing_step& st) const
+  // (and the same in the units of the relative stopping thresholds: max_relative_, moved_relative_)
+  double move_free_rows(Control_matrix& X, const Dense_block& dX, const Control_matrix& X0, int columns, Fairing_step& st)
   {
     double moved = 0;
+    moved_relative_ = max_relative_ = 0;
     for(Eigen::Index i = 0; i < dX.rows(); ++i)
     {
-      X.row(free_[std::size_t(i)]) += dX.row(i);
-      moved = std::max(moved, dX.row(i).head(columns).norm());
+      const std::size_t row = std::size_t(free_[std::size_t(i)]);
+      X.row(Eigen::Index(row)) += dX.row(i);
+      const double d = dX.row(i).head(columns).norm();
+      moved = std::max(moved, d);
+      moved_relative_ = std::max(moved_relative_, d / units_.length[row]);
     }
     st.step_displacement = moved;
+    st.max_displacement = 0;
     for(Eigen::Index i = 0; i < X.rows(); ++i)
-      st.max_displacement = std::max(st.max_displacement, (X.row(i) - X0.row(i)).head(columns).norm());
+    {
+      const double d = (X.row(i) - X0.row(i)).head(columns).norm();
+      st.max_displacement = std::max(st.max_displacement, d);
+      max_relative_ = std::max(max_relative_, d / units_.length[std::size_t(i)]);
+    }
     return moved;
   }
 
@@ -481,40 +619,6 @@ private:
     return e;
   }
 
-  static std::string degenerate_message(const Assembly_statistics& a, std::size_t step)
-  {
-    if(step == 0)
-      return "the input's limit surface is degenerate (sqrt(det G) <= 0) on face " + std::to_string(a.degenerate_face) +
-             ": its control points do not span a surface there";
-    return "after step " + std::to_string(step) + " the surface is degenerate (sqrt(det G) <= 0) on face " +
-           std::to_string(a.degenerate_face) + ": it pinched; use a smaller time step or fewer steps";
-  }
-
-  static std::string ratio_text(double x)
-  {
-    char b[32];
-    std::snprintf(b, sizeof b, "%.3g", x);
-    return b;
-  }
-
-  static Fairing_report& fail(Fairing_report& r, Fairing_status status, const std::string& message, const Stopwatch& total)
-  {
-    r.status = status;
-    r.stop_reason = Stop_reason::FAILURE;
-    r.message = message;
-    r.total_seconds = total.seconds();
-    return r;
-  }
-
-  static void print(const Fairing_step& st)
-  {
-    char line[256];
-    std::snprintf(line, sizeof line, "step %zu  t=%.4g  area=%.6g  int|H|^2=%.6g  max disp=%.3g  %d its (res %.1e)  %.3fs + %.3fs\n",
-                  st.step, st.time, st.area, st.H_integral, st.max_displacement, st.solver_iterations,
-                  st.residual, st.assemble_seconds, st.solve_seconds);
-    std::cerr << line;
-  }
-
   Fem_assembler<Cache> assembler_;
   std::vector<int> free_index_, free_;
   std::vector<int> source_;
@@ -527,6 +631,21 @@ private:
   Dense_block previous_dX_;
   const Tangential_motion_filter* tangential_filter_ = nullptr;
   Dense_block normal_dX_;
+  const Ghost_layer& layer_;
+  const Mesh_components& components_;
+  const std::vector<double>& component_edge_;
+  double mean_edge_;
+  std::vector<int> entry_row_;          // the free column of each entry of A_
+  Step_units units_;
+  std::vector<double> eps_;             // prefilter time per row
+  bool limit_output_ = false;
+  std::vector<double> saved_M_, saved_L_;
+  Control_matrix saved_prefiltered_X_;
+  bool saved_prefiltered_valid_ = false;
+  double moved_relative_ = 0, max_relative_ = 0;
+  double limit_weight_ = 1;
+  std::vector<double> unknown_scale_;   // per row, with several components (else empty)
+  Dense_block step_dX_;
 };
 
 } // namespace internal

@@ -1,0 +1,78 @@
+// Copyright (c) 2026 Anisotropic_fairing developers.
+// SPDX-License-Identifier: GPL-3.0-or-later
+//
+// Which linear solver runs each time step when the user leaves the choice to the package.
+
+#ifndef CGAL_ANISOTROPIC_FAIRING_INTERNAL_SOLVER_CHOICE_H
+#define CGAL_ANISOTROPIC_FAIRING_INTERNAL_SOLVER_CHOICE_H
+
+#include <CGAL/Anisotropic_fairing/Fairing_settings.h>
+#include <CGAL/Anisotropic_fairing/internal/Spd_solvers.h>
+
+#include <algorithm>
+#include <cmath>
+#include <cstddef>
+#include <memory>
+
+namespace CGAL {
+namespace Anisotropic_fairing {
+namespace internal {
+
+/// Which solver runs each step. AUTOMATIC starts with conjugate gradients; when a step needs many
+/// iterations it times one factorised step and keeps whichever was faster (bench_step_speed: CG wins
+/// per step on every mesh tried at tau/h^2 <= 1, the factorisation wins by up to 5x once CG needs
+/// hundreds of iterations on a few thousand vertices).
+class Solver_choice
+{
+public:
+  Solver_choice(Linear_solver requested, std::size_t free_vertices)
+    : automatic_(requested == Linear_solver::AUTOMATIC),
+      may_factorise_(requested == Linear_solver::CHOLESKY ||
+                     (automatic_ && free_vertices <= std::size_t(automatic_cholesky_limit))),
+      mode_(requested == Linear_solver::CHOLESKY ? FACTORISE : ITERATE)
+  {}
+
+  bool factorise_now() const { return mode_ != ITERATE; }
+  bool may_fall_back() const { return automatic_ && may_factorise_; }
+  Sparse_cholesky& cholesky()
+  {
+    if(!cholesky_) cholesky_.reset(new Sparse_cholesky());
+    return *cholesky_;
+  }
+
+  void record(bool direct, const Solve_statistics& sol, double seconds)
+  {
+    if(!automatic_) return;
+    if(direct && !sol.ok) { mode_ = ITERATE; tried_ = true; factorised_seconds_ = HUGE_VAL; return; }
+    if(direct)
+    {
+      factorised_seconds_ = seconds - sol.analysis_seconds;   // what every further factorised step costs
+      mode_ = (mode_ != TRIAL || factorised_seconds_ < predicted_iterate_seconds_) ? FACTORISE : ITERATE;
+      tried_ = true;
+      return;
+    }
+    // CG work often grows from step to step as the surface roughens or pinches: predict the next
+    // step's cost from the growth of the iteration count
+    const double growth = previous_iterations_ > 0 ? std::max(1.0, double(sol.iterations) / previous_iterations_) : 1.0;
+    predicted_iterate_seconds_ = seconds * growth;
+    previous_iterations_ = sol.iterations;
+    if(!may_factorise_) return;
+    if(tried_ && predicted_iterate_seconds_ > factorised_seconds_) mode_ = FACTORISE;
+    else if(!tried_ && sol.iterations > automatic_cholesky_trial_iterations) mode_ = TRIAL;
+  }
+
+private:
+  enum Mode { ITERATE, TRIAL, FACTORISE };
+  bool automatic_, may_factorise_;
+  Mode mode_;
+  bool tried_ = false;
+  double predicted_iterate_seconds_ = 0, factorised_seconds_ = HUGE_VAL;
+  int previous_iterations_ = 0;
+  std::unique_ptr<Sparse_cholesky> cholesky_;
+};
+
+} // namespace internal
+} // namespace Anisotropic_fairing
+} // namespace CGAL
+
+#endif // CGAL_ANISOTROPIC_FAIRING_INTERNAL_SOLVER_CHOICE_H

@@ -1,0 +1,114 @@
+// Copyright (c) 2026 Anisotropic_fairing developers.
+// SPDX-License-Identifier: GPL-3.0-or-later
+//
+// Whether a time step left a sound surface. A folded limit surface keeps sqrt(det G) > 0 almost
+// everywhere, so positivity of the metric alone does not see it; what does is the normal reversing
+// (between neighbouring faces of the written mesh, or between quadrature points of one face), and
+// int |H|^2 exploding. A step is judged against the last accepted state: it may not add degenerate
+// points, nor fold (turn by more than 120 degrees) in more places than that state was nearly folded
+// (110 degrees: a place on the brink may tip over by any small motion, which is no instability) or
+// the input mesh was folded (noise leaves folds that fairing takes a few steps to remove), nor raise int |H|^2 above 4 times the lowest
+// value reached, nor shrink a connected component to (almost) nothing.
+
+#ifndef CGAL_ANISOTROPIC_FAIRING_INTERNAL_STEP_SAFETY_H
+#define CGAL_ANISOTROPIC_FAIRING_INTERNAL_STEP_SAFETY_H
+
+#include <CGAL/Anisotropic_fairing/internal/Control_matrix.h>
+#include <CGAL/Anisotropic_fairing/internal/Fem_assembly.h>
+#include <CGAL/Anisotropic_fairing/internal/Triangle_topology.h>
+
+#include <algorithm>
+#include <cmath>
+#include <cstddef>
+#include <cstdio>
+#include <string>
+
+namespace CGAL {
+namespace Anisotropic_fairing {
+namespace internal {
+
+/// Interior edges between two of the first `real_faces` faces whose normals (of the triangles of Y)
+/// turn by more than the angle of cosine `turn` (120 degrees: the mesh folds over there).
+inline std::size_t count_folded_edges(const Triangle_topology& topo, std::size_t real_faces, const Control_matrix& Y,
+                                      double turn = turn_120)
+{
+  auto normal = [&](std::size_t f, double* n) {
+    const auto& t = topo.face(f);
+    double u[3], v[3];
+    for(int a = 0; a < 3; ++a) { u[a] = Y(t[1], a) - Y(t[0], a); v[a] = Y(t[2], a) - Y(t[0], a); }
+    n[0] = u[1] * v[2] - u[2] * v[1]; n[1] = u[2] * v[0] - u[0] * v[2]; n[2] = u[0] * v[1] - u[1] * v[0];
+    return std::sqrt(n[0] * n[0] + n[1] * n[1] + n[2] * n[2]);
+  };
+  std::size_t folded = 0;
+  for(int h = 0; h < int(3 * real_faces); ++h)
+  {
+    const int o = topo.opposite(h);
+    if(o < h || std::size_t(topo.face_of(o)) >= real_faces) continue;   // each interior edge once
+    double a[3], b[3];
+    const double la = normal(std::size_t(topo.face_of(h)), a), lb = normal(std::size_t(topo.face_of(o)), b);
+    if(!(la > 0) || !(lb > 0)) continue;   // a zero-area triangle has no normal to turn
+    if(a[0] * b[0] + a[1] * b[1] + a[2] * b[2] < turn * la * lb) ++folded;
+  }
+  return folded;
+}
+
+/// What is judged of a surface after a step.
+struct Surface_soundness
+{
+  Assembly_statistics statistics;
+  std::size_t folded_edges = 0, bent_edges = 0;   // turning by more than 120 and 110 degrees
+  bool finite = true;
+
+  /// edges of the written mesh and faces of the limit surface where the normal turns by more than 120 degrees
+  std::size_t folds() const { return folded_edges + statistics.reversed_faces; }
+  /// the same beyond 110 degrees: places that may tip over into a fold without the step being at fault
+  std::size_t near_folds() const { return bent_edges + statistics.bent_faces; }
+};
+
+enum class Step_verdict { SOUND, UNSOUND, COLLAPSED };
+
+/// Compares `candidate` with the last accepted state (and the initial one for collapse); `input_folds`
+/// are the folds of the input mesh itself, `lowest_H` the lowest int |H|^2 reached so far. `why` names what failed.
+inline Step_verdict judge_step(const Surface_soundness& initial, const Surface_soundness& accepted, std::size_t input_folds,
+                               double lowest_H, const Surface_soundness& candidate, std::string& why)
+{
+  const Assembly_statistics& c = candidate.statistics;
+  const Assembly_statistics& a = accepted.statistics;
+  char text[200];
+  if(!candidate.finite || !std::isfinite(c.area) || !std::isfinite(c.H_integral) || !std::isfinite(c.energy))
+  { why = "the surface's coordinates, area or curvature overflowed"; return Step_verdict::UNSOUND; }
+  for(std::size_t k = 0; k < c.component_area.size() && k < initial.statistics.component_area.size(); ++k)
+    if(c.component_area[k] < 1e-2 * initial.statistics.component_area[k])
+    {
+      std::snprintf(text, sizeof text, "connected component %zu shrank to %.3g of its initial area", k,
+                    c.component_area[k] / initial.statistics.component_area[k]);
+      why = text;
+      return Step_verdict::COLLAPSED;
+    }
+  if(c.degenerate_points > a.degenerate_points)
+  {
+    std::snprintf(text, sizeof text, "the surface pinched (sqrt(det G) <= 0 on face %zu)", c.degenerate_face);
+    why = text;
+    return Step_verdict::UNSOUND;
+  }
+  if(candidate.folds() > std::max(accepted.near_folds(), input_folds))
+  {
+    std::snprintf(text, sizeof text, "the surface folded (%zu edges and %zu faces where the normal turns by more than 120 degrees, "
+                  "%zu before)", candidate.folded_edges, c.reversed_faces, accepted.folds());
+    why = text;
+    return Step_verdict::UNSOUND;
+  }
+  if(c.H_integral > 4 * lowest_H && lowest_H > 0)
+  {
+    std::snprintf(text, sizeof text, "int |H|^2 exploded (%.4g, more than 4 times the lowest value %.4g)", c.H_integral, lowest_H);
+    why = text;
+    return Step_verdict::UNSOUND;
+  }
+  return Step_verdict::SOUND;
+}
+
+} // namespace internal
+} // namespace Anisotropic_fairing
+} // namespace CGAL
+
+#endif // CGAL_ANISOTROPIC_FAIRING_INTERNAL_STEP_SAFETY_H

@@ -1,0 +1,91 @@
+// Copyright (c) 2026 Anisotropic_fairing developers.
+// SPDX-License-Identifier: GPL-3.0-or-later
+//
+// The time step, fidelity weight and tensor scale of every vertex. Relative parameters are measured
+// per connected component (l_c = sqrt(Area_c / 4 pi), or the component's mean edge length h_c for
+// the automatic parameters), so that a small part of a mesh is faired as if it were alone. Within a
+// component they are constant, so the system ((1 + tau w) M + tau L) stays symmetric: M and L have no
+// entry between two components.
+
+#ifndef CGAL_ANISOTROPIC_FAIRING_INTERNAL_STEP_UNITS_H
+#define CGAL_ANISOTROPIC_FAIRING_INTERNAL_STEP_UNITS_H
+
+#include <CGAL/Anisotropic_fairing/internal/Fem_assembly.h>
+#include <CGAL/Anisotropic_fairing/internal/Mesh_components.h>
+
+#include <cmath>
+#include <cstddef>
+#include <vector>
+
+namespace CGAL {
+namespace Anisotropic_fairing {
+namespace internal {
+
+/// What a relative parameter is measured in.
+enum class Length_unit { MODEL, SCALE, EDGE };
+
+struct Step_units
+{
+  std::vector<double> tau, omega;   // per row, model units
+  std::vector<double> length;       // per row: the length unit of the relative stopping thresholds (1 in model units)
+  std::vector<double> tensor_scale; // per component: its unit over the global one (Quadrature_point_geometry::component_scale)
+  std::vector<double> tensor_scale_of_row;
+  double scale = 0;                 // l of the whole surface
+  double tensor_unit = 1;           // the global unit given to the tensor's set_length_scale()
+  double time_step = 0, fidelity_weight = 0;   // of the largest component, for the report
+  double relative_time_step = 0;    // tau / l^2 of the largest component
+};
+
+/// `time_step` in units of `time_unit`^2, `fidelity` in 1/l^2 if relative; the tensor measured in
+/// `tensor_unit`. `edge[c]`: mean edge length of component c, `global_edge` of the whole mesh.
+inline Step_units make_step_units(const Assembly_statistics& a0, const Mesh_components& comp, std::size_t rows,
+                                  double time_step, Length_unit time_unit, double fidelity, bool relative_fidelity,
+                                  bool relative_stopping, Length_unit tensor_unit,
+                                  const std::vector<double>& edge, double global_edge)
+{
+  const double four_pi = 4 * 3.14159265358979323846;
+  Step_units u;
+  u.scale = std::sqrt(a0.area / four_pi);
+  const std::size_t nc = comp.count;
+  std::vector<double> ell(nc), tau(nc), omega(nc);
+  std::size_t largest = 0;
+  for(std::size_t c = 0; c < nc; ++c)
+  {
+    ell[c] = nc == 1 ? u.scale : std::sqrt(a0.component_area[c] / four_pi);
+    const double unit = time_unit == Length_unit::SCALE ? ell[c] : time_unit == Length_unit::EDGE ? edge[c] : 1.0;
+    tau[c] = time_step * unit * unit;
+    omega[c] = relative_fidelity ? fidelity / (ell[c] * ell[c]) : fidelity;
+    if(a0.component_area[c] > a0.component_area[largest]) largest = c;
+  }
+  u.tensor_unit = tensor_unit == Length_unit::EDGE ? global_edge : u.scale;
+  u.tensor_scale.resize(nc);
+  for(std::size_t c = 0; c < nc; ++c)
+    u.tensor_scale[c] = (tensor_unit == Length_unit::EDGE ? edge[c] : ell[c]) / u.tensor_unit;
+  if(nc == 1) u.tensor_scale[0] = 1.0;   // one component: exactly the global unit
+  u.tau.assign(rows, nc > 0 ? tau[largest] : 0.0);
+  u.omega.assign(rows, nc > 0 ? omega[largest] : 0.0);
+  u.length.assign(rows, relative_stopping ? u.scale : 1.0);
+  u.tensor_scale_of_row.assign(rows, 1.0);
+  for(std::size_t i = 0; i < rows; ++i)
+  {
+    const int c = comp.of_vertex[i];
+    if(c < 0) continue;
+    u.tau[i] = tau[std::size_t(c)];
+    u.omega[i] = omega[std::size_t(c)];
+    if(relative_stopping) u.length[i] = ell[std::size_t(c)];
+    u.tensor_scale_of_row[i] = u.tensor_scale[std::size_t(c)];
+  }
+  if(nc > 0)
+  {
+    u.time_step = tau[largest];
+    u.fidelity_weight = omega[largest];
+    u.relative_time_step = tau[largest] / (ell[largest] * ell[largest]);
+  }
+  return u;
+}
+
+} // namespace internal
+} // namespace Anisotropic_fairing
+} // namespace CGAL
+
+#endif // CGAL_ANISOTROPIC_FAIRING_INTERNAL_STEP_UNITS_H

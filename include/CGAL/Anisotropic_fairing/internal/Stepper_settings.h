@@ -1,0 +1,40 @@
+// Copyright (c) 2026 Anisotropic_fairing developers.
+// SPDX-License-Identifier: GPL-3.0-or-later
+//
+// What the time stepper is told by the driver: the numbers of the run, in the units they are given in.
+
+#ifndef CGAL_ANISOTROPIC_FAIRING_INTERNAL_STEPPER_SETTINGS_H
+#define CGAL_ANISOTROPIC_FAIRING_INTERNAL_STEPPER_SETTINGS_H
+
+#include <CGAL/Anisotropic_fairing/Fairing_settings.h>
+#include <CGAL/Anisotropic_fairing/internal/Noise_estimate.h>
+#include <CGAL/Anisotropic_fairing/internal/Step_units.h>
+
+#include <cstddef>
+
+namespace CGAL {
+namespace Anisotropic_fairing {
+namespace internal {
+
+struct Stepper_settings
+{
+  double time_step = 1e-3;          // tau in units of time_unit^2
+  Length_unit time_unit = Length_unit::SCALE;
+  double fidelity_weight = 0;       // omega, relative (omega = w / scale^2) or absolute
+  bool relative_fidelity = true;
+  std::size_t maximum_steps = 10;
+  Stopping_criteria stopping;
+  Linear_solver solver = Linear_solver::AUTOMATIC;
+  double solver_tolerance = 1e-8;
+  int solver_maximum_iterations = 10000;
+  bool verbose = false;
+  bool limit_output = false;        // the written positions are the Loop limit points of the control points
+  const Noise_estimate* noise = nullptr;   // of the input, in the stepper's numbering (noise criterion)
+  int maximum_rejections = 5;       // retries of a step, each with a quarter of the time step
+};
+
+} // namespace internal
+} // namespace Anisotropic_fairing
+} // namespace CGAL
+
+#endif // CGAL_ANISOTROPIC_FAIRING_INTERNAL_STEPPER_SETTINGS_H

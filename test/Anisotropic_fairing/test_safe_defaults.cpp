@@ -1,0 +1,267 @@
+// The default run (no named parameters) and the step control that keeps every run sound: a
+// constructed fold is seen; the stress cases of the safe-defaults issue never end in `success` with a
+// folded, collapsed, unmoved or non-finite surface; noise-free meshes are left nearly alone; several
+// components are each faired as if alone; zero-area faces are faired; the noise estimate recovers the
+// deviation of generated noise; and the default run denoises the Fandisk0.3 pair.
+//
+// argv[1]: the test data folder; argv[2]: the shared data folder (armadillo.obj).
+
+#include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
+#include <CGAL/Surface_mesh.h>
+#include <CGAL/boost/graph/IO/polygon_mesh_io.h>
+#include <CGAL/Polygon_mesh_processing/bbox.h>
+#include <CGAL/Polygon_mesh_processing/compute_normal.h>
+#include <CGAL/Polygon_mesh_processing/measure.h>
+
+#include <CGAL/Anisotropic_fairing/anisotropic_fairing.h>
+#include <CGAL/Anisotropic_fairing/internal/Step_safety.h>
+
+#include "test_support/check.h"
+#include "test_support/mesh_coordinates.h"
+#include "test_support/mesh_generators.h"
+
+#include <cmath>
+#include <cstdio>
+#include <random>
+#include <string>
+#include <vector>
+
+typedef CGAL::Exact_predicates_inexact_constructions_kernel K;
+typedef CGAL::Surface_mesh<K::Point_3> Mesh;
+namespace AF = CGAL::Anisotropic_fairing;
+namespace PMP = CGAL::Polygon_mesh_processing;
+using AF_test::byte_identical;
+using AF_test::coordinates;
+
+std::string DATA;   // the test data folder
+
+// the benchmark's measure: interior edges whose faces turn by more than 120 degrees
+std::size_t folded_edges(const Mesh& m)
+{
+  std::size_t count = 0;
+  for(auto e : m.edges())
+  {
+    if(m.is_border(e)) continue;
+    const auto h = m.halfedge(e);
+    if(PMP::compute_face_normal(m.face(h), m) * PMP::compute_face_normal(m.face(m.opposite(h)), m) < -0.5) ++count;
+  }
+  return count;
+}
+
+double bbox_diagonal(const Mesh& m)
+{
+  const CGAL::Bbox_3 b = PMP::bbox(m);
+  return std::sqrt(CGAL::square(b.xmax() - b.xmin()) + CGAL::square(b.ymax() - b.ymin()) + CGAL::square(b.zmax() - b.zmin()));
+}
+
+double mean_displacement(const Mesh& a, const Mesh& b)
+{
+  double sum = 0;
+  for(auto v : a.vertices()) sum += std::sqrt(CGAL::squared_distance(a.point(v), b.point(v)));
+  return sum / double(num_vertices(a));
+}
+
+double mean_edge(const Mesh& m)
+{
+  double sum = 0;
+  for(auto e : m.edges()) sum += std::sqrt(CGAL::squared_distance(m.point(m.source(m.halfedge(e))), m.point(m.target(m.halfedge(e)))));
+  return sum / double(num_edges(m));
+}
+
+// A folded run is never a success: it ends on a sound surface (no more folded edges than the input,
+// finite) with a stop reason that says so, or fails and leaves the mesh as it was.
+void check_sound(const char* name, const Mesh& input, const Mesh& output, const AF::Fairing_report& r)
+{
+  const std::size_t before = folded_edges(input), after = folded_edges(output);
+  bool finite = true;
+  for(double x : coordinates(output)) finite = finite && std::isfinite(x);
+  std::printf("%s: %s, stop %s after %zu steps (%zu rejected), folded edges %zu -> %zu: %s\n", name, AF::to_string(r.status),
+              AF::to_string(r.stop_reason), r.steps.size(), r.rejected_steps, before, after, r.message.c_str());
+  if(r.succeeded())
+  {
+    AF_CHECK(finite, std::string(name) + ": a success is finite");
+    AF_CHECK(after <= before, std::string(name) + ": a success has no more folded edges than the input");
+    if(r.stop_reason == AF::Stop_reason::STEP_REJECTED) AF_CHECK(!r.message.empty(), std::string(name) + ": an early end says why");
+  }
+  else
+  {
+    AF_CHECK(!r.message.empty(), std::string(name) + ": a failure says why");
+    AF_CHECK(byte_identical(coordinates(input), coordinates(output)), std::string(name) + ": a failure leaves the mesh as it was");
+  }
+}
+
+void constructed_fold()
+{
+  // two triangles on the edge (0,1), opened by 100 degrees and then folded to 150 (their normals turn by that much)
+  for(double turn : { 100.0, 150.0 })
+  {
+    const double a = turn * 3.14159265358979323846 / 180;
+    CGAL::Anisotropic_fairing::internal::Control_matrix Y(4, 3);
+    Y << 0, 0, 0,  1, 0, 0,  0.5, 1, 0,  0.5, -std::cos(a), std::sin(a);
+    std::vector<CGAL::Anisotropic_fairing::internal::Triangle_topology::Face> faces = { { { 0, 1, 2 } }, { { 1, 0, 3 } } };
+    const CGAL::Anisotropic_fairing::internal::Triangle_topology topo(4, faces, 0, false);
+    const std::size_t folded = CGAL::Anisotropic_fairing::internal::count_folded_edges(topo, 2, Y);
+    std::printf("two triangles whose normals turn by %.0f degrees: %zu folded edge(s)\n", turn, folded);
+    AF_CHECK(folded == (turn > 120 ? 1u : 0u), "an edge counts as folded exactly when its faces turn by more than 120 degrees");
+  }
+  // the step control sees the fold mean-curvature flow makes of a coarse scan with a huge time step
+  Mesh bunny;
+  AF_CHECK(CGAL::IO::read_polygon_mesh(std::string(DATA) + "/bunny.off", bunny), "read bunny.off");
+  Mesh m = bunny;
+  const AF::Fairing_report r = AF::anisotropic_fairing(m, AF::parameters::relative_time_step(0.1).number_of_iterations(3u)
+                                                             .stopping_criteria(AF::Stopping_criteria::none()));
+  check_sound("bunny, tau = 0.1 l^2 x 3 steps", bunny, m, r);
+  AF_CHECK(r.rejected_steps > 0, "the folding steps were rejected");
+}
+
+void stress_rows()
+{
+  Mesh bunny;
+  CGAL::IO::read_polygon_mesh(std::string(DATA) + "/bunny.off", bunny);
+  {
+    // a time step whose system overflows in double precision: the surface collapses at once
+    Mesh m = bunny;
+    const AF::Fairing_report r = AF::anisotropic_fairing(m, AF::parameters::time_step(1e300));
+    check_sound("bunny, tau = 1e300", bunny, m, r);
+    AF_CHECK(!r.succeeded(), "tau = 1e300 is not a success (nothing sound can be reached)");
+  }
+  {
+    // a long fidelity run: int |H|^2 stays bounded or the run ends early
+    Mesh m = bunny;
+    const AF::Fairing_report r = AF::anisotropic_fairing(m, AF::parameters::relative_fidelity_weight(1000.0).number_of_iterations(150u)
+                                                               .stopping_criteria(AF::Stopping_criteria::none()));
+    check_sound("bunny, relative fidelity 1000 x 150 steps", bunny, m, r);
+    double lowest = r.initial.H_integral;
+    for(const AF::Fairing_step& s : r.steps) lowest = std::min(lowest, s.H_integral);
+    const double last = r.steps.empty() ? r.initial.H_integral : r.steps.back().H_integral;
+    std::printf("  int |H|^2: initial %.4g, lowest %.4g, last %.4g\n", r.initial.H_integral, lowest, last);
+    AF_CHECK(last <= 4 * lowest, "int |H|^2 ends within 4 times its lowest value");
+  }
+}
+
+void noise_free(const std::string& file, double bound_percent)
+{
+  Mesh input;
+  AF_CHECK(CGAL::IO::read_polygon_mesh(file, input), "read " + file);
+  Mesh m = input;
+  const AF::Fairing_report r = AF::anisotropic_fairing(m);
+  check_sound(file.c_str(), input, m, r);
+  const double moved = 100 * mean_displacement(input, m) / bbox_diagonal(input);
+  std::printf("  noise %.3g h, mean displacement %.4f%% of the bounding-box diagonal (bound %.2f%%)\n", r.noise_level, moved, bound_percent);
+  AF_CHECK(r.succeeded() && r.automatic_parameters, "the default run succeeds with automatic parameters");
+  AF_CHECK(moved <= bound_percent, "a noise-free mesh is left nearly alone");
+  AF_CHECK(folded_edges(m) <= folded_edges(input), "no new folded edge");
+}
+
+void two_spheres()
+{
+  // a unit sphere and a sphere of radius 1000 in one mesh: each faired as if it were alone
+  AF_test::Triangle_soup small = AF_test::icosphere_soup(3), both = small;
+  const std::size_t n = small.points.size();
+  for(const auto& p : small.points) both.points.push_back({ { 1000 * p[0] + 5000, 1000 * p[1], 1000 * p[2] } });
+  for(const auto& f : small.faces) both.faces.push_back({ { f[0] + n, f[1] + n, f[2] + n } });
+  Mesh alone, pair;
+  AF_test::soup_to_mesh(small, alone);
+  AF_test::soup_to_mesh(both, pair);
+  const auto np = AF::parameters::relative_time_step(1e-3).number_of_iterations(10u).stopping_criteria(AF::Stopping_criteria::none());
+  Mesh a = alone, b = pair;
+  const AF::Fairing_report ra = AF::anisotropic_fairing(a, np), rb = AF::anisotropic_fairing(b, np);
+  double radius = 0, difference = 0;
+  for(std::size_t i = 0; i < n; ++i)
+  {
+    const K::Point_3 p = b.point(Mesh::Vertex_index(std::uint32_t(i)));
+    radius += std::sqrt(CGAL::squared_distance(p, K::Point_3(0, 0, 0))) / double(n);
+    difference = std::max(difference, std::sqrt(CGAL::squared_distance(p, a.point(Mesh::Vertex_index(std::uint32_t(i))))));
+  }
+  std::printf("two spheres (radius 1 and 1000), 10 steps of 1e-3 l^2: %s, %zu components, small sphere's mean radius %.6f, "
+              "largest difference to the small sphere faired alone %.3g\n", AF::to_string(rb.status), rb.components, radius, difference);
+  AF_CHECK(ra.succeeded() && rb.succeeded() && rb.components == 2, "both runs succeed, two components seen");
+  AF_CHECK(radius > 0.95, "the small sphere keeps its size");
+  AF_CHECK(difference < 1e-6, "the small sphere is faired as if it were alone");
+  Mesh c = pair;
+  const AF::Fairing_report rc = AF::anisotropic_fairing(c);
+  check_sound("two spheres, default run", pair, c, rc);
+}
+
+void zero_area_faces()
+{
+  // coordinates rounded to 8 bits of the bounding box: coincident and collinear vertices
+  Mesh m;
+  CGAL::IO::read_polygon_mesh(std::string(DATA) + "/camelhead.off", m);
+  const CGAL::Bbox_3 b = PMP::bbox(m);
+  const double q = (b.xmax() - b.xmin()) / 256;
+  for(auto v : m.vertices())
+  {
+    const K::Point_3 p = m.point(v);
+    m.point(v) = K::Point_3(std::round(p.x() / q) * q, std::round(p.y() / q) * q, std::round(p.z() / q) * q);
+  }
+  std::size_t zero = 0;
+  for(auto f : m.faces()) zero += PMP::face_area(f, m) == 0 ? 1 : 0;
+  Mesh out = m;
+  const AF::Fairing_report r = AF::anisotropic_fairing(out);
+  std::printf("camel head quantised to 8 bits: %zu zero-area faces; noise %.3g h\n", zero, r.noise_level);
+  check_sound("quantised camel head, default run", m, out, r);
+  AF_CHECK(zero > 100, "the quantised mesh has many zero-area faces");
+  AF_CHECK(r.succeeded() && !r.steps.empty(), "a scan with zero-area faces is faired, not refused");
+  // a mesh with no surface at all is refused with a clear status
+  Mesh flat = m;
+  for(auto v : flat.vertices()) flat.point(v) = K::Point_3(1, 2, 3);
+  const AF::Fairing_report rf = AF::anisotropic_fairing(flat);
+  std::printf("all vertices at one point: %s: %s\n", AF::to_string(rf.status), rf.message.c_str());
+  AF_CHECK(rf.status == AF::Fairing_status::DEGENERATE_METRIC, "a mesh with no area is refused as degenerate");
+}
+
+void noise_estimate()
+{
+  // Gaussian noise of known deviation along the normals of a fine sphere and of the camel head
+  for(const char* which : { "sphere", "camelhead" })
+    for(double sigma : { 0.2, 0.4 })
+    {
+      Mesh m;
+      if(std::string(which) == "sphere") AF_test::make_icosphere(m, 5);
+      else CGAL::IO::read_polygon_mesh(std::string(DATA) + "/camelhead.off", m);
+      const double h = mean_edge(m);
+      auto normals = m.add_property_map<Mesh::Vertex_index, K::Vector_3>("v:n").first;
+      PMP::compute_vertex_normals(m, normals);
+      std::mt19937 rng(7);
+      std::normal_distribution<double> gauss(0, sigma * h);
+      for(auto v : m.vertices()) m.point(v) = m.point(v) + gauss(rng) * normals[v];
+      const AF::Fairing_report r = AF::anisotropic_fairing(m, AF::parameters::number_of_iterations(0u));
+      const double estimate = r.noise_deviation / h;
+      std::printf("%s with noise %.2f h: estimated %.3f h\n", which, sigma, estimate);
+      AF_CHECK(std::abs(estimate / sigma - 1) <= 0.25, "the noise estimate is within 25% of the generated noise");
+    }
+}
+
+void denoising_pair()
+{
+  Mesh noisy, original;
+  CGAL::IO::read_polygon_mesh(std::string(DATA) + "/fandisk0.3_noisy.obj", noisy);
+  CGAL::IO::read_polygon_mesh(std::string(DATA) + "/fandisk0.3_original.obj", original);
+  Mesh m = noisy;
+  const AF::Fairing_report r = AF::anisotropic_fairing(m);
+  double error = 0;
+  for(auto f : m.faces())
+    error += std::acos(std::max(-1.0, std::min(1.0, PMP::compute_face_normal(f, m) * PMP::compute_face_normal(f, original)))) / double(num_faces(m));
+  error *= 180 / 3.14159265358979323846;
+  std::printf("Fandisk0.3, default run: %.2f degrees mean normal error (noisy 28.42), %zu steps, %s; %s\n", error, r.steps.size(),
+              AF::to_string(r.stop_reason), r.choices.c_str());
+  check_sound("Fandisk0.3 default", noisy, m, r);
+  AF_CHECK(r.stop_reason == AF::Stop_reason::NOISE_LEVEL, "the default run stops at the noise level");
+  AF_CHECK(error < 4.0, "the default run denoises Fandisk0.3 below 4 degrees");
+}
+
+int main(int argc, char** argv)
+{
+  DATA = argc > 1 ? argv[1] : "data";
+  const std::string shared = argc > 2 ? argv[2] : "../shared/data";
+  constructed_fold();
+  stress_rows();
+  noise_free(shared + "/armadillo.obj", 0.05);
+  noise_free(DATA + "/camelhead.off", 0.05);
+  two_spheres();
+  zero_area_faces();
+  noise_estimate();
+  denoising_pair();
+  return AF_test::report();
+}
