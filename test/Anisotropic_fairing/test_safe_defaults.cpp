@@ -100,7 +100,7 @@ void constructed_fold()
     Y << 0, 0, 0,  1, 0, 0,  0.5, 1, 0,  0.5, -std::cos(a), std::sin(a);
     std::vector<CGAL::Anisotropic_fairing::internal::Triangle_topology::Face> faces = { { { 0, 1, 2 } }, { { 1, 0, 3 } } };
     const CGAL::Anisotropic_fairing::internal::Triangle_topology topo(4, faces, 0, false);
-    const std::size_t folded = CGAL::Anisotropic_fairing::internal::count_folded_edges(topo, 2, Y);
+    const std::size_t folded = CGAL::Anisotropic_fairing::internal::count_folded_edges(topo, 2, Y, { 0, 0 }, { 1.0 });
     std::printf("two triangles whose normals turn by %.0f degrees: %zu folded edge(s)\n", turn, folded);
     AF_CHECK(folded == (turn > 120 ? 1u : 0u), "an edge counts as folded exactly when its faces turn by more than 120 degrees");
   }

@@ -40,6 +40,24 @@ public:
     return *cholesky_;
   }
 
+  /// Solves A X = B the chosen way (X holds the initial guess of conjugate gradients); a conjugate-
+  /// gradient solve that fails is retried by the factorisation when allowed. `direct`: how it was solved.
+  Solve_statistics solve(const Eigen::SparseMatrix<double>& A, const Dense_block& B, Dense_block& X,
+                         Block_conjugate_gradient& cg, bool& direct)
+  {
+    direct = factorise_now();
+    if(direct) return cholesky().solve(A, B, X);
+    start_ = X;
+    Solve_statistics sol = cg.solve(A, B, X);
+    if(!sol.ok && may_fall_back())
+    {
+      X = start_;
+      direct = true;
+      sol = cholesky().solve(A, B, X);
+    }
+    return sol;
+  }
+
   void record(bool direct, const Solve_statistics& sol, double seconds)
   {
     if(!automatic_) return;
@@ -69,6 +87,7 @@ private:
   double predicted_iterate_seconds_ = 0, factorised_seconds_ = HUGE_VAL;
   int previous_iterations_ = 0;
   std::unique_ptr<Sparse_cholesky> cholesky_;
+  Dense_block start_;
 };
 
 } // namespace internal

@@ -15,21 +15,27 @@
 
 #include <CGAL/Anisotropic_fairing/internal/Control_matrix.h>
 #include <CGAL/Anisotropic_fairing/internal/Fem_assembly.h>
+#include <CGAL/Anisotropic_fairing/internal/Ghost_layer.h>
 #include <CGAL/Anisotropic_fairing/internal/Triangle_topology.h>
+#include <CGAL/Anisotropic_fairing/internal/Vertex_limit_masks.h>
 
 #include <algorithm>
 #include <cmath>
 #include <cstddef>
 #include <cstdio>
 #include <string>
+#include <vector>
 
 namespace CGAL {
 namespace Anisotropic_fairing {
 namespace internal {
 
 /// Interior edges between two of the first `real_faces` faces whose normals (of the triangles of Y)
-/// turn by more than the angle of cosine `turn` (120 degrees: the mesh folds over there).
+/// turn by more than the angle of cosine `turn` (120 degrees: the mesh folds over there). A triangle
+/// smaller than 10^-4 h^2 (h: `edge[c]`, the mean edge length of its component `face_component[f]`) is
+/// left out: a zero-area face of a scan has no normal, and any motion gives it an arbitrary one.
 inline std::size_t count_folded_edges(const Triangle_topology& topo, std::size_t real_faces, const Control_matrix& Y,
+                                      const std::vector<int>& face_component, const std::vector<double>& edge,
                                       double turn = turn_120)
 {
   auto normal = [&](std::size_t f, double* n) {
@@ -37,7 +43,9 @@ inline std::size_t count_folded_edges(const Triangle_topology& topo, std::size_t
     double u[3], v[3];
     for(int a = 0; a < 3; ++a) { u[a] = Y(t[1], a) - Y(t[0], a); v[a] = Y(t[2], a) - Y(t[0], a); }
     n[0] = u[1] * v[2] - u[2] * v[1]; n[1] = u[2] * v[0] - u[0] * v[2]; n[2] = u[0] * v[1] - u[1] * v[0];
-    return std::sqrt(n[0] * n[0] + n[1] * n[1] + n[2] * n[2]);
+    const double h = edge[std::size_t(face_component[f])];
+    const double twice_area = std::sqrt(n[0] * n[0] + n[1] * n[1] + n[2] * n[2]);
+    return twice_area > 2e-4 * h * h ? twice_area : 0.0;
   };
   std::size_t folded = 0;
   for(int h = 0; h < int(3 * real_faces); ++h)
@@ -46,7 +54,7 @@ inline std::size_t count_folded_edges(const Triangle_topology& topo, std::size_t
     if(o < h || std::size_t(topo.face_of(o)) >= real_faces) continue;   // each interior edge once
     double a[3], b[3];
     const double la = normal(std::size_t(topo.face_of(h)), a), lb = normal(std::size_t(topo.face_of(o)), b);
-    if(!(la > 0) || !(lb > 0)) continue;   // a zero-area triangle has no normal to turn
+    if(!(la > 0) || !(lb > 0)) continue;
     if(a[0] * b[0] + a[1] * b[1] + a[2] * b[2] < turn * la * lb) ++folded;
   }
   return folded;
@@ -64,6 +72,28 @@ struct Surface_soundness
   /// the same beyond 110 degrees: places that may tip over into a fold without the step being at fault
   std::size_t near_folds() const { return bent_edges + statistics.bent_faces; }
 };
+
+/// Y = the Loop limit points of the control points X (real vertices; the ghosts from the layer).
+inline void limit_points(const Ghost_layer& layer, const Control_matrix& X, Control_matrix& Y)
+{
+  const Control_matrix extended = layer.has_boundary() ? layer.extend(X) : Control_matrix();
+  const Control_matrix& E = layer.has_boundary() ? extended : X;
+  Y.resize(X.rows(), X.cols());
+  for(Eigen::Index i = 0; i < X.rows(); ++i) vertex_limit_value(*layer.topology, E, int(i), Y.row(i).data());
+}
+
+/// The folded (and nearly folded) edges of the surface of X: of its limit points for the Loop element
+/// (`loop`), whatever is written: a control mesh oscillates about its surface, and its edges fold
+/// where the surface does not.
+inline void count_folds(const Ghost_layer& layer, bool loop, const std::vector<int>& face_component,
+                        const std::vector<double>& edge, const Control_matrix& X, Surface_soundness& s)
+{
+  Control_matrix Y;
+  if(loop) limit_points(layer, X, Y);
+  const Control_matrix& P = loop ? Y : X;
+  s.folded_edges = count_folded_edges(*layer.topology, layer.real_faces, P, face_component, edge);
+  s.bent_edges = count_folded_edges(*layer.topology, layer.real_faces, P, face_component, edge, turn_110);
+}
 
 enum class Step_verdict { SOUND, UNSOUND, COLLAPSED };
 

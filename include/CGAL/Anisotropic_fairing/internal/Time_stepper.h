@@ -33,12 +33,10 @@
 #include <CGAL/Anisotropic_fairing/internal/Solver_choice.h>
 #include <CGAL/Anisotropic_fairing/internal/Stopping_monitor.h>
 
-#include <chrono>
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <iostream>
-#include <memory>
 #include <string>
 #include <vector>
 
@@ -111,10 +109,10 @@ public:
     // the noise criterion: stop once the written surface moved off the input by the noise
     Control_matrix Y;
     output_positions(X, Y);
-    Surface_soundness initial{ a, count_folded_edges(*layer_.topology, layer_.real_faces, Y),
-                               count_folded_edges(*layer_.topology, layer_.real_faces, Y, turn_110), true };
+    Surface_soundness initial{ a, 0, 0, true };
+    count_folds(layer_, Cache::has_second_derivatives, components_.of_face, component_edge_, X, initial);
     Surface_soundness accepted = initial;
-    const std::size_t input_folds = count_folded_edges(*layer_.topology, layer_.real_faces, X0);
+    const std::size_t input_folds = count_folded_edges(*layer_.topology, layer_.real_faces, X0, components_.of_face, component_edge_);
     double lowest_H = a.H_integral;
     const bool noise_stop = s.noise && s.stopping.noise_discrepancy > 0;
     const double target = noise_stop ? s.stopping.noise_discrepancy * s.noise->relative_sigma() : 0.0;
@@ -127,8 +125,8 @@ public:
     const Eigen::Index n = X.rows(), k = X.cols(), nfree = Eigen::Index(free_.size());
     Dense_block R(n, k), B(nfree, k), dX = Dense_block::Zero(nfree, k);
     Control_matrix Xc, X_previous;
-    // the last surface with no more folded edges than the input (or its limit surface): what the run
-    // falls back to if the surface it ends on has more
+    // the last surface with no more folded edges than the input mesh (or its limit surface): what the
+    // run falls back to if the surface it ends on has more
     const std::size_t allowed_folds = std::max(input_folds, initial.folded_edges);
     Control_matrix X_unfolded = X;
     std::size_t unfolded_steps = 0;
@@ -161,27 +159,14 @@ public:
         av[e] = ((1 + tau * units_.omega[std::size_t(row)]) * M_[p] + tau * L_[p]) / sys;
         if(!unknown_scale_.empty()) av[e] /= unknown_scale_[std::size_t(row)] * unknown_scale_[std::size_t(row)];
       }
-      residual_rhs(X, X0, factor / sys, R);
+      step_residual(assembler_.pattern(), M_, L_, units_.tau, units_.omega, X, X0, factor / sys, R);
       for(Eigen::Index i = 0; i < nfree; ++i) B.row(i) = R.row(free_[std::size_t(i)]);
       if(!unknown_scale_.empty())
         for(Eigen::Index i = 0; i < nfree; ++i) B.row(i) /= std::pow(unknown_scale_[std::size_t(free_[std::size_t(i)])], 3);
       st.assemble_seconds = assemble_seconds + clock.seconds();
 
       clock = Stopwatch();
-      Solve_statistics sol;
-      st.direct_solve = choice.factorise_now();
-      if(st.direct_solve) sol = choice.cholesky().solve(A_, B, dX);
-      else
-      {
-        previous_dX_ = dX;
-        sol = cg.solve(A_, B, dX);   // warm start: the previous displacement
-        if(!sol.ok && choice.may_fall_back())
-        {
-          dX = previous_dX_;
-          st.direct_solve = true;
-          sol = choice.cholesky().solve(A_, B, dX);
-        }
-      }
+      const Solve_statistics sol = choice.solve(A_, B, dX, cg, st.direct_solve);   // CG warm-started from the last dX
       st.solve_seconds = clock.seconds();
       choice.record(st.direct_solve, sol, st.solve_seconds);
       report.used_cholesky = report.used_cholesky || st.direct_solve;
@@ -222,11 +207,7 @@ public:
           return fail(report, Fairing_status::SOLVER_FAILED, "after step " + std::to_string(step) + ": " + prefilter_error_, total);
         output_positions(Xc, Y);
         candidate.finite = Y.allFinite();
-        if(candidate.finite)
-        {
-          candidate.folded_edges = count_folded_edges(*layer_.topology, layer_.real_faces, Y);
-          candidate.bent_edges = count_folded_edges(*layer_.topology, layer_.real_faces, Y, turn_110);
-        }
+        if(candidate.finite) count_folds(layer_, Cache::has_second_derivatives, components_.of_face, component_edge_, Xc, candidate);
       }
       assemble_seconds = clock.seconds();
       std::string why;
@@ -304,8 +285,9 @@ public:
       ++step;
     }
     // the end: never a surface with more folded edges than the input
-    output_positions(X, Y);
-    const std::size_t folds = count_folded_edges(*layer_.topology, layer_.real_faces, Y);
+    Surface_soundness last;
+    count_folds(layer_, Cache::has_second_derivatives, components_.of_face, component_edge_, X, last);
+    const std::size_t folds = last.folded_edges;
     if(folds > allowed_folds && report.succeeded())
     {
       X = X_unfolded;
@@ -341,7 +323,7 @@ public:
     const Eigen::Index n = X.rows(), k = X.cols() - 3, nfree = Eigen::Index(free_.size());
     const Control_matrix F0 = X.rightCols(k);
     Control_matrix F = F0;
-    report.initial.energy = dirichlet_energy(F);
+    report.initial.energy = dirichlet_energy(assembler_.pattern(), L_, F);
 
     const Stopping_criteria& c = s.stopping;
     const double time_unit = c.relative_units ? report.scale * report.scale : 1.0;
@@ -381,7 +363,7 @@ public:
       st.time_step = report.time_step;
       st.time = double(step) * report.time_step;
       clock = Stopwatch();
-      residual_rhs(F, F0, 1.0 / sys, R);
+      step_residual(assembler_.pattern(), M_, L_, units_.tau, units_.omega, F, F0, 1.0 / sys, R);
       for(Eigen::Index i = 0; i < nfree; ++i) B.row(i) = R.row(free_[std::size_t(i)]);
       st.assemble_seconds = (step == 1 ? assemble_seconds : 0.0) + clock.seconds();
       clock = Stopwatch();
@@ -396,7 +378,7 @@ public:
       const double moved = move_free_rows(F, dF, F0, int(k), st);
       st.area = a.area;
       st.H_integral = a.H_integral;
-      st.energy = dirichlet_energy(F);
+      st.energy = dirichlet_energy(assembler_.pattern(), L_, F);
       report.steps.push_back(st);
       if(s.verbose) print(st);
       bool stop = monitor.should_stop(step, report.time_step / time_unit, st.energy, st.max_displacement / value_unit,
@@ -410,29 +392,6 @@ public:
   }
 
 private:
-  // R = f tau_i (omega_i M (X0 - X) - L X)_i, all rows
-  void residual_rhs(const Control_matrix& X, const Control_matrix& X0, double f, Dense_block& R) const
-  {
-    const Eigen::SparseMatrix<double>& P = assembler_.pattern();
-    const int* outer = P.outerIndexPtr();
-    const int* rows = P.innerIndexPtr();
-    const Eigen::Index k = X.cols();
-    for(Eigen::Index i = 0; i < X.rows(); ++i)
-    {
-      double* r = R.row(i).data();
-      std::fill(r, r + k, 0.0);
-      const double omega = units_.omega[std::size_t(i)];
-      for(int p = outer[i]; p < outer[i + 1]; ++p)
-      {
-        const Eigen::Index j = rows[p];
-        const double l = L_[std::size_t(p)], m = omega * M_[std::size_t(p)];
-        for(Eigen::Index col = 0; col < k; ++col) r[col] += m * (X0(j, col) - X(j, col)) - l * X(j, col);
-      }
-      const double tau = f * units_.tau[std::size_t(i)];
-      for(Eigen::Index col = 0; col < k; ++col) r[col] *= tau;
-    }
-  }
-
   // 1, or what the system of a step with f times the time step is divided by so that a huge time
   // step cannot overflow its norms (the solution does not change)
   double system_scale(double f) const
@@ -506,11 +465,8 @@ private:
   // the positions written for X: its Loop limit points, or X itself
   void output_positions(const Control_matrix& X, Control_matrix& Y) const
   {
-    if(!limit_output_) { Y = X; return; }
-    const Control_matrix extended = layer_.has_boundary() ? layer_.extend(X) : Control_matrix();
-    const Control_matrix& E = layer_.has_boundary() ? extended : X;
-    Y.resize(X.rows(), X.cols());
-    for(Eigen::Index i = 0; i < X.rows(); ++i) vertex_limit_value(*layer_.topology, E, int(i), Y.row(i).data());
+    if(limit_output_) limit_points(layer_, X, Y);
+    else Y = X;
   }
 
   // the operator of the accepted surface, kept while a candidate step is judged
@@ -608,17 +564,6 @@ private:
     return moved;
   }
 
-  // trace(F^T L F) over all columns of F
-  double dirichlet_energy(const Control_matrix& F) const
-  {
-    const Eigen::SparseMatrix<double>& P = assembler_.pattern();
-    double e = 0;
-    for(Eigen::Index i = 0; i < P.cols(); ++i)
-      for(int p = P.outerIndexPtr()[i]; p < P.outerIndexPtr()[i + 1]; ++p)
-        e += L_[std::size_t(p)] * F.row(i).dot(F.row(P.innerIndexPtr()[p]));
-    return e;
-  }
-
   Fem_assembler<Cache> assembler_;
   std::vector<int> free_index_, free_;
   std::vector<int> source_;
@@ -628,7 +573,6 @@ private:
   Control_matrix prefiltered_X_;
   bool prefiltered_valid_ = false;
   std::string prefilter_error_;
-  Dense_block previous_dX_;
   const Tangential_motion_filter* tangential_filter_ = nullptr;
   Dense_block normal_dX_;
   const Ghost_layer& layer_;
