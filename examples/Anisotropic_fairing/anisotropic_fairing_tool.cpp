@@ -1353,7 +1353,8 @@ int run(const Options& o, Run_record& r)
 
   const AF::Stopping_criteria stop = o.stop == "off" ? AF::Stopping_criteria::none()
                                   : o.stop == "paper" ? AF::Stopping_criteria()
-                                  : o.stop == "noise" || automatic_parameters(o) ? AF::Stopping_criteria::automatic()
+                                  : o.stop == "noise" || (automatic_parameters(o) && effective_mode(o) != AF::Attribute_mode::ATTRIBUTES_ONLY)
+                                    ? AF::Stopping_criteria::automatic()
                                   : AF::Stopping_criteria();
   const auto base = AF::parameters::number_of_iterations(max_steps)
                       .stopping_criteria(stop)

@@ -150,11 +150,6 @@ Fairing_report fair(TriangleMesh& tm, VertexPointMap vpm, AttributeMap attribute
   check_parameter(std::isfinite(s.fidelity_weight) && s.fidelity_weight >= 0, "the fidelity weight must be finite and >= 0");
   s.maximum_steps = std::size_t(choose_parameter(get_parameter(np, CGAL::internal_np::number_of_iterations),
                                                   automatic ? automatic_maximum_steps : 10u));
-  s.stopping = choose_parameter(get_parameter(np, internal_np::stopping_criteria),
-                                automatic ? Stopping_criteria::automatic() : Stopping_criteria());
-  check_parameter(std::isfinite(s.stopping.curvature_rate_ratio) && std::isfinite(s.stopping.curvature_rate) &&
-                  std::isfinite(s.stopping.displacement) && std::isfinite(s.stopping.steady_speed) &&
-                  std::isfinite(s.stopping.noise_discrepancy), "stopping thresholds must be finite");
   s.solver = choose_parameter(get_parameter(np, internal_np::linear_solver), Linear_solver::AUTOMATIC);
   s.solver_tolerance = choose_parameter(get_parameter(np, internal_np::solver_tolerance), 1e-8);
   check_parameter(s.solver_tolerance > 0 && s.solver_tolerance < 1, "the solver tolerance must lie in (0, 1)");
@@ -168,6 +163,13 @@ Fairing_report fair(TriangleMesh& tm, VertexPointMap vpm, AttributeMap attribute
                                                has_attributes ? Attribute_mode::SEPARATE : Attribute_mode::GEOMETRY_ONLY);
   check_parameter(has_attributes || mode == Attribute_mode::GEOMETRY_ONLY || mode == Attribute_mode::SEPARATE,
                   "the coupled and attributes-only modes need an attribute map");
+  // (the noise criterion measures the geometry: with the geometry fixed, the paper's criteria)
+  s.stopping = choose_parameter(get_parameter(np, internal_np::stopping_criteria),
+                                automatic && mode != Attribute_mode::ATTRIBUTES_ONLY ? Stopping_criteria::automatic()
+                                                                                     : Stopping_criteria());
+  check_parameter(std::isfinite(s.stopping.curvature_rate_ratio) && std::isfinite(s.stopping.curvature_rate) &&
+                  std::isfinite(s.stopping.displacement) && std::isfinite(s.stopping.steady_speed) &&
+                  std::isfinite(s.stopping.noise_discrepancy), "stopping thresholds must be finite");
   const double attribute_weight = choose_parameter(get_parameter(np, internal_np::attribute_weight), 1.0);
   check_parameter(std::isfinite(attribute_weight) && attribute_weight > 0, "the attribute weight must be positive and finite");
   const Boundary_handling boundary = choose_parameter(get_parameter(np, internal_np::boundary_handling),
@@ -227,8 +229,14 @@ Fairing_report fair(TriangleMesh& tm, VertexPointMap vpm, AttributeMap attribute
       component_edge[std::size_t(components.of_face[f])] += (X.row(t[k]).head(3) - X.row(t[(k + 1) % 3]).head(3)).norm();
       edges_counted[std::size_t(components.of_face[f])] += 1;
     }
-  for(std::size_t c = 0; c < components.count; ++c) component_edge[c] /= edges_counted[c];
-  const double mean_edge = mean_edge_length(layer, X);
+  double edge_sum = 0, edge_count = 0;
+  for(std::size_t c = 0; c < components.count; ++c)
+  {
+    edge_sum += component_edge[c];
+    edge_count += edges_counted[c];
+    component_edge[c] /= edges_counted[c];
+  }
+  const double mean_edge = edge_count > 0 ? edge_sum / edge_count : 0.0;
   std::vector<bool> sampled(n);
   for(std::size_t i = 0; i < n; ++i) sampled[i] = !constrained[i] && !border[i];
   const Noise_estimate noise(*layer.topology, X, sampled);
