@@ -103,7 +103,8 @@ With \f$\mathcal{H}(t) = \int_{M(t)} |H|^2 dA / \int_{M(0)} |H|^2 dA\f$ and its 
   normals and in units of the local edge length (robust deviation over the vertices), by `noise_discrepancy`
   times the noise the package estimates from the input itself (`Fairing_report::noise_level`). Removing noise
   of deviation \f$\sigma\f$ moves the vertices by about \f$\sigma\f$; diffusing further removes shape.
-  The run ends on the surface where the level is reached, interpolated within the last step.
+  The run ends on the surface where the level is reached: the step that passes it is taken again,
+  shorter, until it ends within 2% of the level (the rest is interpolated).
 
 A criterion is disabled by a value \f$\le 0\f$. With `relative_units` (the default) the scale-dependent
 thresholds are measured with the model's scale \f$\ell = \sqrt{\mathrm{Area}(M(0))/4\pi}\f$ (the radius of

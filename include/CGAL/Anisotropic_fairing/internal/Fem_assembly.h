@@ -66,6 +66,8 @@ struct Assembly_statistics
   double area = 0;
   double energy = 0;       // trace(X^T L X) over the metric columns = sum_q c_q tr(A_q G_q)
   double H_integral = 0;   // int |H|^2 dA
+  double bounded_H_integral = 0;   // int min(|H|, B)^2 dA, B per component (set_curvature_bounds): sees a
+                                   // blow-up over an area, not a cusp on a tiny face
   bool degenerate = false; // sqrt(det G) <= 0 or not finite somewhere
   std::size_t degenerate_face = 0;
   std::size_t degenerate_points = 0;  // quadrature points where it is
@@ -75,7 +77,7 @@ struct Assembly_statistics
 
   void add(const Assembly_statistics& o)
   {
-    area += o.area; energy += o.energy; H_integral += o.H_integral;
+    area += o.area; energy += o.energy; H_integral += o.H_integral; bounded_H_integral += o.bounded_H_integral;
     degenerate_points += o.degenerate_points;
     reversed_faces += o.reversed_faces;
     bent_faces += o.bent_faces;
@@ -125,6 +127,8 @@ public:
     components_ = count;
   }
   void set_component_scales(const std::vector<double>* scale) { component_scale_ = scale; }
+  /// The bound B of each component's mean curvature in Assembly_statistics::bounded_H_integral.
+  void set_curvature_bounds(const std::vector<double>* bound) { curvature_bound_ = bound; }
 
   /// The symmetric pattern (all values zero) that M and L fill: value arrays index its non-zeros.
   const Eigen::SparseMatrix<double>& pattern() const { return pattern_; }
@@ -177,7 +181,7 @@ public:
     Assembly_statistics total;
     total.component_area.assign(components_, 0.0);
     for(const Assembly_statistics& s : stats) total.add(s);
-    if(!Cache::has_second_derivatives) total.H_integral = discrete_H_integral(X, metric_columns, M, L);
+    if(!Cache::has_second_derivatives) total.bounded_H_integral = total.H_integral = discrete_H_integral(X, metric_columns, M, L);
     return total;
   }
 
@@ -270,7 +274,9 @@ private:
       g.ring = ws.original_ring.data();
     }
     // per-face sums first: fewer roundings in the totals (a planar regular grid's area comes out exact)
-    double face_area = 0, face_energy = 0, face_H = 0;
+    double face_area = 0, face_energy = 0, face_H = 0, face_bounded_H = 0;
+    const double bound = component >= 0 && curvature_bound_ ? (*curvature_bound_)[std::size_t(component)]
+                                                           : std::numeric_limits<double>::infinity();
     for(Eigen::Index q = 0; q < nq; ++q)
     {
       const double* t1 = b.T[0].row(q).data();
@@ -309,7 +315,12 @@ private:
 
       face_area += c;
       face_energy += c * (A.a11 * g11 + 2 * A.a12 * g12 + A.a22 * g22);
-      if(Cache::has_second_derivatives) face_H += c * mean_curvature_squared(g, ws.mean_curvature.data());
+      if(Cache::has_second_derivatives)
+      {
+        const double H2 = mean_curvature_squared(g, ws.mean_curvature.data());
+        face_H += c * H2;
+        face_bounded_H += c * std::min(H2, bound * bound);
+      }
       if(!mv) continue;
 
       b.Bm.row(q) = std::sqrt(c) * S0.row(q);
@@ -327,6 +338,7 @@ private:
     if(lowest_dot < turn_110) ++stats.bent_faces;
     stats.energy += face_energy;
     stats.H_integral += face_H;
+    stats.bounded_H_integral += face_bounded_H;
     if(!mv) return;
     // local matrices B^T B (only the lower triangle is read by the scatter, so symmetry is exact)
     if(Buffers::fixed)
@@ -395,6 +407,7 @@ private:
   const Control_matrix* prefiltered_ = nullptr;
   const std::vector<int>* face_component_ = nullptr;
   const std::vector<double>* component_scale_ = nullptr;
+  const std::vector<double>* curvature_bound_ = nullptr;
   std::size_t components_ = 0;
 };
 

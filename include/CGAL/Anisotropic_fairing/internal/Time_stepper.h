@@ -29,6 +29,7 @@
 #include <CGAL/Anisotropic_fairing/internal/Tensor_hooks.h>
 #include <CGAL/Anisotropic_fairing/internal/Vertex_limit_masks.h>
 #include <CGAL/Anisotropic_fairing/internal/Normal_motion.h>
+#include <CGAL/Anisotropic_fairing/internal/Prefilter_step.h>
 #include <CGAL/Anisotropic_fairing/internal/Spd_solvers.h>
 #include <CGAL/Anisotropic_fairing/internal/Solver_choice.h>
 #include <CGAL/Anisotropic_fairing/internal/Stopping_monitor.h>
@@ -73,6 +74,9 @@ public:
     }
     A_ = sparse_matrix_from_pattern(Eigen::Index(free_.size()), Eigen::Index(free_.size()), outer, inner);
     assembler_.use_components(&components_.of_face, components_.count);
+    // the curvature a component's edges can show: |H| up to 2 / h (a sphere of diameter h)
+    for(double h : component_edge_) curvature_bound_.push_back(2 / h);
+    assembler_.set_curvature_bounds(&curvature_bound_);
   }
 
   std::size_t number_of_free_vertices() const { return free_.size(); }
@@ -113,7 +117,7 @@ public:
     count_folds(layer_, Cache::has_second_derivatives, components_.of_face, component_edge_, X, initial);
     Surface_soundness accepted = initial;
     const std::size_t input_folds = count_folded_edges(*layer_.topology, layer_.real_faces, X0, components_.of_face, component_edge_);
-    double lowest_H = a.H_integral;
+    double lowest_H = a.bounded_H_integral;
     const bool noise_stop = s.noise && s.stopping.noise_discrepancy > 0;
     const double target = noise_stop ? s.stopping.noise_discrepancy * s.noise->relative_sigma() : 0.0;
     double discrepancy = noise_stop ? s.noise->relative_displacement(Y, X0, {}) : 0.0;
@@ -132,6 +136,9 @@ public:
     std::size_t unfolded_steps = 0;
     double factor = 1, time = 0;
     int rejections = 0, cramped = 0;   // cramped: steps in a row accepted only with <= 1/16 of the time step
+    int locating = 0;                  // retries of this step to end it where the noise level is reached
+    const double noise_tolerance = 0.02;   // how close to the noise level a run ends
+    const int maximum_locating = 4;
     std::string last_why;
     if(nfree == 0) report.stop_reason = Stop_reason::NO_FREE_VERTEX;
     else if(noise_stop && first_discrepancy >= target)
@@ -231,6 +238,18 @@ public:
         break;
       }
 
+      // the noise level is passed within this step: take it again, shorter, so that it ends there (the
+      // displacement grows fastest at first, so the secant undershoots the time and each retry comes closer)
+      const double candidate_discrepancy = noise_stop ? s.noise->relative_displacement(Y, X0, {}) : 0.0;
+      if(noise_stop && candidate_discrepancy > target * (1 + noise_tolerance) && locating < maximum_locating)
+      {
+        restore_operator();
+        ++locating;
+        factor *= std::max(0.05, (target - discrepancy) / (candidate_discrepancy - discrepancy));
+        continue;
+      }
+      locating = 0;
+
       // accepted; a flow that only crawls on with a sliver of its time step is heading into a fold
       cramped = factor <= 1.0 / 16 ? cramped + 1 : 0;
       rejections = 0;
@@ -238,13 +257,13 @@ public:
       X.swap(Xc);
       accepted = candidate;
       if(candidate.folded_edges <= allowed_folds) { X_unfolded = X; unfolded_steps = report.steps.size() + 1; }
-      lowest_H = std::min(lowest_H, candidate.statistics.H_integral);
+      lowest_H = std::min(lowest_H, candidate.statistics.bounded_H_integral);
       time += st.time_step;
       st.time = time;
       st.area = accepted.statistics.area; st.energy = accepted.statistics.energy; st.H_integral = accepted.statistics.H_integral;
       if(step == s.maximum_steps) st.assemble_seconds += assemble_seconds;   // the final surface's statistics
       const double previous_discrepancy = discrepancy;
-      if(noise_stop) discrepancy = s.noise->relative_displacement(Y, X0, {});
+      if(noise_stop) discrepancy = candidate_discrepancy;
       st.noise_displacement = discrepancy;
       if(noise_stop && discrepancy >= target)
       {
@@ -485,9 +504,7 @@ private:
     prefiltered_valid_ = saved_prefiltered_valid_;
   }
 
-  // M and L(D) at X. A tensor with a prefilter time eps > 0 (Bajaj & Xu's M_eps) first gets the surface
-  // after one isotropic implicit step of length eps from X, (M + eps L) X_eps = M X, held vertices
-  // fixed, and reads its curvature there (loop-fem.md section 7).
+  // M and L(D) at X. A tensor with a prefilter time eps > 0 reads its curvature on M_eps (Prefilter_step.h).
   template <typename Tensor>
   Assembly_statistics assemble_at(const Control_matrix& X, int metric_columns, const Tensor& tensor, bool with_matrices)
   {
@@ -501,34 +518,15 @@ private:
       std::vector<double> Mi, Li;
       assembler_.assemble(X, metric_columns, Isotropic_diffusion_tensor(), Mi, Li);
       if(prefilter_A_.rows() != A_.rows()) prefilter_A_ = A_;
-      double* av = prefilter_A_.valuePtr();
-      for(std::size_t e = 0; e < source_.size(); ++e)
-        av[e] = Mi[std::size_t(source_[e])] + eps_[std::size_t(free_[std::size_t(entry_row_[e])])] * Li[std::size_t(source_[e])];
-      const Eigen::SparseMatrix<double>& P = assembler_.pattern();
-      const Eigen::Index nfree = Eigen::Index(free_.size());
-      Dense_block B(nfree, metric_columns), dX = Dense_block::Zero(nfree, metric_columns);
-      for(Eigen::Index i = 0; i < nfree; ++i)
-      {
-        const int row = free_[std::size_t(i)];
-        const double eps = eps_[std::size_t(row)];
-        B.row(i).setZero();
-        for(int p = P.outerIndexPtr()[row]; p < P.outerIndexPtr()[row + 1]; ++p)
-          B.row(i) -= eps * Li[std::size_t(p)] * X.row(P.innerIndexPtr()[p]).head(metric_columns);
-      }
-      Block_conjugate_gradient cg(1e-10, 10000);
-      Solve_statistics sol = cg.solve(prefilter_A_, B, dX);
-      if(!sol.ok)   // near-degenerate faces (quantised scans) can make it too ill-conditioned for CG
-      {
-        Sparse_cholesky cholesky;
-        dX.setZero();
-        sol = cholesky.solve(prefilter_A_, B, dX);
-      }
+      Dense_block dX;
+      const Solve_statistics sol = prefilter_step(assembler_.pattern(), Mi, Li, eps_, free_, source_, entry_row_, prefilter_A_,
+                                                  X, metric_columns, dX);
       if(!sol.ok || !dX.allFinite())
         prefilter_error_ = "the prefiltered surface M_eps could not be computed: " + (sol.ok ? std::string("not finite") : sol.message);
       else
       {
         prefiltered_X_ = X;
-        for(Eigen::Index i = 0; i < nfree; ++i) prefiltered_X_.row(free_[std::size_t(i)]).head(metric_columns) += dX.row(i);
+        for(Eigen::Index i = 0; i < dX.rows(); ++i) prefiltered_X_.row(free_[std::size_t(i)]).head(metric_columns) += dX.row(i);
         assembler_.set_prefiltered(&prefiltered_X_);
         prefiltered_valid_ = true;
       }
@@ -581,6 +579,7 @@ private:
   double mean_edge_;
   std::vector<int> entry_row_;          // the free column of each entry of A_
   Step_units units_;
+  std::vector<double> curvature_bound_; // per component (Assembly_statistics::bounded_H_integral)
   std::vector<double> eps_;             // prefilter time per row
   bool limit_output_ = false;
   std::vector<double> saved_M_, saved_L_;
