@@ -130,7 +130,9 @@ const char* const usage_text =
 "  --tensor isotropic|anisotropic   the diffusion tensor: isotropic (mean-curvature flow; the default\n"
 "                            with a time step) or anisotropic (curvature-driven, feature-preserving:\n"
 "                            Anisotropic_diffusion_tensor; the default with automatic parameters, its\n"
-"                            threshold and prefilter then chosen from the mesh unless given)\n"
+"                            threshold and prefilter then chosen from the mesh unless given, and the\n"
+"                            isotropic result kept instead when its normals vary clearly less at the\n"
+"                            noise level: the report's tensor and choices say which)\n"
 "  --lambda L                the anisotropic tensor's feature threshold, a curvature in units of 1/l\n"
 "                            (default 2): principal curvatures above it are diffused less\n"
 "  --epsilon E               the anisotropic tensor reads curvature on the surface after an isotropic\n"
@@ -1188,13 +1190,16 @@ std::string report_json(const Options& o, const Run_record& r, double wall_secon
   kv("faces", r.mesh_read ? json_count(r.faces) : "null");
   kv("element", json_string(element_name(o.element)));
   kv("output_positions", json_string(output_name(o.output_positions)));
-  kv("tensor", json_string(o.anisotropic ? "anisotropic" : "isotropic"));
+  // the tensor the run used: with automatic parameters the package keeps the anisotropic or the
+  // isotropic result (selected_tensor)
+  const bool isotropic_kept = ran && f.selected_tensor == "isotropic";
+  kv("tensor", json_string(o.anisotropic && !isotropic_kept ? "anisotropic" : "isotropic"));
   // the values the run used (chosen from the mesh when automatic), in units of l, l^2 and 1/length
-  const bool lambda_known = o.anisotropic && (!automatic_tensor(o) || ran);
+  const bool lambda_known = o.anisotropic && !isotropic_kept && (!automatic_tensor(o) || ran);
   kv("lambda", lambda_known ? json_number(automatic_tensor(o) ? f.feature_threshold * f.scale : o.lambda) : "null");
-  kv("lambda_model_units", o.anisotropic && ran && f.scale > 0 ? json_number(f.feature_threshold) : "null");
+  kv("lambda_model_units", lambda_known && ran && f.scale > 0 ? json_number(f.feature_threshold) : "null");
   kv("epsilon", lambda_known ? json_number(automatic_tensor(o) ? f.prefilter_time / scale2 : o.epsilon) : "null");
-  kv("tangential_motion", json_string(o.anisotropic && o.normal_motion_only ? "removed" : "kept"));
+  kv("tangential_motion", json_string(o.anisotropic && !isotropic_kept && o.normal_motion_only ? "removed" : "kept"));
   kv("solver", ran ? json_string(f.used_cholesky ? "cholesky" : "cg") : "null");
   kv("requested_solver", json_string(solver_name(o.solver)));
   kv("stop", json_string(o.stop));

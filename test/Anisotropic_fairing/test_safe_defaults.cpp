@@ -233,22 +233,57 @@ void noise_estimate()
     }
 }
 
+double normal_error(const Mesh& m, const Mesh& original)
+{
+  double error = 0;
+  for(auto f : m.faces())
+    error += std::acos(std::max(-1.0, std::min(1.0, PMP::compute_face_normal(f, m) * PMP::compute_face_normal(f, original)))) / double(num_faces(m));
+  return error * 180 / 3.14159265358979323846;
+}
+
 void denoising_pair()
 {
   Mesh noisy, original;
   CGAL::IO::read_polygon_mesh(std::string(DATA) + "/fandisk0.3_noisy.obj", noisy);
   CGAL::IO::read_polygon_mesh(std::string(DATA) + "/fandisk0.3_original.obj", original);
-  Mesh m = noisy;
+  Mesh m = noisy, isotropic = noisy;
   const AF::Fairing_report r = AF::anisotropic_fairing(m);
-  double error = 0;
-  for(auto f : m.faces())
-    error += std::acos(std::max(-1.0, std::min(1.0, PMP::compute_face_normal(f, m) * PMP::compute_face_normal(f, original)))) / double(num_faces(m));
-  error *= 180 / 3.14159265358979323846;
+  const double error = normal_error(m, original);
   std::printf("Fandisk0.3, default run: %.2f degrees mean normal error (noisy 28.42), %zu steps, %s; %s\n", error, r.steps.size(),
               AF::to_string(r.stop_reason), r.choices.c_str());
   check_sound("Fandisk0.3 default", noisy, m, r);
   AF_CHECK(r.stop_reason == AF::Stop_reason::NOISE_LEVEL, "the default run stops at the noise level");
   AF_CHECK(error < 4.0, "the default run denoises Fandisk0.3 below 4 degrees");
+  // of the anisotropic and the isotropic result, the one with the smaller total variation of its normals is
+  // kept (Tensor_selection.h): on a CAD part the anisotropic one, which is the better against the truth
+  AF::anisotropic_fairing(isotropic, AF::parameters::diffusion_tensor(AF::Isotropic_diffusion_tensor()));
+  std::printf("  the isotropic run: %.2f degrees\n", normal_error(isotropic, original));
+  AF_CHECK(r.selected_tensor == "anisotropic", "the anisotropic result is kept on Fandisk0.3");
+  AF_CHECK(error < normal_error(isotropic, original), "the kept result is the better one");
+}
+
+void tensor_selection()
+{
+  // on a graded organic scan with strong noise (the CAD case: denoising_pair), the isotropic result,
+  // which is the isotropic run's own
+  Mesh clean;
+  CGAL::IO::read_polygon_mesh(std::string(DATA) + "/camelhead.off", clean);
+  Mesh noisy = clean;
+  const double h = mean_edge(noisy);
+  auto normals = noisy.add_property_map<Mesh::Vertex_index, K::Vector_3>("v:n").first;
+  PMP::compute_vertex_normals(noisy, normals);
+  std::mt19937 rng(11);
+  std::normal_distribution<double> gauss(0, 0.5 * h);
+  for(auto v : noisy.vertices()) noisy.point(v) = noisy.point(v) + gauss(rng) * normals[v];
+  noisy.remove_property_map(normals);
+  Mesh kept = noisy, isotropic = noisy;
+  const AF::Fairing_report c = AF::anisotropic_fairing(kept);
+  AF::anisotropic_fairing(isotropic, AF::parameters::diffusion_tensor(AF::Isotropic_diffusion_tensor()));
+  std::printf("camel head with noise 0.5 h: kept the %s result, %.2f degrees (noisy %.2f); %s\n", c.selected_tensor.c_str(),
+              normal_error(kept, clean), normal_error(noisy, clean), c.choices.c_str());
+  check_sound("camel head with noise 0.5 h", noisy, kept, c);
+  AF_CHECK(c.selected_tensor == "isotropic", "the isotropic result is kept on the noisy camel head");
+  AF_CHECK(byte_identical(coordinates(kept), coordinates(isotropic)), "the kept result is the isotropic run's, unchanged");
 }
 
 int main(int argc, char** argv)
@@ -263,5 +298,6 @@ int main(int argc, char** argv)
   zero_area_faces();
   noise_estimate();
   denoising_pair();
+  tensor_selection();
   return AF_test::report();
 }

@@ -16,6 +16,7 @@
 #include <CGAL/Anisotropic_fairing/named_function_parameters.h>
 #include <CGAL/Anisotropic_fairing/Anisotropic_diffusion_tensor.h>
 #include <CGAL/Anisotropic_fairing/internal/Automatic_parameters.h>
+#include <CGAL/Anisotropic_fairing/internal/Tensor_selection.h>
 #include <CGAL/Anisotropic_fairing/internal/Boundary_constraints.h>
 #include <CGAL/Anisotropic_fairing/internal/Ghosted_patch_cache.h>
 #include <CGAL/Anisotropic_fairing/internal/Indexed_mesh.h>
@@ -117,6 +118,32 @@ Fairing_report run_stepper(const Cache& cache, const Locality_ordering& ordering
   report.normal_motion_only = normal_motion;
   limit_weight = stepper.limit_weight();
   return report;
+}
+
+/// Runs the isotropic flow too (`run(tensor, Y)` runs from the input and writes Y) and keeps, in X and
+/// `report`, whichever result's normals vary less at the noise level (Tensor_selection.h), or the one
+/// that succeeded; says which in `choices`. (The user's callback sees both runs.)
+template <typename Run>
+void select_smoother(Run& run, const Ghost_layer& layer, Control_matrix& X, Fairing_report& report, std::string& choices)
+{
+  report.selected_tensor = "anisotropic";
+  if(report.succeeded() && report.stop_reason != Stop_reason::NOISE_LEVEL)
+  {
+    choices += "; kept the anisotropic result (it did not end at the noise level, where the two are compared)";
+    return;
+  }
+  Control_matrix Y;
+  Fairing_report isotropic = run(Isotropic_diffusion_tensor(), Y);
+  const double va = report.succeeded() ? normal_variation(*layer.topology, layer.real_faces, X) : 0.0;
+  const double vi = isotropic.succeeded() ? normal_variation(*layer.topology, layer.real_faces, Y) : 0.0;
+  const bool at_noise_level = report.stop_reason == Stop_reason::NOISE_LEVEL && isotropic.stop_reason == Stop_reason::NOISE_LEVEL;
+  const bool keep_isotropic = isotropic.succeeded() && (!report.succeeded() || (at_noise_level && vi < (1 - isotropic_margin) * va));
+  char text[200];
+  std::snprintf(text, sizeof text, "; kept the %s result (total variation of the normals %.4g, %.4g for the other tensor's)",
+                keep_isotropic ? "isotropic" : "anisotropic", keep_isotropic ? vi : va, keep_isotropic ? va : vi);
+  choices += text;
+  if(keep_isotropic) { X.swap(Y); report = isotropic; }
+  report.selected_tensor = keep_isotropic ? "isotropic" : "anisotropic";
 }
 
 template <typename TriangleMesh, typename VertexPointMap, typename AttributeMap, typename NamedParameters>
@@ -265,31 +292,46 @@ Fairing_report fair(TriangleMesh& tm, VertexPointMap vpm, AttributeMap attribute
   Fairing_report report;
   double setup_seconds = 0;
   std::size_t boundary_held = 0;
+  // the automatic tensor's result is compared with the isotropic one's at the same discrepancy
+  // (Tensor_selection.h): when both stop at the noise level
+  const bool select_tensor = automatic && is_automatic_tensor(tensor, 0) && mode != Attribute_mode::ATTRIBUTES_ONLY &&
+                             s.stopping.noise_discrepancy > 0;
+  const Control_matrix input = X;
   if(element == Finite_element::LOOP)
   {
     Ghosted_patch_cache cache(layer, spec);
     boundary_held = hold(boundary_constrained_vertices(layer, cache, boundary == Boundary_handling::HOLD_BOUNDARY_CURVE));
     setup_seconds = setup.seconds();
-    const Control_matrix input = X;
-    double limit_weight = 1;
-    report = run_stepper(cache, ordering, components, component_edge, mean_edge, X, mode, constrained, border, tensor, s,
-                         callback, setup_seconds, limit_weight);
-    if(report.succeeded() && output == Output_positions::LIMIT_SURFACE)
-    {
-      const Control_matrix extended = layer.extend(X);
-      for(std::size_t i = 0; i < n; ++i)
-        if(!isolated[i]) vertex_limit_value(*layer.topology, extended, int(i), X.row(Eigen::Index(i)).data());
-      if(limit_weight < 1) X.leftCols(3) = input.leftCols(3) + limit_weight * (X.leftCols(3) - input.leftCols(3));
-    }
+    auto run = [&](const auto& t, Control_matrix& Y) {
+      Y = input;
+      double limit_weight = 1;
+      Fairing_report r = run_stepper(cache, ordering, components, component_edge, mean_edge, Y, mode, constrained, border, t, s,
+                                     callback, setup_seconds, limit_weight);
+      if(r.succeeded() && output == Output_positions::LIMIT_SURFACE)
+      {
+        const Control_matrix extended = layer.extend(Y);
+        for(std::size_t i = 0; i < n; ++i)
+          if(!isolated[i]) vertex_limit_value(*layer.topology, extended, int(i), Y.row(Eigen::Index(i)).data());
+        if(limit_weight < 1) Y.leftCols(3) = input.leftCols(3) + limit_weight * (Y.leftCols(3) - input.leftCols(3));
+      }
+      return r;
+    };
+    report = run(tensor, X);
+    if(select_tensor) select_smoother(run, layer, X, report, choices);
   }
   else
   {
     Linear_element_cache cache(*layer.topology, layer.real_faces);
     boundary_held = hold(border);
     setup_seconds = setup.seconds();
-    double limit_weight = 1;   // the linear element writes its control points: no limit surface to approach
-    report = run_stepper(cache, ordering, components, component_edge, mean_edge, X, mode, constrained, border, tensor, s,
+    auto run = [&](const auto& t, Control_matrix& Y) {
+      Y = input;
+      double limit_weight = 1;   // the linear element writes its control points: no limit surface to approach
+      return run_stepper(cache, ordering, components, component_edge, mean_edge, Y, mode, constrained, border, t, s,
                          callback, setup_seconds, limit_weight);
+    };
+    report = run(tensor, X);
+    if(select_tensor) select_smoother(run, layer, X, report, choices);
   }
   if(mode == Attribute_mode::COUPLED && A.cols() > 0) X.rightCols(A.cols()) /= attribute_weight;
   report.faces = im.number_of_faces();

@@ -10,7 +10,8 @@
 // the input mesh was folded (noise leaves folds that fairing takes a few steps to remove), nor raise
 // int min(|H|, 2/h)^2 above 4 times the lowest value reached (bounded: a cusp on a tiny face of a graded
 // scan is not a blow-up; on the camel head at 0.5 h of noise it stopped the run at 11.39 degrees,
-// 11.34 without it), nor shrink a connected component to (almost) nothing.
+// 11.34 without it) or int |H|^2 above 100 times (cusps that keep growing, as in long runs with a
+// strong fidelity term), nor shrink a connected component to (almost) nothing.
 
 #ifndef CGAL_ANISOTROPIC_FAIRING_INTERNAL_STEP_SAFETY_H
 #define CGAL_ANISOTROPIC_FAIRING_INTERNAL_STEP_SAFETY_H
@@ -99,10 +100,18 @@ inline void count_folds(const Ghost_layer& layer, bool loop, const std::vector<i
 
 enum class Step_verdict { SOUND, UNSOUND, COLLAPSED };
 
+/// The lowest int |H|^2 and int min(|H|, 2/h)^2 of the accepted surfaces
+struct Lowest_curvature
+{
+  double full, bounded;
+  explicit Lowest_curvature(const Assembly_statistics& a) : full(a.H_integral), bounded(a.bounded_H_integral) {}
+  void add(const Assembly_statistics& a) { full = std::min(full, a.H_integral); bounded = std::min(bounded, a.bounded_H_integral); }
+};
+
 /// Compares `candidate` with the last accepted state (and the initial one for collapse); `input_folds`
-/// are the folds of the input mesh itself, `lowest_H` the lowest int |H|^2 reached so far. `why` names what failed.
+/// are the folds of the input mesh itself, `lowest` the lowest int |H|^2 reached so far. `why` names what failed.
 inline Step_verdict judge_step(const Surface_soundness& initial, const Surface_soundness& accepted, std::size_t input_folds,
-                               double lowest_H, const Surface_soundness& candidate, std::string& why)
+                               const Lowest_curvature& lowest, const Surface_soundness& candidate, std::string& why)
 {
   const Assembly_statistics& c = candidate.statistics;
   const Assembly_statistics& a = accepted.statistics;
@@ -130,10 +139,10 @@ inline Step_verdict judge_step(const Surface_soundness& initial, const Surface_s
     why = text;
     return Step_verdict::UNSOUND;
   }
-  if(c.bounded_H_integral > 4 * lowest_H && lowest_H > 0)
+  if((c.bounded_H_integral > 4 * lowest.bounded && lowest.bounded > 0) || (c.H_integral > 100 * lowest.full && lowest.full > 0))
   {
-    std::snprintf(text, sizeof text, "int |H|^2 exploded (%.4g, more than 4 times the lowest value %.4g, |H| bounded by 2/h)",
-                  c.bounded_H_integral, lowest_H);
+    std::snprintf(text, sizeof text, "int |H|^2 exploded (%.4g, the lowest value reached %.4g; bounded by 2/h: %.4g, lowest %.4g)",
+                  c.H_integral, lowest.full, c.bounded_H_integral, lowest.bounded);
     why = text;
     return Step_verdict::UNSOUND;
   }

@@ -117,7 +117,7 @@ public:
     count_folds(layer_, Cache::has_second_derivatives, components_.of_face, component_edge_, X, initial);
     Surface_soundness accepted = initial;
     const std::size_t input_folds = count_folded_edges(*layer_.topology, layer_.real_faces, X0, components_.of_face, component_edge_);
-    double lowest_H = a.bounded_H_integral;
+    Lowest_curvature lowest_H(a);
     const bool noise_stop = s.noise && s.stopping.noise_discrepancy > 0;
     const double target = noise_stop ? s.stopping.noise_discrepancy * s.noise->relative_sigma() : 0.0;
     double discrepancy = noise_stop ? s.noise->relative_displacement(Y, X0, {}) : 0.0;
@@ -257,7 +257,7 @@ public:
       X.swap(Xc);
       accepted = candidate;
       if(candidate.folded_edges <= allowed_folds) { X_unfolded = X; unfolded_steps = report.steps.size() + 1; }
-      lowest_H = std::min(lowest_H, candidate.statistics.bounded_H_integral);
+      lowest_H.add(candidate.statistics);
       time += st.time_step;
       st.time = time;
       st.area = accepted.statistics.area; st.energy = accepted.statistics.energy; st.H_integral = accepted.statistics.H_integral;
