@@ -1344,7 +1344,11 @@ int run(const Options& o, Run_record& r)
 
   const unsigned int max_steps = o.steps;
   const bool quiet = o.quiet;
-  auto progress = [max_steps, quiet](const AF::Fairing_step& s) {
+  std::size_t last_step = 0;
+  auto progress = [max_steps, quiet, &last_step](const AF::Fairing_step& s) {
+    // with automatic parameters the library also runs the isotropic flow, to keep the better result
+    if(!quiet && s.step <= last_step) std::fprintf(stderr, "the isotropic flow, for comparison:\n");
+    last_step = s.step;
     if(!quiet)
       std::fprintf(stderr, "step %zu/%u  t=%.6g  area=%.6g  int|H|^2=%.6g  max disp=%.6g  %d %s  %.3fs+%.3fs\n",
                    s.step, max_steps, s.time, s.area, s.H_integral, s.max_displacement, s.solver_iterations,
