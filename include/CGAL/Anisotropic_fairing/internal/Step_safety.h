@@ -37,17 +37,23 @@ namespace internal {
 /// turn by more than the angle of cosine `turn` (120 degrees: the mesh folds over there). A triangle
 /// smaller than 10^-4 h^2 (h: `edge[c]`, the mean edge length of its component `face_component[f]`) is
 /// left out: a zero-area face of a scan has no normal, and any motion gives it an arbitrary one.
+/// n = the (unnormalised) normal of face f of Y; returns its length, twice the face's area
+inline double face_cross_product(const Triangle_topology& topo, std::size_t f, const Control_matrix& Y, double* n)
+{
+  const auto& t = topo.face(f);
+  double u[3], v[3];
+  for(int a = 0; a < 3; ++a) { u[a] = Y(t[1], a) - Y(t[0], a); v[a] = Y(t[2], a) - Y(t[0], a); }
+  n[0] = u[1] * v[2] - u[2] * v[1]; n[1] = u[2] * v[0] - u[0] * v[2]; n[2] = u[0] * v[1] - u[1] * v[0];
+  return std::sqrt(n[0] * n[0] + n[1] * n[1] + n[2] * n[2]);
+}
+
 inline std::size_t count_folded_edges(const Triangle_topology& topo, std::size_t real_faces, const Control_matrix& Y,
                                       const std::vector<int>& face_component, const std::vector<double>& edge,
                                       double turn = turn_120)
 {
   auto normal = [&](std::size_t f, double* n) {
-    const auto& t = topo.face(f);
-    double u[3], v[3];
-    for(int a = 0; a < 3; ++a) { u[a] = Y(t[1], a) - Y(t[0], a); v[a] = Y(t[2], a) - Y(t[0], a); }
-    n[0] = u[1] * v[2] - u[2] * v[1]; n[1] = u[2] * v[0] - u[0] * v[2]; n[2] = u[0] * v[1] - u[1] * v[0];
     const double h = edge[std::size_t(face_component[f])];
-    const double twice_area = std::sqrt(n[0] * n[0] + n[1] * n[1] + n[2] * n[2]);
+    const double twice_area = face_cross_product(topo, f, Y, n);
     return twice_area > 2e-4 * h * h ? twice_area : 0.0;
   };
   std::size_t folded = 0;

@@ -15,6 +15,7 @@
 #define CGAL_ANISOTROPIC_FAIRING_INTERNAL_TENSOR_SELECTION_H
 
 #include <CGAL/Anisotropic_fairing/internal/Control_matrix.h>
+#include <CGAL/Anisotropic_fairing/internal/Step_safety.h>
 #include <CGAL/Anisotropic_fairing/internal/Triangle_topology.h>
 
 #include <algorithm>
@@ -31,20 +32,14 @@ constexpr double isotropic_margin = 0.05;
 /// the angle between the two faces' normals times the edge's length.
 inline double normal_variation(const Triangle_topology& topo, std::size_t real_faces, const Control_matrix& Y)
 {
-  auto normal = [&](int f, double* n) {
-    const auto& t = topo.face(std::size_t(f));
-    double u[3], v[3];
-    for(int a = 0; a < 3; ++a) { u[a] = Y(t[1], a) - Y(t[0], a); v[a] = Y(t[2], a) - Y(t[0], a); }
-    n[0] = u[1] * v[2] - u[2] * v[1]; n[1] = u[2] * v[0] - u[0] * v[2]; n[2] = u[0] * v[1] - u[1] * v[0];
-    return std::sqrt(n[0] * n[0] + n[1] * n[1] + n[2] * n[2]);
-  };
   double total = 0;
   for(int h = 0; h < int(3 * real_faces); ++h)
   {
     const int o = topo.opposite(h);
     if(o < h || std::size_t(topo.face_of(o)) >= real_faces) continue;   // each interior edge once
     double a[3], b[3];
-    const double la = normal(topo.face_of(h), a), lb = normal(topo.face_of(o), b);
+    const double la = face_cross_product(topo, std::size_t(topo.face_of(h)), Y, a);
+    const double lb = face_cross_product(topo, std::size_t(topo.face_of(o)), Y, b);
     if(!(la > 0) || !(lb > 0)) continue;
     const double c = std::max(-1.0, std::min(1.0, (a[0] * b[0] + a[1] * b[1] + a[2] * b[2]) / (la * lb)));
     total += std::acos(c) * (Y.row(topo.source(h)).head(3) - Y.row(topo.target(h)).head(3)).norm();
