@@ -105,6 +105,9 @@ Fairing_report run_stepper(const Cache& cache, const Locality_ordering& ordering
                            double& limit_weight)
 {
   const Stopwatch clock;
+  // with automatic parameters, the isotropic flow's time step follows the mesh's density (Local_time_scale.h)
+  Stepper_settings settings = s;
+  settings.local_time_scale = s.local_time_scale && std::is_same<Tensor, Isotropic_diffusion_tensor>::value;
   Time_stepper<Cache> stepper(cache, std::size_t(X.rows()), constrained, ordering.layer, components, component_edge, mean_edge);
   const Tangential_motion_filter filter(ordering.layer);
   const bool normal_motion = wants_normal_motion(tensor, 0) && mode != Attribute_mode::ATTRIBUTES_ONLY;
@@ -113,8 +116,8 @@ Fairing_report run_stepper(const Cache& cache, const Locality_ordering& ordering
   stepper.assembler().exclude_from_curvature(&border);
   const int metric_columns = mode == Attribute_mode::COUPLED ? int(X.cols()) : 3;
   setup_seconds += clock.seconds();
-  if(mode == Attribute_mode::ATTRIBUTES_ONLY) return stepper.run_on_fixed_surface(X, tensor, s, callback);
-  Fairing_report report = stepper.run(X, metric_columns, tensor, s, callback);
+  if(mode == Attribute_mode::ATTRIBUTES_ONLY) return stepper.run_on_fixed_surface(X, tensor, settings, callback);
+  Fairing_report report = stepper.run(X, metric_columns, tensor, settings, callback);
   report.normal_motion_only = normal_motion;
   limit_weight = stepper.limit_weight();
   return report;
@@ -274,6 +277,7 @@ Fairing_report fair(TriangleMesh& tm, VertexPointMap vpm, AttributeMap attribute
   {
     const Automatic_parameters a;
     s.time_step = a.time_step;
+    s.local_time_scale = true;
     const bool tensor_chosen = is_automatic_tensor(tensor, 0);
     if(tensor_chosen) choose_tensor(tensor, a.lambda, a.epsilon, 0);
     char text[400];
@@ -287,6 +291,8 @@ Fairing_report fair(TriangleMesh& tm, VertexPointMap vpm, AttributeMap attribute
                     "the surface after an isotropic step of %.3g h^2", a.lambda, a.epsilon);
       choices += text;
     }
+    if(tensor_chosen || std::is_same<decltype(tensor), Isotropic_diffusion_tensor>::value)
+      choices += "; the isotropic flow's time step follows the mesh's density (h: the edge length around each vertex)";
   }
 
   Fairing_report report;

@@ -411,31 +411,6 @@ private:
   std::size_t components_ = 0;
 };
 
-/// R = f tau_i (omega_i M (X0 - X) - L X)_i for all rows: the right-hand side of a time step for the
-/// displacement, with M and L given as value arrays over `pattern`.
-inline void step_residual(const Eigen::SparseMatrix<double>& pattern, const std::vector<double>& M, const std::vector<double>& L,
-                          const std::vector<double>& tau, const std::vector<double>& omega, const Control_matrix& X,
-                          const Control_matrix& X0, double f, Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, Eigen::RowMajor>& R)
-{
-  const int* outer = pattern.outerIndexPtr();
-  const int* rows = pattern.innerIndexPtr();
-  const Eigen::Index k = X.cols();
-  for(Eigen::Index i = 0; i < X.rows(); ++i)
-  {
-    double* r = R.row(i).data();
-    std::fill(r, r + k, 0.0);
-    const double w = omega[std::size_t(i)];
-    for(int p = outer[i]; p < outer[i + 1]; ++p)
-    {
-      const Eigen::Index j = rows[p];
-      const double l = L[std::size_t(p)], m = w * M[std::size_t(p)];
-      for(Eigen::Index col = 0; col < k; ++col) r[col] += m * (X0(j, col) - X(j, col)) - l * X(j, col);
-    }
-    const double t = f * tau[std::size_t(i)];
-    for(Eigen::Index col = 0; col < k; ++col) r[col] *= t;
-  }
-}
-
 /// trace(F^T L F) over all columns of F: the Dirichlet energy of F.
 inline double dirichlet_energy(const Eigen::SparseMatrix<double>& pattern, const std::vector<double>& L, const Control_matrix& F)
 {

@@ -31,6 +31,7 @@ struct Stepper_settings
   bool limit_output = false;        // the written positions are the Loop limit points of the control points
   const Noise_estimate* noise = nullptr;   // of the input, in the stepper's numbering (noise criterion)
   int maximum_rejections = 5;       // retries of a step, each with a quarter of the time step
+  bool local_time_scale = false;    // the time step follows the mesh's density (Local_time_scale.h)
 };
 
 } // namespace internal

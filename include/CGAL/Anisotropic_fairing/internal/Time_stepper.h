@@ -21,9 +21,11 @@
 #include <CGAL/Anisotropic_fairing/Isotropic_diffusion_tensor.h>
 #include <CGAL/Anisotropic_fairing/internal/Fem_assembly.h>
 #include <CGAL/Anisotropic_fairing/internal/Ghost_layer.h>
+#include <CGAL/Anisotropic_fairing/internal/Local_time_scale.h>
 #include <CGAL/Anisotropic_fairing/internal/Mesh_components.h>
 #include <CGAL/Anisotropic_fairing/internal/Noise_estimate.h>
 #include <CGAL/Anisotropic_fairing/internal/Step_safety.h>
+#include <CGAL/Anisotropic_fairing/internal/Step_system.h>
 #include <CGAL/Anisotropic_fairing/internal/Step_units.h>
 #include <CGAL/Anisotropic_fairing/internal/Stepper_settings.h>
 #include <CGAL/Anisotropic_fairing/internal/Tensor_hooks.h>
@@ -68,7 +70,7 @@ public:
       for(int p = P.outerIndexPtr()[free_[k]]; p < P.outerIndexPtr()[free_[k] + 1]; ++p)
       {
         const int r = free_index_[std::size_t(P.innerIndexPtr()[p])];
-        if(r >= 0) { inner.push_back(r); source_.push_back(p); entry_row_.push_back(int(k)); }   // rows stay sorted: free_ is increasing
+        if(r >= 0) { inner.push_back(r); source_.push_back(p); entry_column_.push_back(int(k)); }   // rows stay sorted: free_ is increasing
       }
       outer.push_back(int(inner.size()));
     }
@@ -102,6 +104,9 @@ public:
     Block_conjugate_gradient cg(s.solver_tolerance, s.solver_maximum_iterations);
     Solver_choice choice(s.solver, free_.size());
     const Control_matrix X0 = X;
+    // automatic isotropic runs: a time step that follows the mesh's density (Local_time_scale.h)
+    const std::vector<double> mass_scale = s.local_time_scale ? local_time_scale(*layer_.topology, layer_.real_faces, X0, components_,
+                                                                                  component_edge_) : std::vector<double>();
     Stopwatch clock;
     Tensor tensor = tensor_in;
     Assembly_statistics a;
@@ -157,16 +162,8 @@ public:
       // system and right-hand side at X_n, divided by sys so that a huge tau cannot overflow
       clock = Stopwatch();
       const double sys = system_scale(factor);
-      double* av = A_.valuePtr();
-      for(std::size_t e = 0; e < source_.size(); ++e)
-      {
-        const std::size_t p = std::size_t(source_[e]);
-        const int row = free_[std::size_t(entry_row_[e])];
-        const double tau = factor * units_.tau[std::size_t(row)];
-        av[e] = ((1 + tau * units_.omega[std::size_t(row)]) * M_[p] + tau * L_[p]) / sys;
-        if(!unknown_scale_.empty()) av[e] /= unknown_scale_[std::size_t(row)] * unknown_scale_[std::size_t(row)];
-      }
-      step_residual(assembler_.pattern(), M_, L_, units_.tau, units_.omega, X, X0, factor / sys, R);
+      fill_step_matrix(A_, source_, entry_column_, free_, M_, L_, units_.tau, units_.omega, factor, sys, unknown_scale_, mass_scale);
+      step_residual(assembler_.pattern(), M_, L_, units_.tau, units_.omega, X, X0, factor / sys, R, mass_scale);
       for(Eigen::Index i = 0; i < nfree; ++i) B.row(i) = R.row(free_[std::size_t(i)]);
       if(!unknown_scale_.empty())
         for(Eigen::Index i = 0; i < nfree; ++i) B.row(i) /= std::pow(unknown_scale_[std::size_t(free_[std::size_t(i)])], 3);
@@ -360,12 +357,7 @@ public:
     // the constant system, and its solver: factorised once (up to automatic_cholesky_limit free
     // vertices for AUTOMATIC), or conjugate gradients warm-started from the last step
     const double sys = system_scale(1.0);
-    double* av = A_.valuePtr();
-    for(std::size_t e = 0; e < source_.size(); ++e)
-    {
-      const std::size_t p = std::size_t(source_[e]), row = std::size_t(free_[std::size_t(entry_row_[e])]);
-      av[e] = ((1 + units_.tau[row] * units_.omega[row]) * M_[p] + units_.tau[row] * L_[p]) / sys;
-    }
+    fill_step_matrix(A_, source_, entry_column_, free_, M_, L_, units_.tau, units_.omega, 1.0, sys, {}, {});
     const bool factorise = s.solver == Linear_solver::CHOLESKY ||
                            (s.solver == Linear_solver::AUTOMATIC && free_.size() <= std::size_t(automatic_cholesky_limit));
     Sparse_cholesky cholesky;
@@ -519,7 +511,7 @@ private:
       assembler_.assemble(X, metric_columns, Isotropic_diffusion_tensor(), Mi, Li);
       if(prefilter_A_.rows() != A_.rows()) prefilter_A_ = A_;
       Dense_block dX;
-      const Solve_statistics sol = prefilter_step(assembler_.pattern(), Mi, Li, eps_, free_, source_, entry_row_, prefilter_A_,
+      const Solve_statistics sol = prefilter_step(assembler_.pattern(), Mi, Li, eps_, free_, source_, entry_column_, prefilter_A_,
                                                   X, metric_columns, dX);
       if(!sol.ok || !dX.allFinite())
         prefilter_error_ = "the prefiltered surface M_eps could not be computed: " + (sol.ok ? std::string("not finite") : sol.message);
@@ -577,7 +569,7 @@ private:
   const Mesh_components& components_;
   const std::vector<double>& component_edge_;
   double mean_edge_;
-  std::vector<int> entry_row_;          // the free column of each entry of A_
+  std::vector<int> entry_column_;       // the free column of each entry of A_
   Step_units units_;
   std::vector<double> curvature_bound_; // per component (Assembly_statistics::bounded_H_integral)
   std::vector<double> eps_;             // prefilter time per row

@@ -1,0 +1,79 @@
+// Copyright (c) 2026 Anisotropic_fairing developers.
+// SPDX-License-Identifier: GPL-3.0-or-later
+//
+// The linear system of one semi-implicit step, ((1 + tau w) M + tau L) dX = tau (w M (X_0 - X_n) - L X_n)
+// over the free vertices, from M and L given as value arrays over the assembler's pattern. With a local
+// time scale s (Local_time_scale.h) M_ij stands for M_ij / sqrt(s_i s_j) in both sides.
+
+#ifndef CGAL_ANISOTROPIC_FAIRING_INTERNAL_STEP_SYSTEM_H
+#define CGAL_ANISOTROPIC_FAIRING_INTERNAL_STEP_SYSTEM_H
+
+#include <CGAL/Anisotropic_fairing/internal/Control_matrix.h>
+
+#include <Eigen/Dense>
+#include <Eigen/SparseCore>
+
+#include <algorithm>
+#include <cmath>
+#include <cstddef>
+#include <vector>
+
+namespace CGAL {
+namespace Anisotropic_fairing {
+namespace internal {
+
+/// Entry e of A (free x free, column-major) takes pattern entry source[e]; its column is the free vertex
+/// entry_column[e]. The system is divided by `sys` (so that a huge tau cannot overflow), and with several
+/// components the unknowns of row i are in units of unknown_scale[i] (empty: none).
+inline void fill_step_matrix(Eigen::SparseMatrix<double>& A, const std::vector<int>& source, const std::vector<int>& entry_column,
+                             const std::vector<int>& free, const std::vector<double>& M, const std::vector<double>& L,
+                             const std::vector<double>& tau, const std::vector<double>& omega, double factor, double sys,
+                             const std::vector<double>& unknown_scale, const std::vector<double>& mass_scale)
+{
+  double* av = A.valuePtr();
+  const int* inner = A.innerIndexPtr();
+  for(std::size_t e = 0; e < source.size(); ++e)
+  {
+    const std::size_t p = std::size_t(source[e]);
+    const std::size_t row = std::size_t(free[std::size_t(inner[e])]);
+    const double t = factor * tau[row];
+    double m = M[p];
+    if(!mass_scale.empty()) m /= std::sqrt(mass_scale[row] * mass_scale[std::size_t(free[std::size_t(entry_column[e])])]);
+    av[e] = ((1 + t * omega[row]) * m + t * L[p]) / sys;
+    if(!unknown_scale.empty()) av[e] /= unknown_scale[row] * unknown_scale[row];
+  }
+}
+
+/// R = f tau_i (omega_i M (X0 - X) - L X)_i for all rows: the right-hand side of a time step for the
+/// displacement.
+inline void step_residual(const Eigen::SparseMatrix<double>& pattern, const std::vector<double>& M, const std::vector<double>& L,
+                          const std::vector<double>& tau, const std::vector<double>& omega, const Control_matrix& X,
+                          const Control_matrix& X0, double f, Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, Eigen::RowMajor>& R,
+                          const std::vector<double>& mass_scale = std::vector<double>())
+{
+  const int* outer = pattern.outerIndexPtr();
+  const int* rows = pattern.innerIndexPtr();
+  const Eigen::Index k = X.cols();
+  for(Eigen::Index i = 0; i < X.rows(); ++i)
+  {
+    double* r = R.row(i).data();
+    std::fill(r, r + k, 0.0);
+    const double w = omega[std::size_t(i)];
+    for(int p = outer[i]; p < outer[i + 1]; ++p)
+    {
+      const Eigen::Index j = rows[p];
+      double m = w * M[std::size_t(p)];
+      if(!mass_scale.empty() && m != 0) m /= std::sqrt(mass_scale[std::size_t(i)] * mass_scale[std::size_t(j)]);
+      const double l = L[std::size_t(p)];
+      for(Eigen::Index col = 0; col < k; ++col) r[col] += m * (X0(j, col) - X(j, col)) - l * X(j, col);
+    }
+    const double t = f * tau[std::size_t(i)];
+    for(Eigen::Index col = 0; col < k; ++col) r[col] *= t;
+  }
+}
+
+} // namespace internal
+} // namespace Anisotropic_fairing
+} // namespace CGAL
+
+#endif // CGAL_ANISOTROPIC_FAIRING_INTERNAL_STEP_SYSTEM_H
