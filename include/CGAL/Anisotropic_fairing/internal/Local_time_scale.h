@@ -23,6 +23,7 @@
 #include <CGAL/Anisotropic_fairing/internal/Mesh_components.h>
 #include <CGAL/Anisotropic_fairing/internal/Triangle_topology.h>
 
+#include <cmath>
 #include <cstddef>
 #include <vector>
 
@@ -59,6 +60,13 @@ inline std::vector<double> local_time_scale(const Triangle_topology& topo, std::
     const int c = components.of_vertex[i];
     if(c >= 0 && h[i] > 0 && edge[std::size_t(c)] > 0) s[i] = (h[i] / edge[std::size_t(c)]) * (h[i] / edge[std::size_t(c)]);
   }
+  return s;
+}
+
+/// w_i = 1 / sqrt(s_i): the mass matrix of the step is M_ij w_i w_j (Step_system.h).
+inline std::vector<double> mass_weights(std::vector<double> s)
+{
+  for(double& x : s) x = 1 / std::sqrt(x);
   return s;
 }
 

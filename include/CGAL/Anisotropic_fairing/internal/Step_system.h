@@ -3,7 +3,8 @@
 //
 // The linear system of one semi-implicit step, ((1 + tau w) M + tau L) dX = tau (w M (X_0 - X_n) - L X_n)
 // over the free vertices, from M and L given as value arrays over the assembler's pattern. With a local
-// time scale s (Local_time_scale.h) M_ij stands for M_ij / sqrt(s_i s_j) in both sides.
+// time scale s (Local_time_scale.h) M_ij stands for M_ij w_i w_j in both sides, w_i = 1 / sqrt(s_i)
+// (`mass_weight`, empty: none).
 
 #ifndef CGAL_ANISOTROPIC_FAIRING_INTERNAL_STEP_SYSTEM_H
 #define CGAL_ANISOTROPIC_FAIRING_INTERNAL_STEP_SYSTEM_H
@@ -28,7 +29,7 @@ namespace internal {
 inline void fill_step_matrix(Eigen::SparseMatrix<double>& A, const std::vector<int>& source, const std::vector<int>& entry_column,
                              const std::vector<int>& free, const std::vector<double>& M, const std::vector<double>& L,
                              const std::vector<double>& tau, const std::vector<double>& omega, double factor, double sys,
-                             const std::vector<double>& unknown_scale, const std::vector<double>& mass_scale)
+                             const std::vector<double>& unknown_scale, const std::vector<double>& mass_weight)
 {
   double* av = A.valuePtr();
   const int* inner = A.innerIndexPtr();
@@ -38,7 +39,7 @@ inline void fill_step_matrix(Eigen::SparseMatrix<double>& A, const std::vector<i
     const std::size_t row = std::size_t(free[std::size_t(inner[e])]);
     const double t = factor * tau[row];
     double m = M[p];
-    if(!mass_scale.empty()) m /= std::sqrt(mass_scale[row] * mass_scale[std::size_t(free[std::size_t(entry_column[e])])]);
+    if(!mass_weight.empty()) m *= mass_weight[row] * mass_weight[std::size_t(free[std::size_t(entry_column[e])])];
     av[e] = ((1 + t * omega[row]) * m + t * L[p]) / sys;
     if(!unknown_scale.empty()) av[e] /= unknown_scale[row] * unknown_scale[row];
   }
@@ -49,7 +50,7 @@ inline void fill_step_matrix(Eigen::SparseMatrix<double>& A, const std::vector<i
 inline void step_residual(const Eigen::SparseMatrix<double>& pattern, const std::vector<double>& M, const std::vector<double>& L,
                           const std::vector<double>& tau, const std::vector<double>& omega, const Control_matrix& X,
                           const Control_matrix& X0, double f, Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, Eigen::RowMajor>& R,
-                          const std::vector<double>& mass_scale = std::vector<double>())
+                          const std::vector<double>& mass_weight = std::vector<double>())
 {
   const int* outer = pattern.outerIndexPtr();
   const int* rows = pattern.innerIndexPtr();
@@ -63,7 +64,7 @@ inline void step_residual(const Eigen::SparseMatrix<double>& pattern, const std:
     {
       const Eigen::Index j = rows[p];
       double m = w * M[std::size_t(p)];
-      if(!mass_scale.empty() && m != 0) m /= std::sqrt(mass_scale[std::size_t(i)] * mass_scale[std::size_t(j)]);
+      if(!mass_weight.empty()) m *= mass_weight[std::size_t(i)] * mass_weight[std::size_t(j)];
       const double l = L[std::size_t(p)];
       for(Eigen::Index col = 0; col < k; ++col) r[col] += m * (X0(j, col) - X(j, col)) - l * X(j, col);
     }

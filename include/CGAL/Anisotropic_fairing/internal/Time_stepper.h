@@ -105,8 +105,9 @@ public:
     Solver_choice choice(s.solver, free_.size());
     const Control_matrix X0 = X;
     // automatic isotropic runs: a time step that follows the mesh's density (Local_time_scale.h)
-    const std::vector<double> mass_scale = s.local_time_scale ? local_time_scale(*layer_.topology, layer_.real_faces, X0, components_,
-                                                                                  component_edge_) : std::vector<double>();
+    const std::vector<double> mass_weight = s.local_time_scale ? mass_weights(local_time_scale(*layer_.topology, layer_.real_faces, X0,
+                                                                                               components_, component_edge_))
+                                                               : std::vector<double>();
     Stopwatch clock;
     Tensor tensor = tensor_in;
     Assembly_statistics a;
@@ -162,8 +163,8 @@ public:
       // system and right-hand side at X_n, divided by sys so that a huge tau cannot overflow
       clock = Stopwatch();
       const double sys = system_scale(factor);
-      fill_step_matrix(A_, source_, entry_column_, free_, M_, L_, units_.tau, units_.omega, factor, sys, unknown_scale_, mass_scale);
-      step_residual(assembler_.pattern(), M_, L_, units_.tau, units_.omega, X, X0, factor / sys, R, mass_scale);
+      fill_step_matrix(A_, source_, entry_column_, free_, M_, L_, units_.tau, units_.omega, factor, sys, unknown_scale_, mass_weight);
+      step_residual(assembler_.pattern(), M_, L_, units_.tau, units_.omega, X, X0, factor / sys, R, mass_weight);
       for(Eigen::Index i = 0; i < nfree; ++i) B.row(i) = R.row(free_[std::size_t(i)]);
       if(!unknown_scale_.empty())
         for(Eigen::Index i = 0; i < nfree; ++i) B.row(i) /= std::pow(unknown_scale_[std::size_t(free_[std::size_t(i)])], 3);
