@@ -291,7 +291,7 @@ Fairing_report fair(TriangleMesh& tm, VertexPointMap vpm, AttributeMap attribute
                     "the surface after an isotropic step of %.3g h^2", a.lambda, a.epsilon);
       choices += text;
     }
-    if(tensor_chosen || std::is_same<decltype(tensor), Isotropic_diffusion_tensor>::value)
+    if(mode != Attribute_mode::ATTRIBUTES_ONLY && (tensor_chosen || std::is_same<decltype(tensor), Isotropic_diffusion_tensor>::value))
       choices += "; the isotropic flow's time step follows the mesh's density (h: the edge length around each vertex)";
   }
 
