@@ -5,6 +5,8 @@
 #   bash scripts/af.sh build   deps, then configure (Release) and build everything into build/
 #   bash scripts/af.sh main    build, then fair the bundled noisy fandisk with build/bin/anisotropic_fairing
 #   bash scripts/af.sh test    build, then run all CTest tests (non-zero exit on failure)
+#   bash scripts/af.sh sanitize  build into build-sanitize/ with AddressSanitizer and
+#                              UndefinedBehaviorSanitizer, then run all CTest tests there
 #
 # Works from any current directory.
 set -euo pipefail
@@ -30,7 +32,7 @@ log() { printf '[af] %s\n' "$*" >&2; }
 die() { printf '[af] error: %s\n' "$*" >&2; exit 1; }
 
 usage() {
-  sed -n '2,9p' "${BASH_SOURCE[0]}" | sed 's/^# \{0,1\}//' >&2
+  sed -n '2,11p' "${BASH_SOURCE[0]}" | sed 's/^# \{0,1\}//' >&2
 }
 
 is_installed() {
@@ -76,6 +78,18 @@ cmd_test() {
   ctest --test-dir "$BUILD_DIR" --output-on-failure --no-tests=error -j"$JOBS"
 }
 
+# The whole suite again, built with AddressSanitizer and UndefinedBehaviorSanitizer (any report fails
+# the test that made it: -fno-sanitize-recover, halt_on_error). Optimised (-O1) so that it stays fast.
+cmd_sanitize() {
+  cmd_deps
+  local flags="-O1 -g -fsanitize=address,undefined -fno-sanitize-recover=all -fno-omit-frame-pointer"
+  cmake -S . -B build-sanitize -DCMAKE_BUILD_TYPE=RelWithDebInfo -DCMAKE_CXX_FLAGS_RELWITHDEBINFO="$flags -DNDEBUG" \
+    -DCMAKE_EXE_LINKER_FLAGS="-fsanitize=address,undefined"
+  cmake --build build-sanitize -j"$JOBS"
+  ASAN_OPTIONS=detect_leaks=1:halt_on_error=1:abort_on_error=1 UBSAN_OPTIONS=print_stacktrace=1:halt_on_error=1 \
+    ctest --test-dir build-sanitize --output-on-failure --no-tests=error -j"$JOBS"
+}
+
 main() {
   [ "$#" -ge 1 ] || { usage; exit 2; }
   local sub="$1"; shift
@@ -84,6 +98,7 @@ main() {
     build) cmd_build "$@" ;;
     main)  cmd_main "$@" ;;
     test)  cmd_test "$@" ;;
+    sanitize) cmd_sanitize "$@" ;;
     -h|--help|help) usage ;;
     *) usage; die "unknown subcommand: $sub" ;;
   esac

@@ -52,6 +52,9 @@
 #include <CGAL/Anisotropic_fairing/anisotropic_fairing.h>
 #include <CGAL/Anisotropic_fairing/Loop_limit_surface.h>
 
+#include "mesh_file_check.h"
+#include "mesh_repair.h"
+
 #include <algorithm>
 #include <array>
 #include <cerrno>
@@ -167,6 +170,11 @@ const char* const usage_text =
 "                            vertex's faces (Loop_limit_surface::vertex_curvatures). Needs a .ply\n"
 "                            OUTPUT and the Loop element\n"
 "  --report FILE.json        write per-step statistics (also, with status and message, on failure)\n"
+"  --repair                  if the faces are not an oriented 2-manifold, repair them with CGAL's\n"
+"                            Polygon_mesh_processing (drop faces that repeat a vertex, orient, split\n"
+"                            non-manifold vertices and edges; the input's vertex properties other\n"
+"                            than positions are then not kept), and on any mesh stitch coinciding\n"
+"                            borders and remove vertices on no face; each change is printed\n"
 "  --quiet                   no progress line per step on stderr\n"
 "  --help                    print this help and exit\n"
 "Options also accept the form --option=value.\n"
@@ -218,7 +226,7 @@ std::string one_line(std::string s)
 // ------------------------------------------------------------------------------------------------
 // Options
 // ------------------------------------------------------------------------------------------------
-enum class Format { OFF, OBJ, PLY };
+enum class Format { OFF, OBJ, PLY, STL };   // in the order of af_tool::Mesh_format
 
 struct Options;
 bool automatic_parameters(const Options& o);
@@ -248,6 +256,8 @@ struct Options
   double attribute_weight = 1;
   bool curvature = false;   // --curvature: k1, k2, mean_curvature written as PLY vertex properties
   bool quiet = false;
+  bool repair = false;           // --repair: make a non-manifold or inconsistently oriented input usable
+  bool report_refused = false;   // the report's path collides with the input or the output: never written
   bool help = false;
 };
 
@@ -302,8 +312,11 @@ double parse_double(const std::string& flag, const std::string& text)
   errno = 0;
   char* end = nullptr;
   const double v = std::strtod(text.c_str(), &end);
-  if(text.empty() || end != text.c_str() + text.size() || errno == ERANGE || !std::isfinite(v))
+  if(text.empty() || end != text.c_str() + text.size() || (errno != ERANGE && !std::isfinite(v)))
     usage_error(flag + " expects a finite number, not '" + text + "'");
+  if(errno == ERANGE && std::abs(v) > 1) usage_error(flag + " " + text + " is beyond the range of double precision");
+  if(errno == ERANGE)   // strtod says so below the smallest normal double, where the arithmetic loses its digits
+    usage_error(flag + " " + text + " is below the smallest normal double (2.2e-308), too small to compute with");
   return v;
 }
 
@@ -331,8 +344,21 @@ bool format_of(const std::string& path, Format& f)
   if(e == ".off") f = Format::OFF;
   else if(e == ".obj") f = Format::OBJ;
   else if(e == ".ply") f = Format::PLY;
+  else if(e == ".stl") f = Format::STL;
   else return false;
   return true;
+}
+
+// Whether two paths name one file: the same file if both exist (links included), else the same path.
+bool same_file(const std::string& a, const std::string& b)
+{
+  std::error_code ec1, ec2;
+  if(fs::exists(a, ec1) && fs::exists(b, ec2))
+  {
+    std::error_code ec;
+    return fs::equivalent(a, b, ec);
+  }
+  return fs::weakly_canonical(a, ec1) == fs::weakly_canonical(b, ec2);
 }
 
 // Reads the options. `o.report` is set as soon as it is seen, so that a later usage error can still
@@ -368,6 +394,7 @@ void parse_arguments(int argc, char** argv, Options& o)
     {
       if(arg == "--help" || arg == "-h") { flag_without_value(); o.help = true; }
       else if(arg == "--quiet" || arg == "-q") { flag_without_value(); o.quiet = true; }
+      else if(arg == "--repair") { flag_without_value(); o.repair = true; }
       else if(arg == "--curvature") { flag_without_value(); o.curvature = true; }
       else if(arg == "--report") o.report = next();
       else if(arg == "--time-step")
@@ -507,8 +534,20 @@ void parse_arguments(int argc, char** argv, Options& o)
   if(o.has_epsilon && !asked_anisotropic) usage_error("--epsilon needs --tensor anisotropic");
   if(o.has_tangential_motion && !asked_anisotropic) usage_error("--tangential-motion needs --tensor anisotropic");
   Format f;
-  if(!format_of(o.input, f)) usage_error("INPUT must be an .off, .obj or .ply file: " + o.input);
-  if(!format_of(o.output, f)) usage_error("OUTPUT must be an .off, .obj or .ply file: " + o.output);
+  if(!format_of(o.input, f)) usage_error("INPUT must be an .off, .obj, .ply or .stl file: " + o.input);
+  if(!format_of(o.output, f) || f == Format::STL) usage_error("OUTPUT must be an .off, .obj or .ply file: " + o.output);
+  // nothing written may overwrite the input or another file written (the report is not written either)
+  if(same_file(o.output, o.input)) usage_error("OUTPUT " + o.output + " is the INPUT: it would be overwritten");
+  if(!o.report.empty() && same_file(o.report, o.input))
+  {
+    o.report_refused = true;
+    usage_error("the report " + o.report + " is the INPUT: it would be overwritten");
+  }
+  if(!o.report.empty() && same_file(o.report, o.output))
+  {
+    o.report_refused = true;
+    usage_error("the report " + o.report + " is the OUTPUT: one would overwrite the other");
+  }
   if(o.curvature && f != Format::PLY)
     usage_error("--curvature needs a .ply OUTPUT (k1, k2 and mean_curvature are written as vertex properties)");
   if(o.curvature && o.element != AF::Finite_element::LOOP)
@@ -551,6 +590,7 @@ struct Input_info
   bool vertex_alpha = false;      // PLY: the vertex alpha was folded into v:color (selectable as "alpha")
   std::string uv_problem;         // OBJ: why its vt could not be kept (empty: none, or kept as v:texcoord)
   std::vector<std::string> warnings;
+  std::vector<std::string> notes;   // what was done to read the file (STL corners merged, strips split)
 };
 
 typedef K::Point_2 Texcoord;
@@ -733,17 +773,60 @@ bool stoff_without_colors(const std::string& path, std::string& patched)
   return true;
 }
 
-void read_input(const std::string& path, Mesh& mesh, Input_info& info)
+// The mesh of a soup that CGAL's Surface_mesh readers cannot read (STL, PLY triangle strips), after
+// check_oriented_manifold(): the vertices in the file's order.
+void add_soup_faces(const af_tool::Polygon_soup& soup, Mesh& mesh)
 {
-  if(!format_of(path, info.format)) usage_error("INPUT must be an .off, .obj or .ply file: " + path);
+  if(mesh.number_of_vertices() == 0)
+    for(const auto& p : soup.points) mesh.add_vertex(Point(p[0], p[1], p[2]));
+  std::vector<Vertex_index> face;
+  for(const auto& f : soup.faces)
+  {
+    face.clear();
+    for(std::size_t v : f) face.push_back(Vertex_index(static_cast<Mesh::size_type>(v)));
+    if(mesh.add_face(face) == Mesh::null_face()) fail("read_error", "cannot build the mesh of " + soup.path);
+  }
+}
+
+void read_input(const std::string& path, Mesh& mesh, Input_info& info, bool repair)
+{
+  if(!format_of(path, info.format)) usage_error("INPUT must be an .off, .obj, .ply or .stl file: " + path);
   std::error_code ec;
   if(!fs::is_regular_file(path, ec)) fail("read_error", "cannot open " + path + ": no such file");
   std::ifstream probe(path);
   if(!probe) fail("read_error", "cannot open " + path + ": " + std::strerror(errno));
   probe.close();
 
-  bool ok = false;
+  // the file is read and checked before CGAL's readers see it (mesh_file_check.h)
+  af_tool::Polygon_soup soup;
+  try { soup = af_tool::read_checked_soup(path, af_tool::Mesh_format(int(info.format))); }
+  catch(const af_tool::File_problem& e) { fail("read_error", std::string("cannot read ") + e.what()); }
+  // a file that reads but whose faces are no oriented 2-manifold is an input the fairing refuses, unless
+  // --repair asks to make it one (then the mesh is built from the repaired soup)
+  bool rebuilt = false;
+  try { af_tool::check_oriented_manifold(soup); }
+  catch(const af_tool::File_problem& e)
+  {
+    if(!repair) fail("input_error", std::string("cannot fair ") + e.what() + " (--repair may make it usable)");
+    for(const std::string& c : af_tool::repair_soup(soup)) info.notes.push_back("--repair: " + c);
+    try { af_tool::check_oriented_manifold(soup); }
+    catch(const af_tool::File_problem& again) { fail("input_error", std::string("cannot fair ") + again.what() + ", even after --repair"); }
+    rebuilt = true;
+    if(info.format != Format::STL)
+      info.warnings.push_back("--repair rebuilt the mesh of " + path + " from its positions and faces: its other vertex properties are not kept");
+  }
+  info.warnings.insert(info.warnings.end(), soup.warnings.begin(), soup.warnings.end());
+  if(rebuilt && info.format != Format::STL) add_soup_faces(soup, mesh);
+  if(info.format == Format::STL)
+  {
+    add_soup_faces(soup, mesh);
+    info.notes.push_back(std::to_string(soup.merged_points) + " triangle corners of " + path + " merged into the " +
+                         std::to_string(soup.points.size()) + " vertices they coincide with");
+  }
+
+  bool ok = info.format == Format::STL || rebuilt;
   std::string printed;
+  if(!ok)
   {
     Capture_streams capture;
     if(info.format == Format::OFF)
@@ -770,6 +853,13 @@ void read_input(const std::string& path, Mesh& mesh, Input_info& info)
       info.ply_binary = ply_is_binary(path);
       std::ifstream in(path, std::ios::binary);
       ok = CGAL::IO::read_PLY(in, mesh, info.ply_comments, false);  // keeps every property as v:<name>, f:<name>
+      if(soup.ply_strips && mesh.number_of_faces() == 0 && mesh.number_of_vertices() == soup.points.size())
+      {
+        // CGAL reads the vertices and their properties of a file of triangle strips, but not the strips
+        add_soup_faces(soup, mesh);
+        ok = true;
+        info.notes.push_back(std::to_string(soup.faces.size()) + " triangles read from the triangle strips of " + path);
+      }
     }
     else
     {
@@ -778,13 +868,15 @@ void read_input(const std::string& path, Mesh& mesh, Input_info& info)
     }
     printed = capture.first_line();
   }
-  if(!ok || mesh.number_of_faces() == 0)
+  // the checks above are those CGAL's readers make: a difference would be a bug of ours
+  if(!ok || mesh.number_of_faces() != soup.faces.size() || mesh.number_of_vertices() != soup.points.size())
   {
     mesh.clear();
-    fail("read_error", "cannot read a polygon mesh from " + path +
-                       " (unreadable file, or faces that do not form an oriented 2-manifold)" +
+    fail("read_error", "cannot read a polygon mesh from " + path + " (CGAL's reader refused a file the checks accepted)" +
                        (printed.empty() ? std::string() : ": " + printed));
   }
+  if(repair)
+    for(const std::string& c : af_tool::repair_mesh(mesh)) info.notes.push_back("--repair: " + c);
   if(info.format == Format::PLY)
   {
     info.vertex_alpha = fold_alpha<Vertex_index>(mesh, mesh.vertices(), "v:color", "v:alpha");
@@ -1298,19 +1390,22 @@ int run(const Options& o, Run_record& r)
   Format out_format;
   format_of(o.output, out_format);
 
-  // fail early on an output that cannot be created (the final write checks again)
-  {
-    const fs::path out(o.output);
+  // fail early on an output or a report that cannot be created (the final writes check again)
+  const auto check_writable = [](const std::string& path, const std::string& what) {
+    const fs::path out(path);
     const fs::path dir = out.has_parent_path() ? out.parent_path() : fs::path(".");
     std::error_code ec;
-    if(!fs::is_directory(dir, ec)) fail("write_error", "cannot write " + o.output + ": no directory " + dir.string());
-    if(::access(dir.c_str(), W_OK) != 0) fail("write_error", "cannot write " + o.output + ": directory " + dir.string() + " is not writable");
-    if(fs::is_directory(out, ec)) fail("write_error", "cannot write " + o.output + ": it is a directory");
-  }
+    if(!fs::is_directory(dir, ec)) fail("write_error", "cannot write " + what + path + ": no directory " + dir.string());
+    if(::access(dir.c_str(), W_OK) != 0) fail("write_error", "cannot write " + what + path + ": directory " + dir.string() + " is not writable");
+    if(fs::is_directory(out, ec)) fail("write_error", "cannot write " + what + path + ": it is a directory");
+    if(fs::exists(out, ec) && ::access(out.c_str(), W_OK) != 0) fail("write_error", "cannot write " + what + path + ": it is not writable");
+  };
+  check_writable(o.output, "");
+  if(!o.report.empty()) check_writable(o.report, "the report ");
 
   Mesh mesh;
   Input_info info;
-  read_input(o.input, mesh, info);
+  read_input(o.input, mesh, info, o.repair);
   r.mesh_read = true;
   r.vertices = mesh.number_of_vertices();
   r.faces = mesh.number_of_faces();
@@ -1499,6 +1594,7 @@ int run(const Options& o, Run_record& r)
   }
   for(const std::string& w : warnings)
     std::fprintf(stderr, "anisotropic_fairing: warning: %s\n", one_line(w).c_str());
+  for(const std::string& n : info.notes) std::fprintf(stderr, "anisotropic_fairing: %s\n", one_line(n).c_str());
   if(!quiet && !r.report.choices.empty())
     std::fprintf(stderr, "anisotropic_fairing: automatic parameters: %s\n", one_line(r.report.choices).c_str());
   if(r.report.stop_reason == AF::Stop_reason::STEP_REJECTED)
@@ -1545,7 +1641,8 @@ int main(int argc, char** argv)
   }
   int code = exit_code;
   std::string line = "anisotropic_fairing: " + r.message;
-  if(!o.report.empty() && !write_file_atomically(o.report, report_json(o, r, elapsed_seconds())))
+  const bool report_failed = r.status == "write_error" && r.message.rfind("cannot write the report ", 0) == 0;
+  if(!o.report.empty() && !o.report_refused && !report_failed && !write_file_atomically(o.report, report_json(o, r, elapsed_seconds())))
     line += " (and cannot write the report " + o.report + ")";
   std::fprintf(stderr, "%s\n", line.c_str());
   return code;

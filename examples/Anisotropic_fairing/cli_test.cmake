@@ -733,12 +733,12 @@ elseif(MODE STREQUAL "boundary_mesh")
     endforeach()
   endforeach()
   file(WRITE "${WORK_DIR}/grid.off" "${off}")
-  file(WRITE "${WORK_DIR}/grid_normals.off" "${noff}")
+  file(WRITE "${WORK_DIR}/grid_noff.off" "${noff}")
   off_positions("${WORK_DIR}/grid.off" p0)
   # the limit surface of a planar lattice with its border held is the plane, and its limit points are the vertices
   foreach(variant curve vertices normals)
     if(variant STREQUAL "normals")
-      run_tool(r grid_normals.off "${WORK_DIR}/grid_${variant}.off" --quiet --steps 3 --stop off
+      run_tool(r grid_noff.off "${WORK_DIR}/grid_${variant}.off" --quiet --steps 3 --stop off
                --report "${WORK_DIR}/grid_${variant}.json")
     else()
       run_tool(r grid.off "${WORK_DIR}/grid_${variant}.off" --quiet --steps 3 --stop off --boundary ${variant}

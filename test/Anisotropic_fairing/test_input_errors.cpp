@@ -7,6 +7,7 @@
 #include <CGAL/Surface_mesh.h>
 
 #include <CGAL/Anisotropic_fairing/Loop_limit_surface.h>
+#include <CGAL/Anisotropic_fairing/anisotropic_fairing.h>
 #include <CGAL/Anisotropic_fairing/internal/Triangle_topology.h>
 
 #include "test_support/check.h"
@@ -138,6 +139,17 @@ int main()
     m.point(Mesh::Vertex_index(3)) = Point(0, std::numeric_limits<double>::quiet_NaN(), 0);
     expect_error([&] { Surface s(m); }, Err::NON_FINITE_COORDINATE, 3, "vertex 3 has a non-finite coordinate", "NaN coordinate");
     AF_CHECK(property_names(m) == before, "no property added to the user's mesh by a failed construction");
+    // coordinates whose fourth powers leave double precision: refused as such, not as a degenerate surface
+    m.point(Mesh::Vertex_index(3)) = Point(0, -1e171, 0);
+    expect_error([&] { Surface s(m); }, Err::COORDINATE_RANGE, 3, "vertex 3 has a coordinate of -1e+171", "coordinate 1e171");
+    expect_error([&] { AF::anisotropic_fairing(m); }, Err::COORDINATE_RANGE, 3, "overflow double precision", "fairing, coordinate 1e171");
+    {
+      Mesh tiny = m;
+      for(Mesh::Vertex_index v : tiny.vertices()) tiny.point(v) = Point(0, 0, 0) + 1e-150 * (m.point(v) - CGAL::ORIGIN);
+      tiny.point(Mesh::Vertex_index(3)) = Point(0, -1e-150, 0);
+      expect_error([&] { AF::anisotropic_fairing(tiny); }, Err::COORDINATE_RANGE, Err::no_element, "the mesh spans only 2e-150",
+                   "fairing, a mesh of 1e-150");
+    }
     m.point(Mesh::Vertex_index(3)) = Point(0, -1, 0);
     {
       Surface s(m);

@@ -37,7 +37,8 @@ public:
     LOW_VALENCE_VERTEX,    ///< a vertex of valence below 3; `element()` is the vertex index
     NON_FINITE_COORDINATE, ///< a NaN or infinite coordinate; `element()` is the vertex index
     ATTRIBUTE_DIMENSION,   ///< an attribute whose dimension differs between vertices; `element()` is the vertex index
-    INVALID_PARAMETER      ///< a parameter value outside its documented range
+    INVALID_PARAMETER,     ///< a parameter value outside its documented range
+    COORDINATE_RANGE       ///< coordinates whose size would overflow or underflow double precision in the computation (fourth powers of lengths): the mesh spans more than 1e70 or less than 1e-70, or a coordinate exceeds 1e70; `element()` is a vertex index or `no_element`
   };
 
   /// Index value used by `element()` when no single element is at fault.

@@ -21,6 +21,7 @@
 #include <boost/property_map/property_map.hpp>
 
 #include <cmath>
+#include <cstdio>
 #include <limits>
 #include <memory>
 #include <string>
@@ -99,7 +100,17 @@ public:
   std::size_t index(vertex_descriptor v) const { return vertex_index_.at(v); }
   std::size_t index(face_descriptor f) const { return face_index_.at(f); }
 
-  /// Reads a point map into an n x 3 matrix; throws on a non-finite coordinate.
+  /// The largest coordinate, and the inverse of the smallest span, the fairing's arithmetic can hold.
+  static constexpr double coordinate_limit = 1e70;
+
+  static std::string to_text(double x)
+  {
+    char text[32];
+    std::snprintf(text, sizeof text, "%.3g", x);
+    return text;
+  }
+
+  /// Reads a point map into an n x 3 matrix; throws on a non-finite coordinate or one out of range.
   template <typename PointMap>
   Control_matrix read_points(PointMap vpm) const
   {
@@ -113,9 +124,19 @@ public:
         if(!std::isfinite(x))
           throw Input_error(Input_error::NON_FINITE_COORDINATE, i,
                             "vertex " + std::to_string(i) + " has a non-finite coordinate");
+        if(std::abs(x) > coordinate_limit)
+          throw Input_error(Input_error::COORDINATE_RANGE, i,
+                            "vertex " + std::to_string(i) + " has a coordinate of " + to_text(x) +
+                            ": the fairing computes fourth powers of lengths, which overflow double precision beyond 1e70; scale the mesh down");
         X(Eigen::Index(i), c) = x;
       }
     }
+    // the metric's determinant is a length to the fourth power: it underflows for a mesh of ~1e-77
+    const double span = X.rows() > 0 ? (X.colwise().maxCoeff() - X.colwise().minCoeff()).maxCoeff() : 0.0;   // not squared: 1e-170 must not vanish
+    if(span > 0 && span < 1 / coordinate_limit)
+      throw Input_error(Input_error::COORDINATE_RANGE, Input_error::no_element,
+                        "the mesh spans only " + to_text(span) +
+                        ": the fairing computes fourth powers of lengths, which underflow double precision below 1e-70; scale the mesh up");
     return X;
   }
 

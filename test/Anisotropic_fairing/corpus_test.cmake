@@ -1,0 +1,32 @@
+# One line of corpus/expected.txt, run by CTest (test/Anisotropic_fairing/CMakeLists.txt):
+#   cmake -DTOOL=... -DCORPUS=... -DWORK_DIR=... -DFILE=... -DEXIT=... -DPATTERN=... -DARGS=... -P corpus_test.cmake
+# The input is copied into WORK_DIR, so that a run that overwrote it would be seen and harm nothing.
+file(REMOVE_RECURSE "${WORK_DIR}")
+file(MAKE_DIRECTORY "${WORK_DIR}")
+file(COPY "${CORPUS}/${FILE}" DESTINATION "${WORK_DIR}")
+set(input "${WORK_DIR}/${FILE}")
+set(output "${WORK_DIR}/out.off")
+separate_arguments(args UNIX_COMMAND "${ARGS}")
+list(TRANSFORM args REPLACE "@IN@" "${input}")
+list(TRANSFORM args REPLACE "@OUT@" "${output}")
+if(args AND NOT "${ARGS}" MATCHES "^--")   # a first argument that is a path replaces the output
+  list(POP_FRONT args output)
+endif()
+execute_process(COMMAND "${TOOL}" "${input}" "${output}" --quiet ${args}
+                RESULT_VARIABLE rc ERROR_VARIABLE err OUTPUT_VARIABLE out TIMEOUT 60)
+string(STRIP "${err}" err)
+message(STATUS "${FILE} ${ARGS}\n  -> exit ${rc}\n  stderr: ${err}")
+if(NOT rc STREQUAL "${EXIT}")
+  message(FATAL_ERROR "expected exit ${EXIT}, got ${rc}")
+endif()
+if(NOT err MATCHES "${PATTERN}")
+  message(FATAL_ERROR "stderr does not match: ${PATTERN}")
+endif()
+file(SHA256 "${CORPUS}/${FILE}" original)
+file(SHA256 "${input}" after)
+if(NOT original STREQUAL after)
+  message(FATAL_ERROR "the input was changed")
+endif()
+if(NOT rc EQUAL 0 AND EXISTS "${output}" AND NOT output STREQUAL input)
+  message(FATAL_ERROR "a failed run left ${output}")
+endif()

@@ -1,0 +1,320 @@
+// anisotropic_fairing tool: checked reading of OFF, OBJ and STL files, and the choice of reader
+// (mesh_file_check.h says why).
+
+#include "mesh_file_check.h"
+#include "text_tokens.h"
+
+#include <algorithm>
+#include <cstring>
+#include <fstream>
+#include <map>
+#include <sstream>
+
+namespace af_tool {
+
+std::string file_contents(const std::string& path)
+{
+  std::ifstream in(path, std::ios::binary);
+  if(!in) throw File_problem("cannot open " + path);
+  std::ostringstream s;
+  s << in.rdbuf();
+  if(in.bad()) throw File_problem("cannot read " + path);
+  return s.str();
+}
+
+void check_count(const std::string& path, const std::string& what, unsigned long long count, const std::string& unit,
+                 std::size_t bytes, std::size_t each)
+{
+  if(count > bytes / each)
+    throw File_problem(path + ": " + what + " " + std::to_string(count) + " " + unit + ", more than the " + std::to_string(bytes) +
+                       " bytes left in the file can hold (at least " + std::to_string(each) + " each)");
+}
+
+void add_face(Polygon_soup& soup, const std::vector<long long>& index, std::size_t vertices, const std::string& place,
+              const std::string& path)
+{
+  if(index.size() < 3)
+    throw File_problem(path + " " + place + ": a face of " + std::to_string(index.size()) + " vertices (at least 3 are needed)");
+  std::vector<std::size_t> face;
+  face.reserve(index.size());
+  for(long long i : index)
+  {
+    if(i < 0 || static_cast<unsigned long long>(i) >= vertices)
+      throw File_problem(path + " " + place + ": the face refers to vertex " + std::to_string(i) + ", but the file has " +
+                         std::to_string(vertices) + " vertices" +
+                         (vertices > 0 ? " (0.." + std::to_string(vertices - 1) + ")" : std::string()));
+    face.push_back(std::size_t(i));
+  }
+  soup.faces.push_back(std::move(face));
+  soup.face_place.push_back(place);
+}
+
+namespace {
+
+std::uint32_t big_endian_u32(const std::string& text, std::size_t at)
+{
+  const auto b = [&](std::size_t k) { return std::uint32_t(static_cast<unsigned char>(text[at + k])); };
+  return (b(0) << 24) | (b(1) << 16) | (b(2) << 8) | b(3);
+}
+
+// Geomview's binary OFF: big-endian 32-bit integers and floats after the "OFF BINARY" line
+Polygon_soup read_binary_off(const std::string& path, const std::string& text, std::size_t start, int dim, bool normals,
+                             bool colors, bool texcoords)
+{
+  Polygon_soup soup;
+  std::size_t at = start;
+  auto need = [&](std::size_t bytes, const std::string& what) {
+    if(bytes > text.size() - at) throw File_problem(path + ": the file ends inside " + what + " (byte " + std::to_string(at) + ")");
+  };
+  auto u32 = [&](const std::string& what) { need(4, what); const std::uint32_t v = big_endian_u32(text, at); at += 4; return v; };
+  auto f32 = [&](const std::string& what) {
+    const std::uint32_t bits = u32(what);
+    float f;
+    std::memcpy(&f, &bits, 4);
+    return double(f);
+  };
+  const std::uint32_t nv = u32("the counts"), nf = u32("the counts");
+  u32("the counts");
+  const std::size_t per_vertex = std::size_t(dim) + (normals ? 3 : 0) + (colors ? 4 : 0) + (texcoords ? 2 : 0);
+  check_count(path, "the header declares", nv, "vertices", text.size() - at, 4 * per_vertex);
+  check_count(path, "the header declares", nf, "faces", text.size() - at, 8);
+  soup.points.resize(nv);
+  for(std::uint32_t v = 0; v < nv; ++v)
+  {
+    const std::string what = "vertex " + std::to_string(v);
+    double c[4] = {0, 0, 0, 1};
+    for(int k = 0; k < dim; ++k) c[k] = f32(what);
+    for(std::size_t k = std::size_t(dim); k < per_vertex; ++k) f32(what);
+    for(int k = 0; k < 3; ++k)
+    {
+      const double x = dim == 4 ? c[k] / c[3] : c[k];
+      if(!std::isfinite(x)) throw File_problem(path + ": vertex " + std::to_string(v) + " has a coordinate that is not a finite number");
+      soup.points[v][std::size_t(k)] = x;
+    }
+  }
+  std::vector<long long> index;
+  for(std::uint32_t f = 0; f < nf; ++f)
+  {
+    const std::string what = "face " + std::to_string(f);
+    const std::uint32_t k = u32(what);
+    need(std::size_t(k) * 4, what);
+    index.resize(k);
+    for(std::uint32_t i = 0; i < k; ++i) index[i] = static_cast<std::int32_t>(u32(what));
+    const std::uint32_t ncolors = u32(what);
+    need(std::size_t(ncolors) * 4, what);
+    at += std::size_t(ncolors) * 4;
+    add_face(soup, index, nv, what, path);
+  }
+  return soup;
+}
+
+} // namespace
+
+Polygon_soup read_checked_off(const std::string& path, const std::string& text)
+{
+  Text_lines lines(text, path);
+  std::vector<std::string_view> t;
+  if(!lines.next(t)) throw File_problem(path + ": the file is empty");
+  // [ST][C][N][4][n]OFF: texture coordinates, colours, normals, homogeneous coordinates, dimension
+  std::string_view key = t[0];
+  const auto flag = [&](std::string_view prefix) {
+    if(key.substr(0, prefix.size()) != prefix) return false;
+    key.remove_prefix(prefix.size());
+    return true;
+  };
+  const bool texcoords = flag("ST"), colors = flag("C"), normals = flag("N"), homogeneous = flag("4"), any_dim = flag("n");
+  if(key != "OFF") lines.fail("the header '" + std::string(t[0]) + "' is not an OFF keyword ([ST][C][N][4][n]OFF)");
+  std::size_t used = 1;
+  int dim = homogeneous ? 4 : 3;
+  const auto next_number = [&](const char* what) {
+    if(used >= t.size())
+    {
+      if(!lines.next(t)) lines.fail(std::string("the file ends before ") + what);
+      used = 0;
+    }
+    return lines.integer(t[used++], what);
+  };
+  if(t.size() > 1 && t[1] == "BINARY")
+  {
+    if(any_dim) lines.fail("binary nOFF is not supported");
+    const std::size_t start = text.find('\n') + 1;
+    return read_binary_off(path, text, start, dim, normals, colors, texcoords);
+  }
+  if(any_dim)
+  {
+    const long long n = next_number("the dimension");
+    if(n != 3) lines.fail("an nOFF file of dimension " + std::to_string(n) + " (only 3 is a surface in space)");
+  }
+  const long long nv = next_number("the vertex count"), nf = next_number("the face count");
+  if(used < t.size()) next_number("the edge count");
+  if(used < t.size()) lines.fail("unexpected '" + std::string(t[used]) + "' after the counts");
+  if(nv < 0 || nf < 0) lines.fail("negative counts");
+  check_count(path, "the header declares", static_cast<unsigned long long>(nv), "vertices", text.size(), 2 * std::size_t(dim));
+  check_count(path, "the header declares", static_cast<unsigned long long>(nf), "faces", text.size(), 8);
+
+  Polygon_soup soup;
+  soup.points.resize(std::size_t(nv));
+  const std::size_t fixed = std::size_t(dim) + (normals ? 3 : 0) + (texcoords ? 2 : 0);
+  bool alpha = false;
+  for(long long v = 0; v < nv; ++v)
+  {
+    if(!lines.next(t)) lines.fail("the file ends after " + std::to_string(v) + " of the " + std::to_string(nv) + " vertices it declares");
+    if(t.size() < fixed) lines.fail("vertex " + std::to_string(v) + " has " + std::to_string(t.size()) + " numbers, fewer than the " +
+                                    std::to_string(fixed) + " its header's keyword needs");
+    double c[4] = {0, 0, 0, 1};
+    for(std::size_t k = 0; k < t.size(); ++k)
+    {
+      const double x = lines.real(t[k], "the number");
+      if(k < std::size_t(dim)) c[k] = x;
+    }
+    for(int k = 0; k < 3; ++k)
+    {
+      const double x = homogeneous ? c[k] / c[3] : c[k];
+      if(!std::isfinite(x)) lines.fail("vertex " + std::to_string(v) + " has a coordinate that is not a finite number");
+      soup.points[std::size_t(v)][std::size_t(k)] = x;
+    }
+    alpha = alpha || (colors && t.size() == fixed + 4);
+  }
+  if(alpha) soup.warnings.push_back("the alpha of the vertex colours of " + path + " is not kept (CGAL's OFF reader reads red, green and blue)");
+  std::vector<long long> index;
+  for(long long f = 0; f < nf; ++f)
+  {
+    if(!lines.next(t)) lines.fail("the file ends after " + std::to_string(f) + " of the " + std::to_string(nf) + " faces it declares");
+    const long long k = lines.integer(t[0], "the face's vertex count");
+    if(k < 0 || static_cast<unsigned long long>(k) + 1 > t.size())
+      lines.fail("face " + std::to_string(f) + " declares " + std::to_string(k) + " vertices but the line holds " +
+                 std::to_string(t.size() - 1) + " numbers after it");
+    index.resize(std::size_t(k));
+    for(long long i = 0; i < k; ++i) index[std::size_t(i)] = lines.integer(t[std::size_t(i) + 1], "the vertex index");
+    for(std::size_t i = std::size_t(k) + 1; i < t.size(); ++i) lines.real(t[i], "the face colour");
+    add_face(soup, index, std::size_t(nv), "line " + std::to_string(lines.line()), path);
+  }
+  if(lines.next(t))
+    lines.fail("more lines after the " + std::to_string(nf) + " faces the header declares (is its face count wrong?)");
+  return soup;
+}
+
+Polygon_soup read_checked_obj(const std::string& path, const std::string& text)
+{
+  Text_lines lines(text, path);
+  std::vector<std::string_view> t;
+  Polygon_soup soup;
+  std::vector<std::vector<long long> > faces;   // as written (1-based, or negative: relative)
+  std::vector<std::size_t> face_line;
+  std::vector<long long> index;
+  while(lines.next(t))
+  {
+    if(t[0] == "v")
+    {
+      if(t.size() < 4) lines.fail("a vertex with " + std::to_string(t.size() - 1) + " coordinates");
+      std::array<double, 3> p;
+      for(std::size_t k = 0; k < 3; ++k) p[k] = lines.real(t[k + 1], "the coordinate");
+      for(std::size_t k = 4; k < t.size(); ++k) lines.real(t[k], "the number");
+      soup.points.push_back(p);
+    }
+    else if(t[0] == "f")
+    {
+      index.clear();
+      for(std::size_t k = 1; k < t.size(); ++k)
+      {
+        const std::string_view corner = t[k].substr(0, t[k].find('/'));   // v, v/vt, v//vn, v/vt/vn
+        long long i = lines.integer(corner, "the vertex index");
+        if(i == 0) lines.fail("vertex index 0 (OBJ counts from 1)");
+        if(i < 0) i += static_cast<long long>(soup.points.size()) + 1;   // relative to the vertices read so far
+        if(i <= 0) lines.fail("the relative index " + std::string(corner) + " reaches before the first vertex");
+        index.push_back(i - 1);
+      }
+      faces.push_back(index);
+      face_line.push_back(lines.line());
+    }
+  }
+  for(std::size_t f = 0; f < faces.size(); ++f)
+    add_face(soup, faces[f], soup.points.size(), "line " + std::to_string(face_line[f]), path);
+  return soup;
+}
+
+Polygon_soup read_checked_stl(const std::string& path, const std::string& text)
+{
+  std::vector<std::array<double, 3> > corners;
+  std::vector<std::string> places;
+  std::uint32_t count = 0;
+  if(text.size() >= 84) std::memcpy(&count, text.data() + 80, 4);   // little-endian on the machines we build for
+  if(text.size() >= 84 && text.size() == 84 + 50 * std::size_t(count))
+  {
+    corners.reserve(3 * std::size_t(count));
+    for(std::uint32_t f = 0; f < count; ++f)
+    {
+      const char* base = text.data() + 84 + 50 * std::size_t(f) + 12;   // after the facet's normal
+      for(int c = 0; c < 3; ++c)
+      {
+        float x[3];
+        std::memcpy(x, base + 12 * c, 12);
+        if(!std::isfinite(x[0]) || !std::isfinite(x[1]) || !std::isfinite(x[2]))
+          throw File_problem(path + ": triangle " + std::to_string(f) + " has a coordinate that is not a finite number");
+        corners.push_back({double(x[0]), double(x[1]), double(x[2])});
+      }
+      places.push_back("triangle " + std::to_string(f));
+    }
+  }
+  else
+  {
+    Text_lines lines(text, path, false);
+    std::vector<std::string_view> t;
+    if(!lines.next(t) || t[0] != "solid")
+      throw File_problem(path + ": neither an ASCII STL file (starting with 'solid') nor a binary one (84 + 50 n bytes)");
+    std::size_t in_facet = 0;
+    while(lines.next(t))
+    {
+      if(t[0] == "vertex")
+      {
+        if(t.size() != 4) lines.fail("a vertex line needs 3 coordinates");
+        if(++in_facet > 3) lines.fail("a facet with more than 3 vertices");
+        corners.push_back({lines.real(t[1], "the coordinate"), lines.real(t[2], "the coordinate"), lines.real(t[3], "the coordinate")});
+      }
+      else if(t[0] == "endfacet")
+      {
+        if(in_facet != 3) lines.fail("a facet with " + std::to_string(in_facet) + " vertices");
+        places.push_back("line " + std::to_string(lines.line()));
+        in_facet = 0;
+      }
+      else if(t[0] != "facet" && t[0] != "outer" && t[0] != "endloop" && t[0] != "endsolid" && t[0] != "solid")
+        lines.fail("'" + std::string(t[0]) + "' is not an STL keyword");
+    }
+    if(in_facet != 0) throw File_problem(path + ": the file ends inside a facet");
+  }
+  // STL repeats each corner in every triangle: merge corners with equal coordinates into one vertex
+  Polygon_soup soup;
+  std::map<std::array<double, 3>, std::size_t> vertex_of;
+  std::vector<long long> index(3);
+  for(std::size_t f = 0; f < places.size(); ++f)
+  {
+    for(std::size_t c = 0; c < 3; ++c)
+    {
+      const auto inserted = vertex_of.emplace(corners[3 * f + c], soup.points.size());
+      if(inserted.second) soup.points.push_back(corners[3 * f + c]);
+      index[c] = static_cast<long long>(inserted.first->second);
+    }
+    add_face(soup, index, soup.points.size(), places[f], path);
+  }
+  soup.merged_points = corners.size() - soup.points.size();
+  return soup;
+}
+
+Polygon_soup read_checked_soup(const std::string& path, Mesh_format format)
+{
+  const std::string text = file_contents(path);
+  Polygon_soup soup;
+  switch(format)
+  {
+    case Mesh_format::OFF: soup = read_checked_off(path, text); break;
+    case Mesh_format::OBJ: soup = read_checked_obj(path, text); break;
+    case Mesh_format::PLY: soup = read_checked_ply(path, text); break;
+    case Mesh_format::STL: soup = read_checked_stl(path, text); break;
+  }
+  soup.path = path;
+  if(soup.faces.empty())
+    throw File_problem(path + ": " + std::to_string(soup.points.size()) + " vertices and no face: not a surface");
+  return soup;
+}
+
+} // namespace af_tool

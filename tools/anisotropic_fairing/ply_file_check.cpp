@@ -1,0 +1,242 @@
+// anisotropic_fairing tool: checked reading of PLY files (ASCII and binary), faces and triangle strips
+// (mesh_file_check.h says why).
+
+#include "mesh_file_check.h"
+#include "text_tokens.h"
+
+#include <algorithm>
+#include <cmath>
+#include <cstring>
+
+namespace af_tool {
+
+namespace {
+
+enum class Ply_encoding { ASCII, LITTLE, BIG };
+
+struct Ply_property
+{
+  std::string name;
+  int size = 0;             // bytes of the value (of each item for a list)
+  bool is_float = false, is_signed = false;
+  int count_size = 0;       // a list: bytes of its count; 0: a scalar
+  bool count_signed = false;
+};
+
+struct Ply_element
+{
+  std::string name;
+  unsigned long long count = 0;
+  std::vector<Ply_property> properties;
+};
+
+bool scalar_type(std::string_view t, int& size, bool& is_float, bool& is_signed)
+{
+  struct Type { const char* a; const char* b; int size; bool is_float, is_signed; };
+  static const Type types[] = { {"char", "int8", 1, false, true}, {"uchar", "uint8", 1, false, false},
+                                {"short", "int16", 2, false, true}, {"ushort", "uint16", 2, false, false},
+                                {"int", "int32", 4, false, true}, {"uint", "uint32", 4, false, false},
+                                {"float", "float32", 4, true, true}, {"double", "float64", 8, true, true} };
+  for(const Type& x : types)
+    if(t == x.a || t == x.b) { size = x.size; is_float = x.is_float; is_signed = x.is_signed; return true; }
+  return false;
+}
+
+// The values of the body, in order, from text or bytes, each read within the file's bounds.
+class Ply_values
+{
+public:
+  Ply_values(const std::string& path, const std::string& text, std::size_t start, Ply_encoding encoding)
+    : path_(path), text_(text), at_(start), encoding_(encoding), lines_(std::string_view(text).substr(start), path, false) {}
+
+  double value(int size, bool is_float, bool is_signed, const std::string& where)
+  {
+    if(encoding_ == Ply_encoding::ASCII)
+    {
+      if(used_ >= tokens_.size())
+      {
+        if(!lines_.next(tokens_)) fail("the file ends inside " + where);
+        used_ = 0;
+      }
+      const std::string_view t = tokens_[used_++];
+      return is_float ? lines_.real(t, where.c_str()) : double(lines_.integer(t, where.c_str()));
+    }
+    if(std::size_t(size) > text_.size() - at_) fail("the file ends inside " + where);
+    unsigned char b[8];
+    std::memcpy(b, text_.data() + at_, std::size_t(size));
+    at_ += std::size_t(size);
+    if(encoding_ == Ply_encoding::BIG) std::reverse(b, b + size);   // the machines we build for are little-endian
+    if(is_float)
+    {
+      double v;
+      if(size == 4) { float f; std::memcpy(&f, b, 4); v = f; }
+      else std::memcpy(&v, b, 8);
+      if(!std::isfinite(v)) fail(where + " is not a finite number");
+      return v;
+    }
+    unsigned long long u = 0;
+    for(int k = size - 1; k >= 0; --k) u = (u << 8) | b[k];
+    if(is_signed && size < 8 && (u >> (8 * size - 1)) != 0) return double(static_cast<long long>(u) - (1LL << (8 * size)));
+    return double(u);
+  }
+
+  // bytes (binary) or tokens (ASCII, 2 bytes each at least) left
+  std::size_t left() const { return encoding_ == Ply_encoding::ASCII ? (text_.size() - at_) / 2 + 1 : text_.size() - at_; }
+
+  // ASCII: whether tokens are left; binary: how many bytes
+  std::size_t rest()
+  {
+    if(encoding_ != Ply_encoding::ASCII) return text_.size() - at_;
+    return used_ < tokens_.size() || lines_.next(tokens_) ? 1 : 0;
+  }
+
+  [[noreturn]] void fail(const std::string& what) const { throw File_problem(path_ + ": " + what); }
+
+private:
+  const std::string& path_;
+  const std::string& text_;
+  std::size_t at_;
+  Ply_encoding encoding_;
+  Text_lines lines_;
+  std::vector<std::string_view> tokens_;
+  std::size_t used_ = 0;
+};
+
+} // namespace
+
+Polygon_soup read_checked_ply(const std::string& path, const std::string& text)
+{
+  // the header: "ply", "format ...", elements and their properties, "end_header"
+  Text_lines header(text, path, false);
+  std::vector<std::string_view> t;
+  if(!header.next(t) || t[0] != "ply") throw File_problem(path + ": not a PLY file (it does not start with 'ply')");
+  Ply_encoding encoding = Ply_encoding::ASCII;
+  bool format_seen = false;
+  std::vector<Ply_element> elements;
+  for(;;)
+  {
+    if(!header.next(t)) throw File_problem(path + ": the header has no 'end_header'");
+    if(t[0] == "end_header") break;
+    if(t[0] == "comment" || t[0] == "obj_info") continue;
+    if(t[0] == "format")
+    {
+      if(t.size() < 2) header.fail("'format' without an encoding");
+      if(t[1] == "ascii") encoding = Ply_encoding::ASCII;
+      else if(t[1] == "binary_little_endian") encoding = Ply_encoding::LITTLE;
+      else if(t[1] == "binary_big_endian") encoding = Ply_encoding::BIG;
+      else header.fail("unknown encoding '" + std::string(t[1]) + "'");
+      format_seen = true;
+    }
+    else if(t[0] == "element")
+    {
+      if(t.size() != 3) header.fail("'element' needs a name and a count");
+      const long long n = header.integer(t[2], "the element count");
+      if(n < 0) header.fail("a negative element count");
+      elements.push_back({std::string(t[1]), static_cast<unsigned long long>(n), {}});
+    }
+    else if(t[0] == "property")
+    {
+      if(elements.empty()) header.fail("a property before any element");
+      Ply_property p;
+      if(t.size() == 5 && t[1] == "list")
+      {
+        bool count_float = false;
+        if(!scalar_type(t[2], p.count_size, count_float, p.count_signed) || count_float)
+          header.fail("the count type '" + std::string(t[2]) + "' of a list is not an integer type");
+        if(!scalar_type(t[3], p.size, p.is_float, p.is_signed)) header.fail("unknown type '" + std::string(t[3]) + "'");
+        p.name = std::string(t[4]);
+      }
+      else if(t.size() == 3)
+      {
+        if(!scalar_type(t[1], p.size, p.is_float, p.is_signed)) header.fail("unknown type '" + std::string(t[1]) + "'");
+        p.name = std::string(t[2]);
+      }
+      else header.fail("a property needs a type and a name");
+      elements.back().properties.push_back(p);
+    }
+    else header.fail("'" + std::string(t[0]) + "' is not a PLY header keyword");
+  }
+  if(!format_seen) throw File_problem(path + ": the header has no 'format' line");
+
+  Polygon_soup soup;
+  std::size_t vertices = 0;
+  for(const Ply_element& e : elements)
+    if(e.name == "vertex") vertices = std::size_t(e.count);
+  Ply_values values(path, text, header.offset(), encoding);
+  std::vector<long long> index;
+  std::size_t strip_number = 0;
+  for(const Ply_element& e : elements)
+  {
+    std::size_t least = 0;   // the fewest bytes (or tokens) one element can take
+    for(const Ply_property& p : e.properties) least += std::size_t(encoding == Ply_encoding::ASCII ? 1 : (p.count_size ? p.count_size : p.size));
+    if(least == 0 && e.count > 0) throw File_problem(path + ": element '" + e.name + "' has " + std::to_string(e.count) + " items and no property");
+    check_count(path, "element '" + e.name + "' declares", e.count, "items", values.left(), least);
+    const bool is_vertex = e.name == "vertex", is_face = e.name == "face", is_strip = e.name == "tristrips";
+    int coordinate[3] = {-1, -1, -1};
+    int list = -1;
+    for(std::size_t k = 0; k < e.properties.size(); ++k)
+    {
+      const Ply_property& p = e.properties[k];
+      if(is_vertex && !p.count_size && p.name.size() == 1 && p.name[0] >= 'x' && p.name[0] <= 'z') coordinate[p.name[0] - 'x'] = int(k);
+      if((is_face || is_strip) && p.count_size && (p.name == "vertex_indices" || p.name == "vertex_index")) list = int(k);
+    }
+    if(is_vertex && (coordinate[0] < 0 || coordinate[1] < 0 || coordinate[2] < 0))
+      throw File_problem(path + ": the vertex element has no x, y and z");
+    if(is_vertex) soup.points.resize(std::size_t(e.count));
+    for(unsigned long long i = 0; i < e.count; ++i)
+    {
+      const std::string where = e.name + " " + std::to_string(i);
+      for(std::size_t k = 0; k < e.properties.size(); ++k)
+      {
+        const Ply_property& p = e.properties[k];
+        if(!p.count_size)
+        {
+          const double v = values.value(p.size, p.is_float, p.is_signed, where);
+          for(int c = 0; c < 3; ++c)
+            if(int(k) == coordinate[c]) soup.points[std::size_t(i)][std::size_t(c)] = v;
+          continue;
+        }
+        const double n = values.value(p.count_size, false, p.count_signed, where);
+        if(n < 0) values.fail(where + ": a list of " + std::to_string(static_cast<long long>(n)) + " items");
+        check_count(path, where + ": property '" + p.name + "' lists", static_cast<unsigned long long>(n), "values", values.left(),
+                    std::size_t(encoding == Ply_encoding::ASCII ? 1 : p.size));
+        if(int(k) == list) index.clear();
+        for(std::size_t j = 0; j < std::size_t(n); ++j)
+        {
+          const double v = values.value(p.size, p.is_float, p.is_signed, where);
+          if(int(k) == list) index.push_back(static_cast<long long>(v));
+        }
+      }
+      if(is_face && list >= 0) add_face(soup, index, vertices, where, path);
+      if(is_strip && list >= 0)
+      {
+        // a strip a b c d ... is the triangles (a b c), (c b d), ...; -1 starts a new strip; a triangle
+        // that repeats a vertex only turns the strip around
+        std::vector<long long> strip;
+        index.push_back(-1);
+        for(long long v : index)
+        {
+          if(v != -1) { strip.push_back(v); continue; }
+          for(std::size_t j = 2; j < strip.size(); ++j)
+          {
+            std::vector<long long> tri = (j % 2 == 0) ? std::vector<long long>{strip[j - 2], strip[j - 1], strip[j]}
+                                                      : std::vector<long long>{strip[j - 1], strip[j - 2], strip[j]};
+            if(tri[0] == tri[1] || tri[1] == tri[2] || tri[0] == tri[2]) continue;
+            add_face(soup, tri, vertices, "triangle " + std::to_string(j - 2) + " of strip " + std::to_string(strip_number), path);
+          }
+          strip.clear();
+          ++strip_number;
+        }
+        soup.ply_strips = true;
+      }
+    }
+  }
+  if(const std::size_t rest = values.rest())
+  {
+    if(encoding == Ply_encoding::ASCII) throw File_problem(path + ": data after the last element the header declares (is a count wrong?)");
+    soup.warnings.push_back(std::to_string(rest) + " bytes after the last element of " + path + " are ignored");
+  }
+  return soup;
+}
+
+} // namespace af_tool
