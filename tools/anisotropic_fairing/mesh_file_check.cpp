@@ -100,12 +100,35 @@ Polygon_soup read_binary_off(const std::string& path, const std::string& text, s
     need(std::size_t(k) * 4, what);
     index.resize(k);
     for(std::uint32_t i = 0; i < k; ++i) index[i] = static_cast<std::int32_t>(u32(what));
-    const std::uint32_t ncolors = u32(what);
-    need(std::size_t(ncolors) * 4, what);
-    at += std::size_t(ncolors) * 4;
+    if(u32(what) != 0) throw File_problem(path + ": " + what + " has a colour: binary OFF with colours is not supported");
     add_face(soup, index, nv, what, path);
   }
   return soup;
+}
+
+// An OFF colour: one colour-map index, or red, green, blue (and alpha) either as integers 0..255 or, if
+// one of them is written with a point or an exponent, as numbers in [0, 1]. CGAL 5.5 casts them to bytes
+// unchecked (510 or a negative index is undefined behaviour there), so anything else is refused.
+void check_off_color(const Text_lines& lines, const std::vector<std::string_view>& t, std::size_t first, const std::string& what)
+{
+  const std::size_t n = t.size() - first;
+  if(n == 0) return;
+  if(n != 1 && n != 3 && n != 4) lines.fail(what + " has a colour of " + std::to_string(n) + " numbers (1, 3 or 4 expected)");
+  bool fractions = false;
+  for(std::size_t k = first; k < t.size(); ++k) fractions = fractions || t[k].find_first_of(".eE") != std::string_view::npos;
+  for(std::size_t k = first; k < t.size(); ++k)
+  {
+    if(n > 1 && fractions)
+    {
+      const double x = lines.real(t[k], "the colour component");
+      if(x < 0 || x > 1) lines.fail(what + " has a colour component " + std::string(t[k]) + " outside [0, 1]");
+    }
+    else
+    {
+      const long long x = lines.integer(t[k], "the colour component");
+      if(x < 0 || x > 255) lines.fail(what + " has a colour component " + std::string(t[k]) + " outside 0..255");
+    }
+  }
 }
 
 } // namespace
@@ -116,6 +139,7 @@ Polygon_soup read_checked_off(const std::string& path, const std::string& text)
   std::vector<std::string_view> t;
   if(!lines.next(t)) throw File_problem(path + ": the file is empty");
   // [ST][C][N][4][n]OFF: texture coordinates, colours, normals, homogeneous coordinates, dimension
+  const std::string t0(t[0]);
   std::string_view key = t[0];
   const auto flag = [&](std::string_view prefix) {
     if(key.substr(0, prefix.size()) != prefix) return false;
@@ -136,7 +160,8 @@ Polygon_soup read_checked_off(const std::string& path, const std::string& text)
   };
   if(t.size() > 1 && t[1] == "BINARY")
   {
-    if(any_dim) lines.fail("binary nOFF is not supported");
+    // CGAL 5.5 casts binary colours to bytes unchecked and its count of their floats is not Geomview's
+    if(any_dim || colors) lines.fail("binary " + std::string(t[0]) + " is not supported (only binary OFF without colours)");
     const std::size_t start = text.find('\n') + 1;
     return read_binary_off(path, text, start, dim, normals, colors, texcoords);
   }
@@ -154,7 +179,7 @@ Polygon_soup read_checked_off(const std::string& path, const std::string& text)
 
   Polygon_soup soup;
   soup.points.resize(std::size_t(nv));
-  const std::size_t fixed = std::size_t(dim) + (normals ? 3 : 0) + (texcoords ? 2 : 0);
+  const std::size_t fixed = std::size_t(dim) * (normals ? 2 : 1) + (texcoords ? (homogeneous ? 3 : 2) : 0);
   bool alpha = false;
   for(long long v = 0; v < nv; ++v)
   {
@@ -162,10 +187,21 @@ Polygon_soup read_checked_off(const std::string& path, const std::string& text)
     if(t.size() < fixed) lines.fail("vertex " + std::to_string(v) + " has " + std::to_string(t.size()) + " numbers, fewer than the " +
                                     std::to_string(fixed) + " its header's keyword needs");
     double c[4] = {0, 0, 0, 1};
+    const std::size_t color_end = t.size() - (texcoords ? (homogeneous ? 3 : 2) : 0);
+    const std::size_t color_begin = std::size_t(dim) + (normals ? std::size_t(dim) : 0);
     for(std::size_t k = 0; k < t.size(); ++k)
+      if(!colors || k < color_begin || k >= color_end)
+      {
+        const double x = lines.real(t[k], "the number");
+        if(k < std::size_t(dim)) c[k] = x;
+      }
+    if(colors)
     {
-      const double x = lines.real(t[k], "the number");
-      if(k < std::size_t(dim)) c[k] = x;
+      if(color_end < color_begin) lines.fail("vertex " + std::to_string(v) + " has too few numbers for its header's keyword");
+      // CGAL 5.5 reads three colour numbers of a COFF vertex that has none (beyond its line)
+      if(color_end == color_begin) lines.fail("vertex " + std::to_string(v) + " has no colour, though the header's " + std::string(t0) + " says every vertex has one");
+      const std::vector<std::string_view> color(t.begin() + std::ptrdiff_t(color_begin), t.begin() + std::ptrdiff_t(color_end));
+      check_off_color(lines, color, 0, "vertex " + std::to_string(v));
     }
     for(int k = 0; k < 3; ++k)
     {
@@ -173,7 +209,7 @@ Polygon_soup read_checked_off(const std::string& path, const std::string& text)
       if(!std::isfinite(x)) lines.fail("vertex " + std::to_string(v) + " has a coordinate that is not a finite number");
       soup.points[std::size_t(v)][std::size_t(k)] = x;
     }
-    alpha = alpha || (colors && t.size() == fixed + 4);
+    alpha = alpha || (colors && color_end - color_begin == 4);
   }
   if(alpha) soup.warnings.push_back("the alpha of the vertex colours of " + path + " is not kept (CGAL's OFF reader reads red, green and blue)");
   std::vector<long long> index;
@@ -186,7 +222,9 @@ Polygon_soup read_checked_off(const std::string& path, const std::string& text)
                  std::to_string(t.size() - 1) + " numbers after it");
     index.resize(std::size_t(k));
     for(long long i = 0; i < k; ++i) index[std::size_t(i)] = lines.integer(t[std::size_t(i) + 1], "the vertex index");
-    for(std::size_t i = std::size_t(k) + 1; i < t.size(); ++i) lines.real(t[i], "the face colour");
+    if(colors) check_off_color(lines, t, std::size_t(k) + 1, "face " + std::to_string(f));
+    else
+      for(std::size_t i = std::size_t(k) + 1; i < t.size(); ++i) lines.real(t[i], "the number");
     add_face(soup, index, std::size_t(nv), "line " + std::to_string(lines.line()), path);
   }
   if(lines.next(t))
@@ -196,36 +234,49 @@ Polygon_soup read_checked_off(const std::string& path, const std::string& text)
 
 Polygon_soup read_checked_obj(const std::string& path, const std::string& text)
 {
-  Text_lines lines(text, path);
-  std::vector<std::string_view> t;
   Polygon_soup soup;
-  std::vector<std::vector<long long> > faces;   // as written (1-based, or negative: relative)
+  std::vector<std::vector<long long> > faces;   // 0-based, as CGAL's reader will compute them
   std::vector<std::size_t> face_line;
-  std::vector<long long> index;
-  while(lines.next(t))
+  std::vector<std::string_view> t;
+  std::istringstream in(text);
+  std::string raw;
+  std::size_t line = 0;
+  const auto fail = [&](const std::string& what) { throw File_problem(path + " line " + std::to_string(line) + ": " + what); };
+  while(std::getline(in, raw))
   {
-    if(t[0] == "v")
+    ++line;
+    std::istringstream words(raw);
+    std::string key;
+    if(!(words >> key)) continue;
+    if(key == "v")
     {
-      if(t.size() < 4) lines.fail("a vertex with " + std::to_string(t.size() - 1) + " coordinates");
+      const std::string_view content = std::string_view(raw).substr(0, raw.find('#'));
+      t.clear();
+      Text_lines::split(content, t);
+      if(t.size() < 4) fail("a vertex with " + std::to_string(t.size() - 1) + " coordinates");
+      Text_lines numbers(content, path);
       std::array<double, 3> p;
-      for(std::size_t k = 0; k < 3; ++k) p[k] = lines.real(t[k + 1], "the coordinate");
-      for(std::size_t k = 4; k < t.size(); ++k) lines.real(t[k], "the number");
+      for(std::size_t k = 0; k < 3; ++k)
+        try { p[k] = numbers.real(t[k + 1], "the coordinate"); }
+        catch(const File_problem&) { fail("the coordinate '" + std::string(t[k + 1]) + "' is not a finite number"); }
       soup.points.push_back(p);
     }
-    else if(t[0] == "f")
+    else if(key == "f")
     {
-      index.clear();
-      for(std::size_t k = 1; k < t.size(); ++k)
+      // the indices exactly as CGAL 5.5's reader takes them: an integer, then everything up to the next
+      // space skipped ("1/2/3", but also "1#comment"); below 1: relative to the vertices read so far
+      std::vector<long long> index;
+      int i;
+      while(words >> i)
       {
-        const std::string_view corner = t[k].substr(0, t[k].find('/'));   // v, v/vt, v//vn, v/vt/vn
-        long long i = lines.integer(corner, "the vertex index");
-        if(i == 0) lines.fail("vertex index 0 (OBJ counts from 1)");
-        if(i < 0) i += static_cast<long long>(soup.points.size()) + 1;   // relative to the vertices read so far
-        if(i <= 0) lines.fail("the relative index " + std::string(corner) + " reaches before the first vertex");
-        index.push_back(i - 1);
+        if(i == 0) fail("vertex index 0 (OBJ counts from 1; a relative index is negative)");
+        const long long v = i < 0 ? static_cast<long long>(soup.points.size()) + i : i - 1LL;
+        if(v < 0) fail("the relative index " + std::to_string(i) + " reaches before the first vertex");
+        index.push_back(v);
+        words.ignore(256, ' ');
       }
       faces.push_back(index);
-      face_line.push_back(lines.line());
+      face_line.push_back(line);
     }
   }
   for(std::size_t f = 0; f < faces.size(); ++f)
