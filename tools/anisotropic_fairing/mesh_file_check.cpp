@@ -74,7 +74,7 @@ Polygon_soup read_binary_off(const std::string& path, const std::string& text, s
     return double(f);
   };
   const std::uint32_t nv = u32("the counts"), nf = u32("the counts");
-  u32("the counts");
+  if(u32("the counts") > 1073741823u) throw File_problem(path + ": the edge count is out of range (0..2^30-1)");   // CGAL doubles it in an int
   const std::size_t per_vertex = std::size_t(dim) + (normals ? 3 : 0) + (colors ? 4 : 0) + (texcoords ? 2 : 0);
   check_count(path, "the header declares", nv, "vertices", text.size() - at, 4 * per_vertex);
   check_count(path, "the header declares", nf, "faces", text.size() - at, 8);
@@ -171,7 +171,10 @@ Polygon_soup read_checked_off(const std::string& path, const std::string& text)
     if(n != 3) lines.fail("an nOFF file of dimension " + std::to_string(n) + " (only 3 is a surface in space)");
   }
   const long long nv = next_number("the vertex count"), nf = next_number("the face count");
-  if(used < t.size()) next_number("the edge count");
+  // the edge count means nothing to a reader, but CGAL 5.5 reads it wherever it is (on the next line if
+  // need be, taking a coordinate for it) and doubles it in an int
+  const long long ne = next_number("the edge count");
+  if(ne < 0 || ne > 1073741823) lines.fail("the edge count " + std::to_string(ne) + " is out of range (0..2^30-1)");
   if(used < t.size()) lines.fail("unexpected '" + std::string(t[used]) + "' after the counts");
   if(nv < 0 || nf < 0) lines.fail("negative counts");
   check_count(path, "the header declares", static_cast<unsigned long long>(nv), "vertices", text.size(), 2 * std::size_t(dim));
