@@ -59,7 +59,13 @@ public:
         used_ = 0;
       }
       const std::string_view t = tokens_[used_++];
-      return is_float ? lines_.real(t, where.c_str()) : double(lines_.integer(t, where.c_str()));
+      if(is_float) return lines_.real(t, where.c_str());
+      const long long v = lines_.integer(t, where.c_str());
+      const long long low = is_signed ? -(1LL << (8 * size - 1)) : 0, high = is_signed ? (1LL << (8 * size - 1)) - 1 : (1LL << (8 * size)) - 1;
+      if(v < low || v > high)
+        fail(where + ": " + std::string(t) + " is outside the range of its " + std::to_string(8 * size) + "-bit " +
+             (is_signed ? "signed" : "unsigned") + " type");
+      return double(v);
     }
     if(std::size_t(size) > text_.size() - at_) fail("the file ends inside " + where);
     unsigned char b[8];
@@ -101,6 +107,51 @@ private:
   std::vector<std::string_view> tokens_;
   std::size_t used_ = 0;
 };
+
+// The properties CGAL 5.5's Surface_mesh reader interprets, it reads with fixed types, unchecked (a
+// uint8 x is a null pointer there): x, y, z both float or both double, and nx, ny, nz as they; red,
+// green, blue as uchar; face indices as int or uint. It also takes edge and halfedge elements as vertex
+// indices, unchecked: those are refused.
+void check_types_cgal_reads(const std::string& path, const std::vector<Ply_element>& elements)
+{
+  const auto fail = [&](const std::string& what) { throw File_problem(path + ": " + what); };
+  for(const Ply_element& e : elements)
+  {
+    if(e.name == "edge" || e.name == "halfedge") fail("element '" + e.name + "' is not supported (only vertex, face and tristrips)");
+    const auto find = [&](const char* name) -> const Ply_property* {
+      for(const Ply_property& p : e.properties)
+        if(p.name == name) return &p;
+      return nullptr;
+    };
+    const auto same_type = [&](const char* const* names, const Ply_property* like, const char* rule) {
+      for(int k = 0; k < 3; ++k)
+      {
+        const Ply_property* p = find(names[k]);
+        if(!p) return;
+        if(p->count_size || p->size != like->size || p->is_float != like->is_float)
+          fail("property '" + std::string(names[k]) + "' of element '" + e.name + "' has another type than " + rule);
+      }
+    };
+    static const char* const coordinates[3] = {"x", "y", "z"};
+    static const char* const normal[3] = {"nx", "ny", "nz"};
+    static const char* const color[3] = {"red", "green", "blue"};
+    static const Ply_property uchar_type = [] { Ply_property p; p.size = 1; return p; }();
+    if(e.name == "vertex")
+    {
+      const Ply_property* x = find("x");
+      if(x && (!x->is_float || x->count_size)) fail("the vertex coordinate x is not float or double");
+      if(x) same_type(coordinates, x, "x (float or double for all three)");
+      if(x && find("nx") && find("ny") && find("nz")) same_type(normal, x, "the coordinates");
+    }
+    if((e.name == "vertex" || e.name == "face") && find("red") && find("green") && find("blue"))
+      same_type(color, &uchar_type, "uchar (colours are bytes)");
+    if(e.name == "face")
+      for(const char* name : {"vertex_indices", "vertex_index"})
+        if(const Ply_property* p = find(name))
+          if(!p->count_size || p->is_float || p->size != 4)
+            fail("the face property '" + std::string(name) + "' is not a list of int or uint");
+  }
+}
 
 } // namespace
 
@@ -157,6 +208,7 @@ Polygon_soup read_checked_ply(const std::string& path, const std::string& text)
     else header.fail("'" + std::string(t[0]) + "' is not a PLY header keyword");
   }
   if(!format_seen) throw File_problem(path + ": the header has no 'format' line");
+  check_types_cgal_reads(path, elements);
 
   Polygon_soup soup;
   std::size_t vertices = 0;
