@@ -25,7 +25,7 @@ std::string file_contents(const std::string& path)
 void check_count(const std::string& path, const std::string& what, unsigned long long count, const std::string& unit,
                  std::size_t bytes, std::size_t each)
 {
-  if(count > bytes / each)
+  if(each > 0 && count > bytes / each)
     throw File_problem(path + ": " + what + " " + std::to_string(count) + " " + unit + ", more than the " + std::to_string(bytes) +
                        " bytes left in the file can hold (at least " + std::to_string(each) + " each)");
 }
@@ -216,6 +216,7 @@ Polygon_soup read_checked_off(const std::string& path, const std::string& text)
   }
   if(alpha) soup.warnings.push_back("the alpha of the vertex colours of " + path + " is not kept (CGAL's OFF reader reads red, green and blue)");
   std::vector<long long> index;
+  long long first_colored_face = -1;
   for(long long f = 0; f < nf; ++f)
   {
     if(!lines.next(t)) lines.fail("the file ends after " + std::to_string(f) + " of the " + std::to_string(nf) + " faces it declares");
@@ -225,7 +226,14 @@ Polygon_soup read_checked_off(const std::string& path, const std::string& text)
                  std::to_string(t.size() - 1) + " numbers after it");
     index.resize(std::size_t(k));
     for(long long i = 0; i < k; ++i) index[std::size_t(i)] = lines.integer(t[std::size_t(i) + 1], "the vertex index");
-    if(colors) check_off_color(lines, t, std::size_t(k) + 1, "face " + std::to_string(f));
+    if(colors)
+    {
+      check_off_color(lines, t, std::size_t(k) + 1, "face " + std::to_string(f));
+      // once a face has a colour, CGAL 5.5 reads one for every later face, beyond the line if it has none
+      if(t.size() > std::size_t(k) + 1 && first_colored_face < 0) first_colored_face = f;
+      if(t.size() == std::size_t(k) + 1 && first_colored_face >= 0)
+        lines.fail("face " + std::to_string(f) + " has no colour, though face " + std::to_string(first_colored_face) + " has one");
+    }
     else
       for(std::size_t i = std::size_t(k) + 1; i < t.size(); ++i) lines.real(t[i], "the number");
     add_face(soup, index, std::size_t(nv), "line " + std::to_string(lines.line()), path);
