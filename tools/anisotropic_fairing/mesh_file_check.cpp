@@ -138,6 +138,15 @@ Polygon_soup read_checked_off(const std::string& path, const std::string& text)
   Text_lines lines(text, path);
   std::vector<std::string_view> t;
   if(!lines.next(t)) throw File_problem(path + ": the file is empty");
+  // CGAL 5.5 reads a '#' on the header line neither as a comment nor as an error (it may then take
+  // binary counts from the text): the header line holds the keyword and the counts or BINARY only
+  {
+    std::size_t begin = 0;
+    for(std::size_t k = 1; k < lines.line(); ++k) begin = text.find('\n', begin) + 1;
+    const std::size_t end = text.find('\n', begin);
+    if(text.substr(begin, end == std::string::npos ? std::string::npos : end - begin).find('#') != std::string::npos)
+      lines.fail("a '#' on the header line (write comments on lines of their own)");
+  }
   // [ST][C][N][4][n]OFF: texture coordinates, colours, normals, homogeneous coordinates, dimension
   const std::string t0(t[0]);
   std::string_view key = t[0];
