@@ -93,7 +93,10 @@ const char* const usage_text =
 "Fairs the triangle mesh INPUT by geometric diffusion with Loop-subdivision finite elements\n"
 "(Bajaj & Xu 2003; isotropic tensor: mean-curvature flow, or the anisotropic, feature-preserving one)\n"
 "and writes the result to OUTPUT.\n"
-"INPUT and OUTPUT are OFF, OBJ or PLY files (by extension; the formats may differ). The output keeps\n"
+"INPUT and OUTPUT are OFF, OBJ or PLY files (by extension; the formats may differ); INPUT may also be\n"
+"STL (coincident corners are merged into vertices) or a PLY of triangle strips. Every file is checked\n"
+"before it is read: a bad count, index, number or a face set that is not an oriented 2-manifold is\n"
+"refused with the line or element named (see --repair). The output keeps\n"
 "the vertex order, full double precision and every vertex property of the input that its format can\n"
 "hold (PLY: normals, colours, numeric properties; OFF: colours, texture coordinates, face colours;\n"
 "OBJ: normals, texture coordinates; a warning names the dropped ones).\n"
@@ -193,7 +196,8 @@ const char* const usage_text =
 "total_seconds (the fairing call), wall_seconds (the whole program). Unknown values are null.\n"
 "\n"
 "exit status: 0 success; 1 failure (unreadable input, a mesh that is not a 2-manifold triangle mesh,\n"
-"an attribute the input does not have, fairing failure, unwritable output or report); 2 usage error.\n"
+"an attribute the input does not have, fairing failure, unwritable output or report); 2 usage error\n"
+"(including OUTPUT or --report naming the INPUT or each other).\n"
 "On failure one line starting with\n"
 "\"anisotropic_fairing: \" is printed on stderr and OUTPUT is not created (an existing one is left as is).\n";
 
