@@ -183,6 +183,8 @@ Polygon_soup read_checked_ply(const std::string& path, const std::string& text)
       if(t.size() != 3) header.fail("'element' needs a name and a count");
       const long long n = header.integer(t[2], "the element count");
       if(n < 0) header.fail("a negative element count");
+      for(const Ply_element& e : elements)   // CGAL 5.5 mixes the properties of two elements of one name
+        if(e.name == t[1]) header.fail("element '" + e.name + "' is declared twice");
       elements.push_back({std::string(t[1]), static_cast<unsigned long long>(n), {}});
     }
     else if(t[0] == "property")
