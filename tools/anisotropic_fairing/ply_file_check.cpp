@@ -171,7 +171,9 @@ Polygon_soup read_checked_ply(const std::string& path, const std::string& text)
     if(t[0] == "comment" || t[0] == "obj_info") continue;
     if(t[0] == "format")
     {
-      if(t.size() < 2) header.fail("'format' without an encoding");
+      // one format line, "format <encoding> 1.0": CGAL 5.5 and this check must agree on the encoding
+      if(format_seen) header.fail("a second 'format' line");
+      if(t.size() != 3 || t[2] != "1.0") header.fail("the format line is not 'format <encoding> 1.0'");
       if(t[1] == "ascii") encoding = Ply_encoding::ASCII;
       else if(t[1] == "binary_little_endian") encoding = Ply_encoding::LITTLE;
       else if(t[1] == "binary_big_endian") encoding = Ply_encoding::BIG;
