@@ -10,7 +10,8 @@
 // normals, over the original's mean edge length (for the denoising pairs it is measured the same way).
 //
 // usage: bench_defaults [DATA_DIR=<repo>/../shared/data] [CASE_SUBSTRING] [PARTS=dsn]
-//   PARTS: d = default run, s = sweeps (ours and smooth_shape), n = noise-free default runs
+//   PARTS: d = default run, s = sweeps (ours and smooth_shape), n = noise-free default runs, u = the automatic
+//          run with the uniform tensor (diffusion_tensor(Uniform_diffusion_tensor()) alone), printed per case
 //   case names: the pair directories (Fandisk0.3, ...), "<model> gauss0.2", "<model> gauss0.5", "<model> quant10", "<model> clean"
 
 #include "our_sweeps.h"
@@ -29,9 +30,9 @@ int main(int argc, char** argv)
   const std::string dir = argc > 1 && argv[1][0] ? argv[1] : std::string(AF_SOURCE_DIR) + "/../shared/data";
   const std::string only = argc > 2 ? argv[2] : "";
   const std::string parts = argc > 3 && argv[3][0] ? argv[3] : "dsn";
-  if(parts.find_first_not_of("dsn") != std::string::npos) { std::fprintf(stderr, "PARTS: letters of d, s, n\n"); return 1; }
+  if(parts.find_first_not_of("dsnu") != std::string::npos) { std::fprintf(stderr, "PARTS: letters of d, s, n, u\n"); return 1; }
   const bool part_d = parts.find('d') != std::string::npos, part_s = parts.find('s') != std::string::npos,
-             part_n = parts.find('n') != std::string::npos;
+             part_n = parts.find('n') != std::string::npos, part_u = parts.find('u') != std::string::npos;
   CGAL::Real_timer wall;
   wall.start();
 
@@ -53,7 +54,7 @@ int main(int argc, char** argv)
     Sweeps s;
   };
   std::vector<Row> rows;
-  if(part_d || part_s)
+  if(part_d || part_s || part_u)
     for(Case& c : cases)
     {
       if(!only.empty() && c.name.find(only) == std::string::npos) continue;
@@ -84,6 +85,13 @@ int main(int argc, char** argv)
         r.d.result = Mesh();
         std::printf("default: %.2f deg, %s, %s, %zu steps, %.2f s, folded edges %s\n", r.d.error, r.d.status.c_str(),
                     r.d.stop.c_str(), r.d.steps, r.d.seconds, folded_str(r.noisy_folded, r.d.folded).c_str());
+        std::fflush(stdout);
+      }
+      if(part_u)
+      {
+        Default_run u = default_run(c.noisy, true);
+        std::printf("uniform: %.2f deg, %s, %s, %zu steps, %.2f s, folded edges %s\n", normal_error(u.result, reference),
+                    u.status.c_str(), u.stop.c_str(), u.steps, u.seconds, folded_str(r.noisy_folded, u.folded).c_str());
         std::fflush(stdout);
       }
       if(part_s)

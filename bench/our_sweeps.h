@@ -36,8 +36,9 @@ struct Default_run
   Mesh result;
 };
 
-// The library's default: no named parameters, the mesh is overwritten with the limit positions.
-Default_run default_run(const Mesh& input)
+// The library's default: no named parameters, the mesh is overwritten with the limit positions; with
+// `uniform`, the automatic parameters with the uniform tensor (diffusion_tensor only).
+Default_run default_run(const Mesh& input, bool uniform = false)
 {
   Default_run d;
   d.run = true;
@@ -46,7 +47,8 @@ Default_run default_run(const Mesh& input)
   timer.start();
   try
   {
-    const AF::Fairing_report r = AF::anisotropic_fairing(d.result);
+    const AF::Fairing_report r = uniform ? AF::anisotropic_fairing(d.result, AF::parameters::diffusion_tensor(AF::Uniform_diffusion_tensor()))
+                                         : AF::anisotropic_fairing(d.result);
     d.status = AF::to_string(r.status);
     d.stop = AF::to_string(r.stop_reason);
     d.steps = r.steps.size();

@@ -133,12 +133,14 @@ const char* const usage_text =
 "  --element loop|linear     Loop limit-surface elements (default) or linear (P1) elements\n"
 "  --output limit|control    write the points of the faired limit surface (default) or the faired\n"
 "                            control points (the mesh whose Loop limit surface is the faired surface)\n"
-"  --tensor isotropic|anisotropic   the diffusion tensor: isotropic (mean-curvature flow; the default\n"
-"                            with a time step) or anisotropic (curvature-driven, feature-preserving:\n"
+"  --tensor isotropic|anisotropic|uniform   the diffusion tensor: isotropic (mean-curvature flow; the\n"
+"                            default with a time step), anisotropic (curvature-driven, feature-preserving:\n"
 "                            Anisotropic_diffusion_tensor; the default with automatic parameters, its\n"
 "                            threshold and prefilter then chosen from the mesh unless given, and the\n"
 "                            isotropic result kept instead when its normals vary clearly less at the\n"
-"                            noise level: the report's tensor and choices say which)\n"
+"                            noise level: the report's tensor and choices say which) or uniform (the\n"
+"                            uniform Laplacian's weights, Uniform_diffusion_tensor: for noisy scans with a\n"
+"                            graded triangulation; it rounds creases like the isotropic tensor)\n"
 "  --lambda L                the anisotropic tensor's feature threshold, a curvature in units of 1/l\n"
 "                            (default 2): principal curvatures above it are diffused less\n"
 "  --epsilon E               the anisotropic tensor reads curvature on the surface after an isotropic\n"
@@ -250,7 +252,7 @@ struct Options
   AF::Linear_solver solver = AF::Linear_solver::AUTOMATIC;
   AF::Boundary_handling boundary = AF::Boundary_handling::HOLD_BOUNDARY_CURVE;
   int quadrature_degree = 8;
-  bool anisotropic = false, has_tensor = false, has_lambda = false, has_epsilon = false;
+  bool anisotropic = false, uniform = false, has_tensor = false, has_lambda = false, has_epsilon = false;
   bool normal_motion_only = true, has_tangential_motion = false;   // --tangential-motion remove|keep
   double lambda = 2.0, epsilon = 1e-3;
   std::vector<std::string> attributes;   // the names given to --attributes, in their order
@@ -450,9 +452,10 @@ void parse_arguments(int argc, char** argv, Options& o)
       {
         const std::string v = next();
         o.has_tensor = true;
-        if(v == "anisotropic") o.anisotropic = true;
-        else if(v == "isotropic") o.anisotropic = false;
-        else usage_error("--tensor expects isotropic or anisotropic, not '" + v + "'");
+        o.anisotropic = v == "anisotropic";
+        o.uniform = v == "uniform";
+        if(v != "anisotropic" && v != "isotropic" && v != "uniform")
+          usage_error("--tensor expects isotropic, anisotropic or uniform, not '" + v + "'");
       }
       else if(arg == "--solver")
       {
@@ -1289,7 +1292,7 @@ std::string report_json(const Options& o, const Run_record& r, double wall_secon
   // the tensor the run used: with automatic parameters the package keeps the anisotropic or the
   // isotropic result (selected_tensor)
   const bool isotropic_kept = ran && f.selected_tensor == "isotropic";
-  kv("tensor", json_string(o.anisotropic && !isotropic_kept ? "anisotropic" : "isotropic"));
+  kv("tensor", json_string(o.uniform ? "uniform" : o.anisotropic && !isotropic_kept ? "anisotropic" : "isotropic"));
   // the values the run used (chosen from the mesh when automatic), in units of l, l^2 and 1/length
   const bool lambda_known = o.anisotropic && !isotropic_kept && (!automatic_tensor(o) || ran);
   kv("lambda", lambda_known ? json_number(automatic_tensor(o) ? f.feature_threshold * f.scale : o.lambda) : "null");
@@ -1479,6 +1482,7 @@ int run(const Options& o, Run_record& r)
     AF::Anisotropic_diffusion_tensor tensor(o.lambda, true, o.epsilon, o.normal_motion_only);
     if(automatic_tensor(o)) tensor = AF::Anisotropic_diffusion_tensor::automatic();
     r.report = o.anisotropic ? with_time_step(base.diffusion_tensor(tensor), o, fair)
+               : o.uniform   ? with_time_step(base.diffusion_tensor(AF::Uniform_diffusion_tensor()), o, fair)
                              : with_time_step(base.diffusion_tensor(AF::Isotropic_diffusion_tensor()), o, fair);
   }
   catch(const AF::Input_error& e)

@@ -3,12 +3,15 @@
 // trace(X^T L X) = 2 Area for D = I in any dimension kappa (loop-fem.md section 11d), the same M as
 // the mass-only assembly; and the linear (P1) element against the closed forms of Clarenz et al.:
 // consistent mass area/12 (1 + delta_ij) and cotangent stiffness, computed here independently.
+// The uniform tensor: with P1 the graph Laplacian (valence, -1 per edge) over sqrt(3), with Loop a
+// stiffness that does not depend on the embedding (the same for a perturbed copy), L 1 = 0.
 
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/Surface_mesh.h>
 #include <CGAL/boost/graph/IO/polygon_mesh_io.h>
 
 #include <CGAL/Anisotropic_fairing/Isotropic_diffusion_tensor.h>
+#include <CGAL/Anisotropic_fairing/Uniform_diffusion_tensor.h>
 #include <CGAL/Anisotropic_fairing/internal/Fem_assembly.h>
 #include <CGAL/Anisotropic_fairing/internal/Indexed_mesh.h>
 #include <CGAL/Anisotropic_fairing/internal/Linear_element_cache.h>
@@ -116,6 +119,55 @@ void check_linear_element(const Mesh& mesh, const std::string& name)
   AF_CHECK(lerr < 1e-13, "P1 stiffness = cotangent Laplacian, " + name);
 }
 
+// The uniform tensor's stiffness: P1 against the graph Laplacian / sqrt(3) (each edge: -1/(2 sqrt 3) from
+// each of its two faces, the cotangent weight of 60 degrees), Loop the same for two embeddings of one mesh.
+void check_uniform_tensor(const Mesh& mesh, const std::string& name)
+{
+  AFI::Indexed_mesh<Mesh> im(mesh);
+  const AFI::Control_matrix X = im.read_points(mesh.points());
+  AFI::Control_matrix Y = X;   // another embedding: perturbed by a third of the bounding box's size
+  std::mt19937 rng(11);
+  std::uniform_real_distribution<double> u(-1, 1);
+  const double size = (X.colwise().maxCoeff() - X.colwise().minCoeff()).norm();
+  for(Eigen::Index i = 0; i < Y.rows(); ++i)
+    for(int c = 0; c < 3; ++c) Y(i, c) += 0.01 * size * u(rng);
+  const Eigen::Index n = Eigen::Index(im.number_of_vertices());
+  std::vector<double> mv, lv;
+  {
+    AFI::Linear_element_cache cache(im.topology());
+    AFI::Fem_assembler<AFI::Linear_element_cache> as(cache, im.number_of_vertices());
+    as.assemble(X, 3, AF::Uniform_diffusion_tensor(), mv, lv);
+    const Eigen::MatrixXd L = Eigen::MatrixXd(with_values(as.pattern(), lv));
+    Eigen::MatrixXd Lref = Eigen::MatrixXd::Zero(n, n);
+    for(std::size_t f = 0; f < im.number_of_faces(); ++f)
+      for(int a = 0; a < 3; ++a)
+      {
+        const int i = im.topology().face(f)[a], j = im.topology().face(f)[(a + 1) % 3];
+        const double w = 0.5 / std::sqrt(3.0);
+        Lref(i, j) -= w; Lref(j, i) -= w; Lref(i, i) += w; Lref(j, j) += w;
+      }
+    const double err = (L - Lref).cwiseAbs().maxCoeff() / Lref.cwiseAbs().maxCoeff();
+    std::printf("%s, P1, uniform tensor: max relative |L - graph Laplacian / sqrt 3| %.3g\n", name.c_str(), err);
+    AF_CHECK(err < 1e-13, "P1 uniform stiffness = graph Laplacian / sqrt(3), " + name);
+  }
+  AFI::Patch_cache cache(im.topology());
+  cache.prepare_quadrature(AFI::Quadrature_spec());
+  AFI::Fem_assembler<AFI::Patch_cache> as(cache, im.number_of_vertices());
+  std::vector<double> lx, ly;
+  as.assemble(X, 3, AF::Uniform_diffusion_tensor(), mv, lx);
+  as.assemble(Y, 3, AF::Uniform_diffusion_tensor(), mv, ly);
+  const Eigen::SparseMatrix<double> Lx = with_values(as.pattern(), lx), Ly = with_values(as.pattern(), ly);
+  const double scale = Eigen::MatrixXd(Lx).cwiseAbs().maxCoeff();
+  const double err = Eigen::MatrixXd(Lx - Ly).cwiseAbs().maxCoeff() / scale;
+  const Eigen::VectorXd L1 = Lx * Eigen::VectorXd::Ones(n);
+  const double asym = Eigen::MatrixXd(Lx - Eigen::SparseMatrix<double>(Lx.transpose())).cwiseAbs().maxCoeff() / scale;
+  std::printf("%s, Loop, uniform tensor: max relative |L(X) - L(perturbed X)| %.3g, |L 1| %.3g, asymmetry %.3g\n", name.c_str(), err,
+              L1.cwiseAbs().maxCoeff() / scale, asym);
+  AF_CHECK(err < 1e-13, "Loop uniform stiffness does not depend on the embedding, " + name);
+  AF_CHECK(L1.cwiseAbs().maxCoeff() < 1e-13 * scale, "Loop uniform stiffness: L 1 = 0, " + name);
+  AF_CHECK(asym < 1e-15, "Loop uniform stiffness is symmetric, " + name);
+}
+
 int main(int argc, char** argv)
 {
   const std::string data = argc > 1 ? argv[1] : "data";
@@ -164,5 +216,7 @@ int main(int argc, char** argv)
   }
   check_linear_element(bumpy, "bumpy");
   check_linear_element(mixed, "perturbed valence 3-9 mesh");
+  check_uniform_tensor(bumpy, "bumpy");
+  check_uniform_tensor(mixed, "perturbed valence 3-9 mesh");
   return AF_test::report();
 }

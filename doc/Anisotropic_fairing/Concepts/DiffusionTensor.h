@@ -34,6 +34,7 @@ tangentially too, which only reparametrises the surface in the continuum but can
 (see `CGAL::Anisotropic_fairing::Anisotropic_diffusion_tensor`).
 
 \cgalHasModel `CGAL::Anisotropic_fairing::Isotropic_diffusion_tensor`
+\cgalHasModel `CGAL::Anisotropic_fairing::Uniform_diffusion_tensor`
 \cgalHasModel `CGAL::Anisotropic_fairing::Anisotropic_diffusion_tensor`
 */
 class DiffusionTensor

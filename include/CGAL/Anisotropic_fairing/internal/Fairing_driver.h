@@ -12,6 +12,7 @@
 #include <CGAL/Anisotropic_fairing/Fairing_settings.h>
 #include <CGAL/Anisotropic_fairing/Input_error.h>
 #include <CGAL/Anisotropic_fairing/Isotropic_diffusion_tensor.h>
+#include <CGAL/Anisotropic_fairing/Uniform_diffusion_tensor.h>
 #include <CGAL/Anisotropic_fairing/Vector_attribute_traits.h>
 #include <CGAL/Anisotropic_fairing/named_function_parameters.h>
 #include <CGAL/Anisotropic_fairing/Anisotropic_diffusion_tensor.h>
@@ -105,9 +106,11 @@ Fairing_report run_stepper(const Cache& cache, const Locality_ordering& ordering
                            double& limit_weight)
 {
   const Stopwatch clock;
-  // with automatic parameters, the isotropic flow's time step follows the mesh's density (Local_time_scale.h)
+  // with automatic parameters, the isotropic and the uniform flow's time step follows the mesh's density
+  // (Local_time_scale.h)
   Stepper_settings settings = s;
-  settings.local_time_scale = s.local_time_scale && std::is_same<Tensor, Isotropic_diffusion_tensor>::value;
+  settings.local_time_scale = s.local_time_scale && (std::is_same<Tensor, Isotropic_diffusion_tensor>::value ||
+                                                     std::is_same<Tensor, Uniform_diffusion_tensor>::value);
   Time_stepper<Cache> stepper(cache, std::size_t(X.rows()), constrained, ordering.layer, components, component_edge, mean_edge);
   const Tangential_motion_filter filter(ordering.layer);
   const bool normal_motion = wants_normal_motion(tensor, 0) && mode != Attribute_mode::ATTRIBUTES_ONLY;
@@ -293,6 +296,8 @@ Fairing_report fair(TriangleMesh& tm, VertexPointMap vpm, AttributeMap attribute
     }
     if(mode != Attribute_mode::ATTRIBUTES_ONLY && (tensor_chosen || std::is_same<decltype(tensor), Isotropic_diffusion_tensor>::value))
       choices += "; the isotropic flow's time step follows the mesh's density (h: the edge length around each vertex)";
+    else if(mode != Attribute_mode::ATTRIBUTES_ONLY && std::is_same<decltype(tensor), Uniform_diffusion_tensor>::value)
+      choices += "; the uniform flow's time step follows the mesh's density (h: the edge length around each vertex)";
   }
 
   Fairing_report report;

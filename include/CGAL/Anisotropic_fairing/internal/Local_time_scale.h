@@ -1,7 +1,7 @@
 // Copyright (c) 2026 Anisotropic_fairing developers.
 // SPDX-License-Identifier: GPL-3.0-or-later
 //
-// A time step that follows the mesh's density, for the automatic isotropic run. A graded mesh is fine
+// A time step that follows the mesh's density, for the automatic isotropic and uniform runs. A graded mesh is fine
 // where its surface has detail, and one global time step smooths over one distance everywhere: the
 // small ears and nostrils of a graded scan lose their shape while the coarse parts are still noisy
 // (camel head at 0.2 h of noise: the smallest fifth of the faces went from 12.4 to 23.8 degrees of normal
