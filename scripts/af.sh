@@ -86,7 +86,7 @@ cmd_test() {
 # test that made it: -fno-sanitize-recover, halt_on_error), optimised (-O1) so that it stays fast, with
 # line tables only (-g1: stack traces name the lines, at a fraction of full debug information's cost).
 # `input`: only the program and the tests that read files or drive the program, the part that meets
-# hostile input; the whole suite, sanitized, takes about 45 minutes on 2 cores (a 33-minute build),
+# hostile input; the whole suite, sanitized, takes about 55 minutes on 2 cores (a 33-minute build),
 # too long for CI's budget.
 cmd_sanitize() {
   local scope="${1:-all}" targets=() tests=()
