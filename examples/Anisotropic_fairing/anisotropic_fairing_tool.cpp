@@ -137,8 +137,8 @@ const char* const usage_text =
 "                            default with a time step), anisotropic (curvature-driven, feature-preserving:\n"
 "                            Anisotropic_diffusion_tensor; the default with automatic parameters, its\n"
 "                            threshold and prefilter then chosen from the mesh unless given, and the\n"
-"                            isotropic result kept instead when its normals vary clearly less at the\n"
-"                            noise level: the report's tensor and choices say which) or uniform (the\n"
+"                            isotropic (or uniform) result kept instead when its normals vary clearly\n"
+"                            less at the noise level: the report's tensor and choices say which) or uniform (the\n"
 "                            uniform Laplacian's weights, Uniform_diffusion_tensor: for noisy scans with a\n"
 "                            graded triangulation; it rounds creases like the isotropic tensor)\n"
 "  --lambda L                the anisotropic tensor's feature threshold, a curvature in units of 1/l\n"
@@ -1289,10 +1289,11 @@ std::string report_json(const Options& o, const Run_record& r, double wall_secon
   kv("faces", r.mesh_read ? json_count(r.faces) : "null");
   kv("element", json_string(element_name(o.element)));
   kv("output_positions", json_string(output_name(o.output_positions)));
-  // the tensor the run used: with automatic parameters the package keeps the anisotropic or the
-  // isotropic result (selected_tensor)
-  const bool isotropic_kept = ran && f.selected_tensor == "isotropic";
-  kv("tensor", json_string(o.uniform ? "uniform" : o.anisotropic && !isotropic_kept ? "anisotropic" : "isotropic"));
+  // the tensor the run used: with automatic parameters the package keeps the anisotropic, the
+  // isotropic or the uniform result (selected_tensor)
+  const bool isotropic_kept = ran && (f.selected_tensor == "isotropic" || f.selected_tensor == "uniform");
+  kv("tensor", json_string(o.uniform || (ran && f.selected_tensor == "uniform") ? "uniform"
+                           : o.anisotropic && !isotropic_kept ? "anisotropic" : "isotropic"));
   // the values the run used (chosen from the mesh when automatic), in units of l, l^2 and 1/length
   const bool lambda_known = o.anisotropic && !isotropic_kept && (!automatic_tensor(o) || ran);
   kv("lambda", lambda_known ? json_number(automatic_tensor(o) ? f.feature_threshold * f.scale : o.lambda) : "null");

@@ -133,7 +133,7 @@ struct Fairing_report
   double feature_threshold = 0;   ///< the anisotropic tensor's threshold \f$\lambda\f$ used, model units (1/length); 0 for the isotropic tensor
   double prefilter_time = 0;      ///< the anisotropic tensor's prefilter time \f$\varepsilon\f$ used, model units; 0 without prefilter
   std::string choices;            ///< with automatic parameters: what was chosen and why, in one sentence
-  std::string selected_tensor;    ///< with automatic parameters and no tensor given: "anisotropic" or "isotropic", the result kept (empty otherwise)
+  std::string selected_tensor;    ///< with automatic parameters and no tensor given: "anisotropic", "isotropic" or "uniform", the result kept (empty otherwise)
   double setup_seconds = 0;       ///< set-up: private numbering, element (patch categories, stencils), sparsity patterns
   double total_seconds = 0;       ///< the whole call
 

@@ -128,7 +128,8 @@ Fairing_report run_stepper(const Cache& cache, const Locality_ordering& ordering
 
 /// Runs the isotropic flow too (`run(tensor, Y)` runs from the input and writes Y) and keeps, in X and
 /// `report`, whichever result's normals vary less at the noise level (Tensor_selection.h), or the one
-/// that succeeded; says which in `choices`. (The user's callback sees both runs.)
+/// that succeeded; when the isotropic one is kept, the uniform flow's result replaces it if its normals
+/// vary less still. Says which in `choices`. (The user's callback sees every run.)
 template <typename Run>
 void select_smoother(Run& run, const Ghost_layer& layer, Control_matrix& X, Fairing_report& report, std::string& choices)
 {
@@ -148,8 +149,23 @@ void select_smoother(Run& run, const Ghost_layer& layer, Control_matrix& X, Fair
   std::snprintf(text, sizeof text, "; kept the %s result (total variation of the normals %.4g, %.4g for the other tensor's)",
                 keep_isotropic ? "isotropic" : "anisotropic", keep_isotropic ? vi : va, keep_isotropic ? va : vi);
   choices += text;
-  if(keep_isotropic) { X.swap(Y); report = isotropic; }
-  report.selected_tensor = keep_isotropic ? "isotropic" : "anisotropic";
+  if(!keep_isotropic) return;
+  X.swap(Y);
+  report = isotropic;
+  report.selected_tensor = "isotropic";
+  if(isotropic.stop_reason != Stop_reason::NOISE_LEVEL) return;
+  Fairing_report uniform = run(Uniform_diffusion_tensor(), Y);
+  const bool uniform_at_noise_level = uniform.succeeded() && uniform.stop_reason == Stop_reason::NOISE_LEVEL;
+  const double vu = uniform_at_noise_level ? normal_variation(*layer.topology, layer.real_faces, Y) : 0.0;
+  const bool keep_uniform = uniform_at_noise_level && vu < vi;
+  if(uniform_at_noise_level)
+    std::snprintf(text, sizeof text, "; then the %s flow's among the isotropic results (total variation of the uniform flow's normals %.4g)",
+                  keep_uniform ? "uniform" : "cotangent", vu);
+  choices += uniform_at_noise_level ? text : "; the uniform flow did not end at the noise level: kept the cotangent one";
+  if(!keep_uniform) return;
+  X.swap(Y);
+  report = uniform;
+  report.selected_tensor = "uniform";
 }
 
 template <typename TriangleMesh, typename VertexPointMap, typename AttributeMap, typename NamedParameters>

@@ -9,7 +9,10 @@
 // result wins, having spent its displacement on noise rather than on rounding; on organic scans whose
 // curvature is everywhere as strong as the noise's, the isotropic one can. The anisotropic result is
 // kept unless the isotropic one is clearly smoother (by `isotropic_margin`): a difference of a few
-// percent is within what the noise itself changes from one sample to the next.
+// percent is within what the noise itself changes from one sample to the next. Once an isotropic result
+// is kept, the uniform flow's result is compared with it by the same measure, without margin: neither
+// keeps creases, and on a graded triangulation the uniform weights smooth every region over the same
+// number of rings (on evenly triangulated meshes the two are close).
 
 #ifndef CGAL_ANISOTROPIC_FAIRING_INTERNAL_TENSOR_SELECTION_H
 #define CGAL_ANISOTROPIC_FAIRING_INTERNAL_TENSOR_SELECTION_H
