@@ -12,9 +12,9 @@
 #include <CGAL/subdivision_method_3.h>
 
 #include <CGAL/Anisotropic_fairing/Isotropic_diffusion_tensor.h>
-#include <CGAL/Anisotropic_fairing/internal/Fem_assembly.h>
-#include <CGAL/Anisotropic_fairing/internal/Indexed_mesh.h>
-#include <CGAL/Anisotropic_fairing/internal/Patch_cache.h>
+#include <CGAL/Anisotropic_fairing/internal/assembly/Fem_assembly.h>
+#include <CGAL/Anisotropic_fairing/internal/mesh/Indexed_mesh.h>
+#include <CGAL/Anisotropic_fairing/internal/element/Patch_cache.h>
 
 #include <algorithm>
 #include <cstdio>

@@ -36,13 +36,13 @@
 #include <CGAL/Anisotropic_fairing/anisotropic_fairing.h>
 
 #include "bench_mesh_measures.h"
-#include <CGAL/Anisotropic_fairing/internal/Fem_assembly.h>
-#include <CGAL/Anisotropic_fairing/internal/Ghosted_patch_cache.h>
-#include <CGAL/Anisotropic_fairing/internal/Indexed_mesh.h>
-#include <CGAL/Anisotropic_fairing/internal/Locality_ordering.h>
-#include <CGAL/Anisotropic_fairing/internal/Patch_cache.h>
-#include <CGAL/Anisotropic_fairing/internal/Time_stepper.h>
-#include <CGAL/Anisotropic_fairing/internal/Vertex_limit_masks.h>
+#include <CGAL/Anisotropic_fairing/internal/assembly/Fem_assembly.h>
+#include <CGAL/Anisotropic_fairing/internal/element/Ghosted_patch_cache.h>
+#include <CGAL/Anisotropic_fairing/internal/mesh/Indexed_mesh.h>
+#include <CGAL/Anisotropic_fairing/internal/mesh/Locality_ordering.h>
+#include <CGAL/Anisotropic_fairing/internal/element/Patch_cache.h>
+#include <CGAL/Anisotropic_fairing/internal/flow/Time_stepper.h>
+#include <CGAL/Anisotropic_fairing/internal/loop/Vertex_limit_masks.h>
 
 #ifdef CGAL_LINKED_WITH_TBB
 #include <tbb/task_arena.h>
@@ -260,7 +260,7 @@ double solve_per_step(const AF::Fairing_report& r)
 
 void part_iterations(const std::string& dir)
 {
-  std::printf("\n## (b) Conjugate-gradient iterations per step, Loop vs P1: time_step(ratio h^2), 4 steps, stopping none, solver_tolerance(1e-8) (relative residual, as in loop-fem.md section 9), warm start\n\n");
+  std::printf("\n## (b) Conjugate-gradient iterations per step, Loop vs P1: time_step(ratio h^2), 4 steps, stopping none, solver_tolerance(1e-8) (relative residual, as in doc/Anisotropic_fairing/design/loop-fem.md section 9), warm start\n\n");
   std::printf("| mesh | tau/h^2 | tau_rel | CG its Loop | CG its P1 | solve s/step Loop | solve s/step P1 |\n|---|---:|---:|---|---|---:|---:|\n");
   struct Input { const char* file; int sub; };
   for(const Input& in : {Input{"bumpy.off", 0}, Input{"bunny.off", 0}, Input{"fertility.off", 2}})

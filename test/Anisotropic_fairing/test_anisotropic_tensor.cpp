@@ -1,4 +1,4 @@
-// The curvature-driven diffusion tensor (Anisotropic_diffusion_tensor; loop-fem.md section 7):
+// The curvature-driven diffusion tensor (Anisotropic_diffusion_tensor; doc/Anisotropic_fairing/design/loop-fem.md section 7):
 //  - cylinder oracle: an open Loop cylinder (32 x 30 net, ends held) shrinks at dr/dt = -g(1/r)/r for
 //    lambda = infinity, 0.5 and 0.25 (one step of tau = 1e-4, radius measured in the middle), to 1e-3;
 //    with the prefilter M_eps at -g(1/r_eps)/r, r_eps the radius after the isotropic step of eps;
@@ -15,9 +15,9 @@
 
 #include <CGAL/Anisotropic_fairing/anisotropic_fairing.h>
 #include <CGAL/Anisotropic_fairing/Loop_limit_surface.h>
-#include <CGAL/Anisotropic_fairing/internal/Fem_assembly.h>
-#include <CGAL/Anisotropic_fairing/internal/Indexed_mesh.h>
-#include <CGAL/Anisotropic_fairing/internal/Patch_cache.h>
+#include <CGAL/Anisotropic_fairing/internal/assembly/Fem_assembly.h>
+#include <CGAL/Anisotropic_fairing/internal/mesh/Indexed_mesh.h>
+#include <CGAL/Anisotropic_fairing/internal/element/Patch_cache.h>
 
 #include "test_support/check.h"
 #include "test_support/mesh_coordinates.h"

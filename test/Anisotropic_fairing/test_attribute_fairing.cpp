@@ -1,4 +1,4 @@
-// Functions on surfaces (Bajaj & Xu's cases a-d; loop-fem.md sections 7-8 and 11b-d):
+// Functions on surfaces (Bajaj & Xu's cases a-d; doc/Anisotropic_fairing/design/loop-fem.md sections 7-8 and 11b-d):
 //  - the Laplace-Beltrami spectrum of the fixed interpolating icosphere (642 vertices): the generalised
 //    eigenvalues of (L, M) are l(l+1), multiplicity 2l+1, for l = 1..4;
 //  - attributes-only time stepping of Y_l (l = 1, 2, 3) to t = 0.1 with tau = 1e-3: the M-norm ratio is
@@ -15,9 +15,9 @@
 #include <CGAL/boost/graph/IO/polygon_mesh_io.h>
 
 #include <CGAL/Anisotropic_fairing/anisotropic_fairing.h>
-#include <CGAL/Anisotropic_fairing/internal/Fem_assembly.h>
-#include <CGAL/Anisotropic_fairing/internal/Indexed_mesh.h>
-#include <CGAL/Anisotropic_fairing/internal/Patch_cache.h>
+#include <CGAL/Anisotropic_fairing/internal/assembly/Fem_assembly.h>
+#include <CGAL/Anisotropic_fairing/internal/mesh/Indexed_mesh.h>
+#include <CGAL/Anisotropic_fairing/internal/element/Patch_cache.h>
 
 #include "test_support/check.h"
 #include "test_support/interpolating_sphere.h"

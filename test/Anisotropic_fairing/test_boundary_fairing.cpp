@@ -1,4 +1,4 @@
-// anisotropic_fairing() on meshes with borders (loop-fem.md section 6):
+// anisotropic_fairing() on meshes with borders (doc/Anisotropic_fairing/design/loop-fem.md section 6):
 //  - the regular-grid patch test: a tilted planar grid stays planar and does not slide, and a linear
 //    function on it is a steady state, with the Loop element (boundary curve held) and with P1;
 //    holding only the boundary vertices (the paper's choice) lets the grid slide;
@@ -19,10 +19,10 @@
 #include <CGAL/boost/graph/helpers.h>
 
 #include <CGAL/Anisotropic_fairing/anisotropic_fairing.h>
-#include <CGAL/Anisotropic_fairing/internal/Boundary_constraints.h>
-#include <CGAL/Anisotropic_fairing/internal/Fem_assembly.h>
-#include <CGAL/Anisotropic_fairing/internal/Ghosted_patch_cache.h>
-#include <CGAL/Anisotropic_fairing/internal/Indexed_mesh.h>
+#include <CGAL/Anisotropic_fairing/internal/flow/Boundary_constraints.h>
+#include <CGAL/Anisotropic_fairing/internal/assembly/Fem_assembly.h>
+#include <CGAL/Anisotropic_fairing/internal/element/Ghosted_patch_cache.h>
+#include <CGAL/Anisotropic_fairing/internal/mesh/Indexed_mesh.h>
 
 #include "test_support/check.h"
 #include "test_support/mesh_coordinates.h"

@@ -2,7 +2,7 @@
 // with CGAL::Subdivision_method_3::Loop_subdivision, apply the limit mask to every level-k vertex
 // (exact limit points at dyadic parameters), and compare with Loop_limit_surface::evaluate at the
 // same parameters. At level-k vertices of valence 6 inside a control face the exact parametric
-// derivatives are 2^k/3 sum_j cos(pi j/3 - phi) x_j over the level-k neighbours (loop-fem.md
+// derivatives are 2^k/3 sum_j cos(pi j/3 - phi) x_j over the level-k neighbours (doc/Anisotropic_fairing/design/loop-fem.md
 // section 1), which checks the derivative rows against CGAL as well.
 
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>

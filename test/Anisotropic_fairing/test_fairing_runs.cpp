@@ -1,5 +1,5 @@
 // anisotropic_fairing() as a user calls it: the fidelity steady state and collapse of the sphere
-// (loop-fem.md section 11c), constrained vertices, Surface_mesh = Polyhedron_3, failures that leave
+// (doc/Anisotropic_fairing/design/loop-fem.md section 11c), constrained vertices, Surface_mesh = Polyhedron_3, failures that leave
 // the mesh byte-identical, relative units (a model scaled by 10 is faired identically), the stopping
 // criteria (27)-(29) against the report's own numbers, the callback, and the P1 variant's shrink
 // rate on the sphere against its discretisation error.

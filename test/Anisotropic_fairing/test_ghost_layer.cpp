@@ -1,16 +1,16 @@
-// The ghost layer that closes boundary fans (loop-fem.md section 6): ghosts are affine in the real
+// The ghost layer that closes boundary fans (doc/Anisotropic_fairing/design/loop-fem.md section 6): ghosts are affine in the real
 // vertices; boundary vertices get valence 6 (m <= 3) or m + 3; the limit points of boundary vertices
 // follow the closed forms (m = 3: the cubic B-spline rule (2/3) v + (1/6)(r0 + r_m); m = 1: the corner
 // is interpolated; m = 2: (5/6) v + (1/6)(r0 + r2) - (1/6) r1), checked with random 3-D control data; the
 // limit surface of a single triangle is that flat triangle; bow-tie vertices are refused.
 
 #include <CGAL/Anisotropic_fairing/Isotropic_diffusion_tensor.h>
-#include <CGAL/Anisotropic_fairing/internal/Boundary_constraints.h>
-#include <CGAL/Anisotropic_fairing/internal/Fem_assembly.h>
-#include <CGAL/Anisotropic_fairing/internal/Ghost_layer.h>
-#include <CGAL/Anisotropic_fairing/internal/Ghosted_patch_cache.h>
-#include <CGAL/Anisotropic_fairing/internal/Patch_cache.h>
-#include <CGAL/Anisotropic_fairing/internal/Vertex_limit_masks.h>
+#include <CGAL/Anisotropic_fairing/internal/flow/Boundary_constraints.h>
+#include <CGAL/Anisotropic_fairing/internal/assembly/Fem_assembly.h>
+#include <CGAL/Anisotropic_fairing/internal/mesh/Ghost_layer.h>
+#include <CGAL/Anisotropic_fairing/internal/element/Ghosted_patch_cache.h>
+#include <CGAL/Anisotropic_fairing/internal/element/Patch_cache.h>
+#include <CGAL/Anisotropic_fairing/internal/loop/Vertex_limit_masks.h>
 
 #include "test_support/check.h"
 

@@ -8,7 +8,7 @@
 
 #include <CGAL/Anisotropic_fairing/Loop_limit_surface.h>
 #include <CGAL/Anisotropic_fairing/anisotropic_fairing.h>
-#include <CGAL/Anisotropic_fairing/internal/Triangle_topology.h>
+#include <CGAL/Anisotropic_fairing/internal/mesh/Triangle_topology.h>
 
 #include "test_support/check.h"
 #include "test_support/mesh_generators.h"

@@ -1,4 +1,4 @@
-// Loop_limit_surface on meshes with borders (the ghost layer of loop-fem.md section 6), against truth
+// Loop_limit_surface on meshes with borders (the ghost layer of doc/Anisotropic_fairing/design/loop-fem.md section 6), against truth
 // computed here without the library:
 //  - a single triangle is its own flat limit surface: corners interpolated, points and derivatives of the
 //    flat triangle, area, and the P1 mass matrix (its basis functions are the barycentric coordinates);

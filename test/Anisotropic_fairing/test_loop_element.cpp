@@ -8,10 +8,10 @@
 #include <CGAL/boost/graph/IO/polygon_mesh_io.h>
 
 #include <CGAL/Anisotropic_fairing/Loop_limit_surface.h>
-#include <CGAL/Anisotropic_fairing/internal/Indexed_mesh.h>
-#include <CGAL/Anisotropic_fairing/internal/Loop_box_spline.h>
-#include <CGAL/Anisotropic_fairing/internal/Patch_cache.h>
-#include <CGAL/Anisotropic_fairing/internal/Vertex_limit_masks.h>
+#include <CGAL/Anisotropic_fairing/internal/mesh/Indexed_mesh.h>
+#include <CGAL/Anisotropic_fairing/internal/loop/Loop_box_spline.h>
+#include <CGAL/Anisotropic_fairing/internal/element/Patch_cache.h>
+#include <CGAL/Anisotropic_fairing/internal/loop/Vertex_limit_masks.h>
 
 #include "test_support/check.h"
 #include "test_support/mesh_generators.h"
@@ -42,7 +42,7 @@ void test_box_spline()
   for(int i = 0; i < 12; ++i) corner_err.add_error(std::abs(B[AFi::VALUE][i] - corner[i]));
   check_max(corner_err, 1e-16, "corner values");
 
-  // lattice positions (p, q) of the 12 controls (loop-fem.md section 2); patch (4, 7, 8)
+  // lattice positions (p, q) of the 12 controls (doc/Anisotropic_fairing/design/loop-fem.md section 2); patch (4, 7, 8)
   const double lattice[12][2] = { {-1, 2}, {0, 2}, {-1, 1}, {0, 1}, {1, 1}, {-1, 0}, {0, 0}, {1, 0},
                                   {2, 0}, {0, -1}, {1, -1}, {2, -1} };
   AF_test::Max_error pou("box-spline partition of unity (value)"), dpou("box-spline derivative sums"),

@@ -14,8 +14,8 @@
 #include <CGAL/Polygon_mesh_processing/measure.h>
 
 #include <CGAL/Anisotropic_fairing/anisotropic_fairing.h>
-#include <CGAL/Anisotropic_fairing/internal/Local_time_scale.h>
-#include <CGAL/Anisotropic_fairing/internal/Step_safety.h>
+#include <CGAL/Anisotropic_fairing/internal/flow/Local_time_scale.h>
+#include <CGAL/Anisotropic_fairing/internal/flow/Step_safety.h>
 
 #include "test_support/check.h"
 #include "test_support/mesh_coordinates.h"

@@ -1,4 +1,4 @@
-// Curvature at a point of a parametrised surface (Surface_curvature.h; loop-fem.md section 7), against
+// Curvature at a point of a parametrised surface (Surface_curvature.h; doc/Anisotropic_fairing/design/loop-fem.md section 7), against
 // closed forms on surfaces given with exact derivatives, and on Loop limit surfaces:
 //  - torus x(u,v) = ((R + r cos v) cos u, (R + r cos v) sin u, r sin v): principal curvatures
 //    -1/r and -cos v/(R + r cos v) for the outward normal, directions along v and u; H = (k1+k2)/2 n;

@@ -1,7 +1,7 @@
 // Copyright (c) 2026 Anisotropic_fairing developers.
 // SPDX-License-Identifier: GPL-3.0-or-later
 //
-// The curvature-driven diffusion tensor of Bajaj & Xu (section 5), as reconstructed in loop-fem.md
+// The curvature-driven diffusion tensor of Bajaj & Xu (section 5), as reconstructed in doc/Anisotropic_fairing/design/loop-fem.md
 // section 7: along each principal direction e_a the diffusion is scaled by g(k_a), an edge-stopping
 // function of the principal curvature that is 1 below the feature threshold lambda and falls off
 // above it, so that noise (small curvature) is smoothed while creases (large curvature) are not.
@@ -122,8 +122,7 @@ public:
   /// (\f$\hat c_a\f$; without a prefilter \f$\hat c_a = c_a\f$ and this is \f$\sum_a g(k_a) c_a c_a^T\f$)
   Parametric_tensor operator()(const Quadrature_point_geometry& q) const
   {
-    const double inv = 1.0 / q.det;
-    Parametric_tensor A{ q.g22 * inv, -q.g12 * inv, q.g11 * inv };
+    Parametric_tensor A = inverse_metric(q);
     Principal_curvatures pc;
     if(q.prefiltered_t1)
     {

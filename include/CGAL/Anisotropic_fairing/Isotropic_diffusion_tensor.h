@@ -29,8 +29,7 @@ struct Isotropic_diffusion_tensor
   /// returns \f$G^{-1}\f$
   Parametric_tensor operator()(const Quadrature_point_geometry& q) const
   {
-    const double inv = 1.0 / q.det;
-    return Parametric_tensor{ q.g22 * inv, -q.g12 * inv, q.g11 * inv };
+    return inverse_metric(q);
   }
 };
 

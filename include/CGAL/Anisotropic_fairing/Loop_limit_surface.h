@@ -9,12 +9,12 @@
 #include <CGAL/Anisotropic_fairing/Surface_curvature.h>
 #include <CGAL/Anisotropic_fairing/Vector_attribute_traits.h>
 #include <CGAL/Anisotropic_fairing/named_function_parameters.h>
-#include <CGAL/Anisotropic_fairing/internal/Fem_assembly.h>
-#include <CGAL/Anisotropic_fairing/internal/Indexed_mesh.h>
-#include <CGAL/Anisotropic_fairing/internal/Limit_resampler.h>
-#include <CGAL/Anisotropic_fairing/internal/Patch_cache.h>
-#include <CGAL/Anisotropic_fairing/internal/Vertex_curvature.h>
-#include <CGAL/Anisotropic_fairing/internal/Vertex_limit_masks.h>
+#include <CGAL/Anisotropic_fairing/internal/assembly/Fem_assembly.h>
+#include <CGAL/Anisotropic_fairing/internal/mesh/Indexed_mesh.h>
+#include <CGAL/Anisotropic_fairing/internal/surface/Limit_resampler.h>
+#include <CGAL/Anisotropic_fairing/internal/element/Patch_cache.h>
+#include <CGAL/Anisotropic_fairing/internal/surface/Vertex_curvature.h>
+#include <CGAL/Anisotropic_fairing/internal/loop/Vertex_limit_masks.h>
 
 #include <CGAL/Kernel_traits.h>
 #include <CGAL/boost/graph/Euler_operations.h>

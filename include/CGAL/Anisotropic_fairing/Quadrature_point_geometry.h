@@ -53,6 +53,14 @@ struct Parametric_tensor
   double a11, a12, a22;
 };
 
+/// \ingroup PkgAnisotropicFairingFunctions
+/// The inverse metric \f$G^{-1}\f$ at `q` (the tensor of the isotropic flow).
+inline Parametric_tensor inverse_metric(const Quadrature_point_geometry& q)
+{
+  const double inv = 1.0 / q.det;
+  return Parametric_tensor{ q.g22 * inv, -q.g12 * inv, q.g11 * inv };
+}
+
 } // namespace Anisotropic_fairing
 } // namespace CGAL
 

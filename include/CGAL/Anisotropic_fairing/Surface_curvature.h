@@ -2,7 +2,7 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 //
 // Curvature of a parametrised surface x(xi1, xi2) in R^kappa at one point, from its first and second
-// derivatives (loop-fem.md section 7, the paper's garbled section 5 reconstructed): the mean-curvature
+// derivatives (doc/Anisotropic_fairing/design/loop-fem.md section 7, the paper's garbled section 5 reconstructed): the mean-curvature
 // vector H = Q (g22 t11 + g11 t22 - 2 g12 t12) / (2 det G), and the principal curvatures and directions
 // with respect to a unit normal nu, from the generalised eigenproblem B_nu c = k G c with
 // B_nu = [t_ij . nu].
@@ -11,6 +11,7 @@
 #define CGAL_ANISOTROPIC_FAIRING_SURFACE_CURVATURE_H
 
 #include <CGAL/Anisotropic_fairing/Quadrature_point_geometry.h>
+#include <CGAL/Anisotropic_fairing/internal/types/Symmetric_2x2_eigen.h>
 
 #include <array>
 #include <cmath>
@@ -92,17 +93,10 @@ inline Principal_curvatures principal_curvatures(const Quadrature_point_geometry
   const double m11 = i11 * b11, m12 = i11 * b12;                          // R^-1 B
   const double m21 = i21 * b11 + i22 * b12, m22 = i21 * b12 + i22 * b22;
   const double s11 = m11 * i11, s12 = m11 * i21 + m12 * i22, s22 = m21 * i21 + m22 * i22;
-  // eigen-decomposition of [[s11, s12], [s12, s22]], ascending
-  const double mean = 0.5 * (s11 + s22), dev = std::hypot(0.5 * (s11 - s22), s12);
-  pc.k1 = mean - dev;
-  pc.k2 = mean + dev;
-  double y1x, y1y;   // unit eigenvector of k1
-  if(dev == 0) { y1x = 1; y1y = 0; }
-  else if(s11 - pc.k1 >= s22 - pc.k1) { y1x = -s12; y1y = s11 - pc.k1; }   // from the rows, the better conditioned
-  else { y1x = s22 - pc.k1; y1y = -s12; }
-  const double yl = std::hypot(y1x, y1y);
-  if(yl > 0) { y1x /= yl; y1y /= yl; } else { y1x = 1; y1y = 0; }
-  const double y2x = -y1y, y2y = y1x;
+  const internal::Symmetric_2x2_eigen e = internal::symmetric_2x2_eigen(s11, s12, s22);
+  pc.k1 = e.k1;
+  pc.k2 = e.k2;
+  const double y1x = e.x, y1y = e.y, y2x = -e.y, y2y = e.x;   // unit eigenvectors of k1 and k2
   // c = R^-T y with R^-T = [[i11, i21], [0, i22]]
   pc.c1 = { { i11 * y1x + i21 * y1y, i22 * y1y } };
   pc.c2 = { { i11 * y2x + i21 * y2y, i22 * y2y } };

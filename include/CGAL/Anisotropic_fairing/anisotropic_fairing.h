@@ -11,7 +11,7 @@
 #include <CGAL/Anisotropic_fairing/Isotropic_diffusion_tensor.h>
 #include <CGAL/Anisotropic_fairing/Uniform_diffusion_tensor.h>
 #include <CGAL/Anisotropic_fairing/named_function_parameters.h>
-#include <CGAL/Anisotropic_fairing/internal/Fairing_driver.h>
+#include <CGAL/Anisotropic_fairing/internal/run/Fairing_driver.h>
 
 #include <CGAL/boost/graph/properties.h>
 

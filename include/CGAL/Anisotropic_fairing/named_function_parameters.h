@@ -33,9 +33,6 @@ struct Named_function_parameters : CGAL::Named_function_parameters<T, Tag, Base>
   Named_function_parameters(const T& v) : CGAL_np(v) {}
   Named_function_parameters(const T& v, const Base& b) : CGAL_np(v, b) {}
 
-  /// the same pack as a plain CGAL pack (for compilers that do not deduce the base class)
-  const CGAL_np& cgal_np() const { return *this; }
-
 #define CGAL_AF_NP_MEMBER(TAG, Z)                                                        \
   template <typename K>                                                                  \
   Named_function_parameters<K, TAG, self> Z(const K& k) const                            \

@@ -7,14 +7,15 @@
 // metric degenerated. It works on any element cache (Loop patches or P1 faces) and any diffusion
 // tensor; both matrices share the fixed ring pattern, so only their values are written.
 
-#ifndef CGAL_ANISOTROPIC_FAIRING_INTERNAL_FEM_ASSEMBLY_H
-#define CGAL_ANISOTROPIC_FAIRING_INTERNAL_FEM_ASSEMBLY_H
+#ifndef CGAL_ANISOTROPIC_FAIRING_INTERNAL_ASSEMBLY_FEM_ASSEMBLY_H
+#define CGAL_ANISOTROPIC_FAIRING_INTERNAL_ASSEMBLY_FEM_ASSEMBLY_H
 
 #include <CGAL/Anisotropic_fairing/Quadrature_point_geometry.h>
-#include <CGAL/Anisotropic_fairing/internal/Control_matrix.h>
-#include <CGAL/Anisotropic_fairing/internal/Patch_cache.h>
-#include <CGAL/Anisotropic_fairing/internal/Sparse_pattern.h>
-#include <CGAL/Anisotropic_fairing/internal/Vertex_limit_masks.h>
+#include <CGAL/Anisotropic_fairing/Surface_curvature.h>
+#include <CGAL/Anisotropic_fairing/internal/types/Control_matrix.h>
+#include <CGAL/Anisotropic_fairing/internal/types/Stencil_row.h>
+#include <CGAL/Anisotropic_fairing/internal/assembly/Sparse_pattern.h>
+#include <CGAL/Anisotropic_fairing/internal/loop/Vertex_limit_masks.h>
 
 #ifdef CGAL_LINKED_WITH_TBB
 #include <tbb/parallel_for.h>
@@ -359,19 +360,12 @@ private:
     scatter_local_matrices<2>(locals, ring, m, ws.order, pattern_.outerIndexPtr(), pattern_.innerIndexPtr(), values);
   }
 
-  // |H|^2 with H = Q (g22 t11 + g11 t22 - 2 g12 t12) / (2 det G), Q the projection on the normal space
+  // |H|^2, H the mean-curvature vector (Surface_curvature.h), written into h
   static double mean_curvature_squared(const Quadrature_point_geometry& g, double* h)
   {
-    const int k = g.dimension;
-    double d1 = 0, d2 = 0;
-    for(int c = 0; c < k; ++c)
-    {
-      h[c] = (g.g22 * g.t11[c] + g.g11 * g.t22[c] - 2 * g.g12 * g.t12[c]) / (2 * g.det);
-      d1 += g.t1[c] * h[c]; d2 += g.t2[c] * h[c];
-    }
-    const double a1 = (g.g22 * d1 - g.g12 * d2) / g.det, a2 = (g.g11 * d2 - g.g12 * d1) / g.det;
+    mean_curvature_vector(g, h);
     double s = 0;
-    for(int c = 0; c < k; ++c) { const double n = h[c] - a1 * g.t1[c] - a2 * g.t2[c]; s += n * n; }
+    for(int c = 0; c < g.dimension; ++c) s += h[c] * h[c];
     return s;
   }
 
@@ -425,4 +419,4 @@ inline double dirichlet_energy(const Eigen::SparseMatrix<double>& pattern, const
 } // namespace Anisotropic_fairing
 } // namespace CGAL
 
-#endif // CGAL_ANISOTROPIC_FAIRING_INTERNAL_FEM_ASSEMBLY_H
+#endif // CGAL_ANISOTROPIC_FAIRING_INTERNAL_ASSEMBLY_FEM_ASSEMBLY_H

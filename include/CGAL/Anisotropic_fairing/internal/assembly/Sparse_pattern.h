@@ -5,10 +5,9 @@
 // common triangle ring (i.e. j is in the 3-ring of i). The pattern depends on topology only, so it
 // is built once and every later assembly only adds into its values.
 
-#ifndef CGAL_ANISOTROPIC_FAIRING_INTERNAL_SPARSE_PATTERN_H
-#define CGAL_ANISOTROPIC_FAIRING_INTERNAL_SPARSE_PATTERN_H
+#ifndef CGAL_ANISOTROPIC_FAIRING_INTERNAL_ASSEMBLY_SPARSE_PATTERN_H
+#define CGAL_ANISOTROPIC_FAIRING_INTERNAL_ASSEMBLY_SPARSE_PATTERN_H
 
-#include <CGAL/Anisotropic_fairing/internal/Patch_cache.h>
 
 #include <Eigen/SparseCore>
 
@@ -70,4 +69,4 @@ Eigen::SparseMatrix<double> ring_sparsity_pattern(const Cache& cache, std::size_
 } // namespace Anisotropic_fairing
 } // namespace CGAL
 
-#endif // CGAL_ANISOTROPIC_FAIRING_INTERNAL_SPARSE_PATTERN_H
+#endif // CGAL_ANISOTROPIC_FAIRING_INTERNAL_ASSEMBLY_SPARSE_PATTERN_H

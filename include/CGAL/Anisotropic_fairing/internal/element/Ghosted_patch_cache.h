@@ -2,17 +2,18 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 //
 // The Loop element on a mesh with borders, in the shape of Patch_cache but over the real vertices
-// only. A face whose ring holds ghosts (loop-fem.md section 6) has the ghosts substituted by their
+// only. A face whose ring holds ghosts (doc/Anisotropic_fairing/design/loop-fem.md section 6) has the ghosts substituted by their
 // affine rows: with P the (ring x real ring) matrix of that substitution, its stencils become S P, so
 // the basis is phi~_i = phi_i + sum_g E_gi phi_g and every assembled matrix is E^T M_ext E without
 // ever forming the extended one. Faces away from the border keep their shared per-category stencils;
 // each face next to the border gets its own (they are few: one or two rows of faces).
 
-#ifndef CGAL_ANISOTROPIC_FAIRING_INTERNAL_GHOSTED_PATCH_CACHE_H
-#define CGAL_ANISOTROPIC_FAIRING_INTERNAL_GHOSTED_PATCH_CACHE_H
+#ifndef CGAL_ANISOTROPIC_FAIRING_INTERNAL_ELEMENT_GHOSTED_PATCH_CACHE_H
+#define CGAL_ANISOTROPIC_FAIRING_INTERNAL_ELEMENT_GHOSTED_PATCH_CACHE_H
 
-#include <CGAL/Anisotropic_fairing/internal/Ghost_layer.h>
-#include <CGAL/Anisotropic_fairing/internal/Patch_cache.h>
+#include <CGAL/Anisotropic_fairing/internal/types/Control_matrix.h>
+#include <CGAL/Anisotropic_fairing/internal/mesh/Ghost_layer.h>
+#include <CGAL/Anisotropic_fairing/internal/element/Patch_cache.h>
 
 #include <Eigen/Core>
 
@@ -26,7 +27,6 @@ class Ghosted_patch_cache
 {
 public:
   static constexpr bool has_second_derivatives = true;
-  typedef Patch_cache::Row_matrix Row_matrix;
 
   Ghosted_patch_cache(const Ghost_layer& gl, const Quadrature_spec& spec)
     : base_(*gl.topology, gl.real_faces)
@@ -80,7 +80,7 @@ public:
   int category(std::size_t f) const { return category_[f]; }
   int ring_size(std::size_t f) const { return int(offset_[f + 1] - offset_[f]); }
   const int* ring(std::size_t f) const { return ring_.data() + offset_[f]; }
-  const Row_matrix& quadrature_rows(int c, int r) const
+  const Control_matrix& quadrature_rows(int c, int r) const
   {
     return c < base_categories_ ? base_.quadrature_rows(c, r) : ghosted_[std::size_t(c - base_categories_)].rows[r];
   }
@@ -111,7 +111,7 @@ private:
     std::size_t face;
     Eigen::MatrixXd substitution;   // P: extended ring slot -> real ring slot
     int base_category;
-    Row_matrix rows[STENCIL_ROWS];
+    Control_matrix rows[STENCIL_ROWS];
   };
 
   Patch_cache base_;
@@ -126,4 +126,4 @@ private:
 } // namespace Anisotropic_fairing
 } // namespace CGAL
 
-#endif // CGAL_ANISOTROPIC_FAIRING_INTERNAL_GHOSTED_PATCH_CACHE_H
+#endif // CGAL_ANISOTROPIC_FAIRING_INTERNAL_ELEMENT_GHOSTED_PATCH_CACHE_H

@@ -6,11 +6,12 @@
 // rule. The same assembly code then yields the consistent mass matrix area/12 (1 + delta_ij) and the
 // cotangent stiffness exactly (Clarenz et al.), so the time stepper does not know which element runs.
 
-#ifndef CGAL_ANISOTROPIC_FAIRING_INTERNAL_LINEAR_ELEMENT_CACHE_H
-#define CGAL_ANISOTROPIC_FAIRING_INTERNAL_LINEAR_ELEMENT_CACHE_H
+#ifndef CGAL_ANISOTROPIC_FAIRING_INTERNAL_ELEMENT_LINEAR_ELEMENT_CACHE_H
+#define CGAL_ANISOTROPIC_FAIRING_INTERNAL_ELEMENT_LINEAR_ELEMENT_CACHE_H
 
-#include <CGAL/Anisotropic_fairing/internal/Loop_local_patch.h>
-#include <CGAL/Anisotropic_fairing/internal/Triangle_topology.h>
+#include <CGAL/Anisotropic_fairing/internal/types/Control_matrix.h>
+#include <CGAL/Anisotropic_fairing/internal/types/Stencil_row.h>
+#include <CGAL/Anisotropic_fairing/internal/mesh/Triangle_topology.h>
 
 #include <Eigen/Core>
 
@@ -27,7 +28,6 @@ class Linear_element_cache
 public:
   /// no curvature at points: the curvature integral comes from the discrete Laplacian instead
   static constexpr bool has_second_derivatives = false;
-  typedef Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, Eigen::RowMajor> Row_matrix;
 
   /// The elements of the first `faces` faces of `topo` (all by default; the real faces of a ghost layer).
   explicit Linear_element_cache(const Triangle_topology& topo,
@@ -55,12 +55,12 @@ public:
   int category(std::size_t) const { return 0; }
   int ring_size(std::size_t) const { return 3; }
   const int* ring(std::size_t f) const { return ring_ids_.data() + 3 * f; }
-  const Row_matrix& quadrature_rows(int, int r) const { return rows_[r]; }
+  const Control_matrix& quadrature_rows(int, int r) const { return rows_[r]; }
   const Eigen::VectorXd& quadrature_weights(int) const { return weights_; }
 
 private:
   std::vector<int> ring_ids_;
-  Row_matrix rows_[STENCIL_ROWS];
+  Control_matrix rows_[STENCIL_ROWS];
   Eigen::VectorXd weights_;
 };
 
@@ -68,4 +68,4 @@ private:
 } // namespace Anisotropic_fairing
 } // namespace CGAL
 
-#endif // CGAL_ANISOTROPIC_FAIRING_INTERNAL_LINEAR_ELEMENT_CACHE_H
+#endif // CGAL_ANISOTROPIC_FAIRING_INTERNAL_ELEMENT_LINEAR_ELEMENT_CACHE_H

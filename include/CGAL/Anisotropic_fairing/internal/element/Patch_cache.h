@@ -5,12 +5,13 @@
 // the stencils at the quadrature points. Stencils depend on topology only, so they are computed once
 // per category (the paper's "categories"; about 250 for a 7k-triangle scan) and never per step.
 
-#ifndef CGAL_ANISOTROPIC_FAIRING_INTERNAL_PATCH_CACHE_H
-#define CGAL_ANISOTROPIC_FAIRING_INTERNAL_PATCH_CACHE_H
+#ifndef CGAL_ANISOTROPIC_FAIRING_INTERNAL_ELEMENT_PATCH_CACHE_H
+#define CGAL_ANISOTROPIC_FAIRING_INTERNAL_ELEMENT_PATCH_CACHE_H
 
-#include <CGAL/Anisotropic_fairing/internal/Loop_local_patch.h>
-#include <CGAL/Anisotropic_fairing/internal/Quadrature_rules.h>
-#include <CGAL/Anisotropic_fairing/internal/Triangle_topology.h>
+#include <CGAL/Anisotropic_fairing/internal/types/Control_matrix.h>
+#include <CGAL/Anisotropic_fairing/internal/loop/Loop_local_patch.h>
+#include <CGAL/Anisotropic_fairing/internal/element/Quadrature_rules.h>
+#include <CGAL/Anisotropic_fairing/internal/mesh/Triangle_topology.h>
 
 #include <Eigen/Core>
 
@@ -158,10 +159,9 @@ public:
 
   const std::vector<Quadrature_point>& quadrature_points(int c) const { return categories_[c]->points; }
 
-  typedef Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, Eigen::RowMajor> Row_matrix;
   /// The stencils of a category stacked by row kind: quadrature_rows(c, r) is (points x ring size),
   /// row q holding row r of point q's stencil. Dense, so assembly works with small matrix products.
-  const Row_matrix& quadrature_rows(int c, int r) const { return categories_[c]->rows[r]; }
+  const Control_matrix& quadrature_rows(int c, int r) const { return categories_[c]->rows[r]; }
   /// Weights of a category's quadrature points (including the reference area 1/2).
   const Eigen::VectorXd& quadrature_weights(int c) const { return categories_[c]->weights; }
   const Quadrature_spec& quadrature_spec() const { return spec_; }
@@ -214,7 +214,7 @@ private:
     int m;
     std::vector<Tri> tris;
     std::vector<Quadrature_point> points;
-    Row_matrix rows[STENCIL_ROWS];
+    Control_matrix rows[STENCIL_ROWS];
     Eigen::VectorXd weights;
   };
 
@@ -230,4 +230,4 @@ private:
 } // namespace Anisotropic_fairing
 } // namespace CGAL
 
-#endif // CGAL_ANISOTROPIC_FAIRING_INTERNAL_PATCH_CACHE_H
+#endif // CGAL_ANISOTROPIC_FAIRING_INTERNAL_ELEMENT_PATCH_CACHE_H

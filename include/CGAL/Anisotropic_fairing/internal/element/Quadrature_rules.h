@@ -4,8 +4,8 @@
 // Symmetric Gauss rules on the reference triangle (Dunavant 1985), degrees 4, 6 and 8.
 // Integral over T = {xi1, xi2 >= 0, xi1 + xi2 <= 1} of g  ~=  1/2 sum_q w_q g(xi_q), sum w_q = 1.
 
-#ifndef CGAL_ANISOTROPIC_FAIRING_INTERNAL_QUADRATURE_RULES_H
-#define CGAL_ANISOTROPIC_FAIRING_INTERNAL_QUADRATURE_RULES_H
+#ifndef CGAL_ANISOTROPIC_FAIRING_INTERNAL_ELEMENT_QUADRATURE_RULES_H
+#define CGAL_ANISOTROPIC_FAIRING_INTERNAL_ELEMENT_QUADRATURE_RULES_H
 
 #include <CGAL/Anisotropic_fairing/Input_error.h>
 
@@ -70,4 +70,4 @@ inline std::vector<Triangle_rule_point> triangle_rule(int degree)
 } // namespace Anisotropic_fairing
 } // namespace CGAL
 
-#endif // CGAL_ANISOTROPIC_FAIRING_INTERNAL_QUADRATURE_RULES_H
+#endif // CGAL_ANISOTROPIC_FAIRING_INTERNAL_ELEMENT_QUADRATURE_RULES_H

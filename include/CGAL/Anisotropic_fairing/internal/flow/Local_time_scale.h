@@ -16,12 +16,12 @@
 // keeps the system symmetric. h_i is read on the input, averaged with its ring three times: noise of
 // 0.35 h_i lengthens an edge by only 12%, and the averaging removes most of that.
 
-#ifndef CGAL_ANISOTROPIC_FAIRING_INTERNAL_LOCAL_TIME_SCALE_H
-#define CGAL_ANISOTROPIC_FAIRING_INTERNAL_LOCAL_TIME_SCALE_H
+#ifndef CGAL_ANISOTROPIC_FAIRING_INTERNAL_FLOW_LOCAL_TIME_SCALE_H
+#define CGAL_ANISOTROPIC_FAIRING_INTERNAL_FLOW_LOCAL_TIME_SCALE_H
 
-#include <CGAL/Anisotropic_fairing/internal/Control_matrix.h>
-#include <CGAL/Anisotropic_fairing/internal/Mesh_components.h>
-#include <CGAL/Anisotropic_fairing/internal/Triangle_topology.h>
+#include <CGAL/Anisotropic_fairing/internal/types/Control_matrix.h>
+#include <CGAL/Anisotropic_fairing/internal/mesh/Mesh_components.h>
+#include <CGAL/Anisotropic_fairing/internal/mesh/Triangle_topology.h>
 
 #include <cmath>
 #include <cstddef>
@@ -74,4 +74,4 @@ inline std::vector<double> mass_weights(std::vector<double> s)
 } // namespace Anisotropic_fairing
 } // namespace CGAL
 
-#endif // CGAL_ANISOTROPIC_FAIRING_INTERNAL_LOCAL_TIME_SCALE_H
+#endif // CGAL_ANISOTROPIC_FAIRING_INTERNAL_FLOW_LOCAL_TIME_SCALE_H

@@ -14,11 +14,11 @@
 // The same normals and edge lengths measure how far a result moved off the input along the normal,
 // in the same robust statistic: the discrepancy principle stops diffusion when that reaches the noise.
 
-#ifndef CGAL_ANISOTROPIC_FAIRING_INTERNAL_NOISE_ESTIMATE_H
-#define CGAL_ANISOTROPIC_FAIRING_INTERNAL_NOISE_ESTIMATE_H
+#ifndef CGAL_ANISOTROPIC_FAIRING_INTERNAL_FLOW_NOISE_ESTIMATE_H
+#define CGAL_ANISOTROPIC_FAIRING_INTERNAL_FLOW_NOISE_ESTIMATE_H
 
-#include <CGAL/Anisotropic_fairing/internal/Control_matrix.h>
-#include <CGAL/Anisotropic_fairing/internal/Triangle_topology.h>
+#include <CGAL/Anisotropic_fairing/internal/types/Control_matrix.h>
+#include <CGAL/Anisotropic_fairing/internal/mesh/Triangle_topology.h>
 
 #include <algorithm>
 #include <cmath>
@@ -158,4 +158,4 @@ private:
 } // namespace Anisotropic_fairing
 } // namespace CGAL
 
-#endif // CGAL_ANISOTROPIC_FAIRING_INTERNAL_NOISE_ESTIMATE_H
+#endif // CGAL_ANISOTROPIC_FAIRING_INTERNAL_FLOW_NOISE_ESTIMATE_H

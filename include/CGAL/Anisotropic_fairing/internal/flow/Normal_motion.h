@@ -11,13 +11,12 @@
 // that span the surface: the prefiltered surface M_eps when the tensor has one, the current one otherwise.
 // The linear element uses the same masks on its vertices: a smooth estimate of the vertex normal.
 
-#ifndef CGAL_ANISOTROPIC_FAIRING_INTERNAL_NORMAL_MOTION_H
-#define CGAL_ANISOTROPIC_FAIRING_INTERNAL_NORMAL_MOTION_H
+#ifndef CGAL_ANISOTROPIC_FAIRING_INTERNAL_FLOW_NORMAL_MOTION_H
+#define CGAL_ANISOTROPIC_FAIRING_INTERNAL_FLOW_NORMAL_MOTION_H
 
-#include <CGAL/Anisotropic_fairing/internal/Control_matrix.h>
-#include <CGAL/Anisotropic_fairing/internal/Ghost_layer.h>
-#include <CGAL/Anisotropic_fairing/internal/Spd_solvers.h>
-#include <CGAL/Anisotropic_fairing/internal/Vertex_limit_masks.h>
+#include <CGAL/Anisotropic_fairing/internal/types/Control_matrix.h>
+#include <CGAL/Anisotropic_fairing/internal/mesh/Ghost_layer.h>
+#include <CGAL/Anisotropic_fairing/internal/loop/Vertex_limit_masks.h>
 
 #include <vector>
 
@@ -32,7 +31,7 @@ public:
 
   /// Row k of dX is the displacement of vertex free[k]; its first `columns` entries lose their
   /// component in the limit tangent plane of vertex free[k] of X (n x kappa, the real vertices).
-  void remove(const Control_matrix& X, int columns, const std::vector<int>& free, Dense_block& dX) const
+  void remove(const Control_matrix& X, int columns, const std::vector<int>& free, Control_matrix& dX) const
   {
     const Control_matrix extended = layer_.has_boundary() ? layer_.extend(X) : Control_matrix();
     const Control_matrix& E = layer_.has_boundary() ? extended : X;   // ghosts: the tangent masks of fans next to a border
@@ -65,4 +64,4 @@ private:
 } // namespace Anisotropic_fairing
 } // namespace CGAL
 
-#endif // CGAL_ANISOTROPIC_FAIRING_INTERNAL_NORMAL_MOTION_H
+#endif // CGAL_ANISOTROPIC_FAIRING_INTERNAL_FLOW_NORMAL_MOTION_H

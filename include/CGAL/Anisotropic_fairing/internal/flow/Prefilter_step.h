@@ -3,13 +3,13 @@
 //
 // Bajaj & Xu's prefiltered surface M_eps, where an anisotropic tensor reads its curvature: the surface
 // after one isotropic implicit step of length eps (per row) from X, (M + eps L) X_eps = M X, held
-// vertices fixed (loop-fem.md section 7). Solved for the free rows' displacement, like a time step.
+// vertices fixed (doc/Anisotropic_fairing/design/loop-fem.md section 7). Solved for the free rows' displacement, like a time step.
 
-#ifndef CGAL_ANISOTROPIC_FAIRING_INTERNAL_PREFILTER_STEP_H
-#define CGAL_ANISOTROPIC_FAIRING_INTERNAL_PREFILTER_STEP_H
+#ifndef CGAL_ANISOTROPIC_FAIRING_INTERNAL_FLOW_PREFILTER_STEP_H
+#define CGAL_ANISOTROPIC_FAIRING_INTERNAL_FLOW_PREFILTER_STEP_H
 
-#include <CGAL/Anisotropic_fairing/internal/Control_matrix.h>
-#include <CGAL/Anisotropic_fairing/internal/Spd_solvers.h>
+#include <CGAL/Anisotropic_fairing/internal/types/Control_matrix.h>
+#include <CGAL/Anisotropic_fairing/internal/solve/Spd_solvers.h>
 
 #include <Eigen/Sparse>
 
@@ -27,14 +27,14 @@ inline Solve_statistics prefilter_step(const Eigen::SparseMatrix<double>& patter
                                        const std::vector<double>& L, const std::vector<double>& eps,
                                        const std::vector<int>& free, const std::vector<int>& source,
                                        const std::vector<int>& entry_row, Eigen::SparseMatrix<double>& A,
-                                       const Control_matrix& X, int columns, Dense_block& dX)
+                                       const Control_matrix& X, int columns, Control_matrix& dX)
 {
   double* av = A.valuePtr();
   for(std::size_t e = 0; e < source.size(); ++e)
     av[e] = M[std::size_t(source[e])] + eps[std::size_t(free[std::size_t(entry_row[e])])] * L[std::size_t(source[e])];
   const Eigen::Index nfree = Eigen::Index(free.size());
-  Dense_block B(nfree, columns);
-  dX = Dense_block::Zero(nfree, columns);
+  Control_matrix B(nfree, columns);
+  dX = Control_matrix::Zero(nfree, columns);
   for(Eigen::Index i = 0; i < nfree; ++i)
   {
     const int row = free[std::size_t(i)];
@@ -57,4 +57,4 @@ inline Solve_statistics prefilter_step(const Eigen::SparseMatrix<double>& patter
 } // namespace Anisotropic_fairing
 } // namespace CGAL
 
-#endif // CGAL_ANISOTROPIC_FAIRING_INTERNAL_PREFILTER_STEP_H
+#endif // CGAL_ANISOTROPIC_FAIRING_INTERNAL_FLOW_PREFILTER_STEP_H

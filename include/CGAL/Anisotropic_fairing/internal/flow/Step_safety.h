@@ -13,14 +13,14 @@
 // 11.34 without it) or int |H|^2 above 100 times (cusps that keep growing, as in long runs with a
 // strong fidelity term), nor shrink a connected component to (almost) nothing.
 
-#ifndef CGAL_ANISOTROPIC_FAIRING_INTERNAL_STEP_SAFETY_H
-#define CGAL_ANISOTROPIC_FAIRING_INTERNAL_STEP_SAFETY_H
+#ifndef CGAL_ANISOTROPIC_FAIRING_INTERNAL_FLOW_STEP_SAFETY_H
+#define CGAL_ANISOTROPIC_FAIRING_INTERNAL_FLOW_STEP_SAFETY_H
 
-#include <CGAL/Anisotropic_fairing/internal/Control_matrix.h>
-#include <CGAL/Anisotropic_fairing/internal/Fem_assembly.h>
-#include <CGAL/Anisotropic_fairing/internal/Ghost_layer.h>
-#include <CGAL/Anisotropic_fairing/internal/Triangle_topology.h>
-#include <CGAL/Anisotropic_fairing/internal/Vertex_limit_masks.h>
+#include <CGAL/Anisotropic_fairing/internal/types/Control_matrix.h>
+#include <CGAL/Anisotropic_fairing/internal/assembly/Fem_assembly.h>
+#include <CGAL/Anisotropic_fairing/internal/mesh/Ghost_layer.h>
+#include <CGAL/Anisotropic_fairing/internal/mesh/Triangle_topology.h>
+#include <CGAL/Anisotropic_fairing/internal/loop/Vertex_limit_masks.h>
 
 #include <algorithm>
 #include <cmath>
@@ -159,4 +159,4 @@ inline Step_verdict judge_step(const Surface_soundness& initial, const Surface_s
 } // namespace Anisotropic_fairing
 } // namespace CGAL
 
-#endif // CGAL_ANISOTROPIC_FAIRING_INTERNAL_STEP_SAFETY_H
+#endif // CGAL_ANISOTROPIC_FAIRING_INTERNAL_FLOW_STEP_SAFETY_H

@@ -7,11 +7,11 @@
 // component they are constant, so the system ((1 + tau w) M + tau L) stays symmetric: M and L have no
 // entry between two components.
 
-#ifndef CGAL_ANISOTROPIC_FAIRING_INTERNAL_STEP_UNITS_H
-#define CGAL_ANISOTROPIC_FAIRING_INTERNAL_STEP_UNITS_H
+#ifndef CGAL_ANISOTROPIC_FAIRING_INTERNAL_FLOW_STEP_UNITS_H
+#define CGAL_ANISOTROPIC_FAIRING_INTERNAL_FLOW_STEP_UNITS_H
 
-#include <CGAL/Anisotropic_fairing/internal/Fem_assembly.h>
-#include <CGAL/Anisotropic_fairing/internal/Mesh_components.h>
+#include <CGAL/Anisotropic_fairing/internal/assembly/Fem_assembly.h>
+#include <CGAL/Anisotropic_fairing/internal/mesh/Mesh_components.h>
 
 #include <cmath>
 #include <cstddef>
@@ -88,4 +88,4 @@ inline Step_units make_step_units(const Assembly_statistics& a0, const Mesh_comp
 } // namespace Anisotropic_fairing
 } // namespace CGAL
 
-#endif // CGAL_ANISOTROPIC_FAIRING_INTERNAL_STEP_UNITS_H
+#endif // CGAL_ANISOTROPIC_FAIRING_INTERNAL_FLOW_STEP_UNITS_H

@@ -3,12 +3,12 @@
 //
 // What the time stepper is told by the driver: the numbers of the run, in the units they are given in.
 
-#ifndef CGAL_ANISOTROPIC_FAIRING_INTERNAL_STEPPER_SETTINGS_H
-#define CGAL_ANISOTROPIC_FAIRING_INTERNAL_STEPPER_SETTINGS_H
+#ifndef CGAL_ANISOTROPIC_FAIRING_INTERNAL_FLOW_STEPPER_SETTINGS_H
+#define CGAL_ANISOTROPIC_FAIRING_INTERNAL_FLOW_STEPPER_SETTINGS_H
 
 #include <CGAL/Anisotropic_fairing/Fairing_settings.h>
-#include <CGAL/Anisotropic_fairing/internal/Noise_estimate.h>
-#include <CGAL/Anisotropic_fairing/internal/Step_units.h>
+#include <CGAL/Anisotropic_fairing/internal/flow/Noise_estimate.h>
+#include <CGAL/Anisotropic_fairing/internal/flow/Step_units.h>
 
 #include <cstddef>
 
@@ -38,4 +38,4 @@ struct Stepper_settings
 } // namespace Anisotropic_fairing
 } // namespace CGAL
 
-#endif // CGAL_ANISOTROPIC_FAIRING_INTERNAL_STEPPER_SETTINGS_H
+#endif // CGAL_ANISOTROPIC_FAIRING_INTERNAL_FLOW_STEPPER_SETTINGS_H

@@ -4,13 +4,13 @@
 // When a run of time steps ends: the stopping criteria (27)-(29) of Bajaj & Xu, the steady state,
 // and the wall clock the steps are timed with.
 
-#ifndef CGAL_ANISOTROPIC_FAIRING_INTERNAL_STOPPING_MONITOR_H
-#define CGAL_ANISOTROPIC_FAIRING_INTERNAL_STOPPING_MONITOR_H
+#ifndef CGAL_ANISOTROPIC_FAIRING_INTERNAL_FLOW_STOPPING_MONITOR_H
+#define CGAL_ANISOTROPIC_FAIRING_INTERNAL_FLOW_STOPPING_MONITOR_H
 
 #include <CGAL/Anisotropic_fairing/Fairing_report.h>
 #include <CGAL/Anisotropic_fairing/Fairing_settings.h>
+#include <CGAL/Real_timer.h>
 
-#include <chrono>
 #include <cstdio>
 #include <iostream>
 #include <string>
@@ -56,23 +56,14 @@ private:
   double F0_, dt_ = 1.0, F_prev_ = 1.0, rate0_ = 0;
 };
 
-/// Milliseconds-resolution wall clock.
-class Stopwatch
-{
-public:
-  Stopwatch() : start_(std::chrono::steady_clock::now()) {}
-  double seconds() const { return std::chrono::duration<double>(std::chrono::steady_clock::now() - start_).count(); }
-private:
-  std::chrono::steady_clock::time_point start_;
-};
 
 /// Ends a report as a failure.
-inline Fairing_report& fail(Fairing_report& r, Fairing_status status, const std::string& message, const Stopwatch& total)
+inline Fairing_report& fail(Fairing_report& r, Fairing_status status, const std::string& message, const CGAL::Real_timer& total)
 {
   r.status = status;
   r.stop_reason = Stop_reason::FAILURE;
   r.message = message;
-  r.total_seconds = total.seconds();
+  r.total_seconds = total.time();
   return r;
 }
 
@@ -90,4 +81,4 @@ inline void print(const Fairing_step& st)
 } // namespace Anisotropic_fairing
 } // namespace CGAL
 
-#endif // CGAL_ANISOTROPIC_FAIRING_INTERNAL_STOPPING_MONITOR_H
+#endif // CGAL_ANISOTROPIC_FAIRING_INTERNAL_FLOW_STOPPING_MONITOR_H

@@ -5,8 +5,8 @@
 // (`set_length_scale`), normal motion only (`normal_motion_only`), a prefilter time
 // (`prefilter_time`), and parameters the package chooses from the mesh (`is_automatic`).
 
-#ifndef CGAL_ANISOTROPIC_FAIRING_INTERNAL_TENSOR_HOOKS_H
-#define CGAL_ANISOTROPIC_FAIRING_INTERNAL_TENSOR_HOOKS_H
+#ifndef CGAL_ANISOTROPIC_FAIRING_INTERNAL_FLOW_TENSOR_HOOKS_H
+#define CGAL_ANISOTROPIC_FAIRING_INTERNAL_FLOW_TENSOR_HOOKS_H
 
 namespace CGAL {
 namespace Anisotropic_fairing {
@@ -55,4 +55,4 @@ double relative_epsilon_of(const Tensor&, long) { return 0.0; }
 } // namespace Anisotropic_fairing
 } // namespace CGAL
 
-#endif // CGAL_ANISOTROPIC_FAIRING_INTERNAL_TENSOR_HOOKS_H
+#endif // CGAL_ANISOTROPIC_FAIRING_INTERNAL_FLOW_TENSOR_HOOKS_H

@@ -2,7 +2,7 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 //
 // The semi-implicit step ((1 + tau w) M + tau L(D)) X_{n+1} = M (X_n + tau w X_0) of Bajaj & Xu
-// (eq. 26 with the fidelity term written consistently, loop-fem.md section 8), repeated until a
+// (eq. 26 with the fidelity term written consistently, doc/Anisotropic_fairing/design/loop-fem.md section 8), repeated until a
 // stopping criterion holds, controlled as an ODE integrator would be: a step that leaves an unsound
 // surface (Step_safety.h) is rejected and retried with a quarter of the time step; when even
 // 1/1024 of it fails, the run ends on the last sound surface. It knows nothing of the element: any
@@ -13,28 +13,29 @@
 // so the system stays symmetric positive definite and its right-hand side does not depend on the
 // model's position in space.
 
-#ifndef CGAL_ANISOTROPIC_FAIRING_INTERNAL_TIME_STEPPER_H
-#define CGAL_ANISOTROPIC_FAIRING_INTERNAL_TIME_STEPPER_H
+#ifndef CGAL_ANISOTROPIC_FAIRING_INTERNAL_FLOW_TIME_STEPPER_H
+#define CGAL_ANISOTROPIC_FAIRING_INTERNAL_FLOW_TIME_STEPPER_H
 
+#include <CGAL/Anisotropic_fairing/internal/types/Control_matrix.h>
 #include <CGAL/Anisotropic_fairing/Fairing_report.h>
 #include <CGAL/Anisotropic_fairing/Fairing_settings.h>
 #include <CGAL/Anisotropic_fairing/Isotropic_diffusion_tensor.h>
-#include <CGAL/Anisotropic_fairing/internal/Fem_assembly.h>
-#include <CGAL/Anisotropic_fairing/internal/Ghost_layer.h>
-#include <CGAL/Anisotropic_fairing/internal/Local_time_scale.h>
-#include <CGAL/Anisotropic_fairing/internal/Mesh_components.h>
-#include <CGAL/Anisotropic_fairing/internal/Noise_estimate.h>
-#include <CGAL/Anisotropic_fairing/internal/Step_safety.h>
-#include <CGAL/Anisotropic_fairing/internal/Step_system.h>
-#include <CGAL/Anisotropic_fairing/internal/Step_units.h>
-#include <CGAL/Anisotropic_fairing/internal/Stepper_settings.h>
-#include <CGAL/Anisotropic_fairing/internal/Tensor_hooks.h>
-#include <CGAL/Anisotropic_fairing/internal/Vertex_limit_masks.h>
-#include <CGAL/Anisotropic_fairing/internal/Normal_motion.h>
-#include <CGAL/Anisotropic_fairing/internal/Prefilter_step.h>
-#include <CGAL/Anisotropic_fairing/internal/Spd_solvers.h>
-#include <CGAL/Anisotropic_fairing/internal/Solver_choice.h>
-#include <CGAL/Anisotropic_fairing/internal/Stopping_monitor.h>
+#include <CGAL/Anisotropic_fairing/internal/assembly/Fem_assembly.h>
+#include <CGAL/Anisotropic_fairing/internal/mesh/Ghost_layer.h>
+#include <CGAL/Anisotropic_fairing/internal/flow/Local_time_scale.h>
+#include <CGAL/Anisotropic_fairing/internal/mesh/Mesh_components.h>
+#include <CGAL/Anisotropic_fairing/internal/flow/Noise_estimate.h>
+#include <CGAL/Anisotropic_fairing/internal/flow/Step_safety.h>
+#include <CGAL/Anisotropic_fairing/internal/solve/Step_system.h>
+#include <CGAL/Anisotropic_fairing/internal/flow/Step_units.h>
+#include <CGAL/Anisotropic_fairing/internal/flow/Stepper_settings.h>
+#include <CGAL/Anisotropic_fairing/internal/flow/Tensor_hooks.h>
+#include <CGAL/Anisotropic_fairing/internal/loop/Vertex_limit_masks.h>
+#include <CGAL/Anisotropic_fairing/internal/flow/Normal_motion.h>
+#include <CGAL/Anisotropic_fairing/internal/flow/Prefilter_step.h>
+#include <CGAL/Anisotropic_fairing/internal/solve/Spd_solvers.h>
+#include <CGAL/Anisotropic_fairing/internal/solve/Solver_choice.h>
+#include <CGAL/Anisotropic_fairing/internal/flow/Stopping_monitor.h>
 
 #include <algorithm>
 #include <cmath>
@@ -96,7 +97,8 @@ public:
   Fairing_report run(Control_matrix& X, int metric_columns, const Tensor& tensor_in,
                      const Stepper_settings& s, Callback& callback)
   {
-    Stopwatch total;
+    CGAL::Real_timer total;
+    total.start();
     Fairing_report report;
     report.vertices = std::size_t(X.rows());
     report.constrained_vertices = std::size_t(X.rows()) - free_.size();
@@ -108,11 +110,12 @@ public:
     const std::vector<double> mass_weight = s.local_time_scale ? mass_weights(local_time_scale(*layer_.topology, layer_.real_faces, X0,
                                                                                                components_, component_edge_))
                                                                : std::vector<double>();
-    Stopwatch clock;
+    CGAL::Real_timer clock;
+    clock.start();
     Tensor tensor = tensor_in;
     Assembly_statistics a;
     if(!set_units(X, metric_columns, s, tensor, report, a, total)) return report;
-    double assemble_seconds = clock.seconds();
+    double assemble_seconds = clock.time();
     const double time_unit = s.stopping.relative_units ? report.scale * report.scale : 1.0;   // (28), steady speed
     Stopping_monitor monitor(s.stopping, a.H_integral);
 
@@ -133,7 +136,7 @@ public:
     const double first_discrepancy = noise_stop ? std::max(discrepancy, s.noise->relative_displacement(Y, X0, {}, true)) : 0.0;
 
     const Eigen::Index n = X.rows(), k = X.cols(), nfree = Eigen::Index(free_.size());
-    Dense_block R(n, k), B(nfree, k), dX = Dense_block::Zero(nfree, k);
+    Control_matrix R(n, k), B(nfree, k), dX = Control_matrix::Zero(nfree, k);
     Control_matrix Xc, X_previous;
     // the last surface with no more folded edges than the input mesh (or its limit surface): what the
     // run falls back to if the surface it ends on has more
@@ -161,18 +164,18 @@ public:
       st.step = step;
       st.time_step = factor * report.time_step;
       // system and right-hand side at X_n, divided by sys so that a huge tau cannot overflow
-      clock = Stopwatch();
+      clock.reset();
       const double sys = system_scale(factor);
       fill_step_matrix(A_, source_, entry_column_, free_, M_, L_, units_.tau, units_.omega, factor, sys, unknown_scale_, mass_weight);
       step_residual(assembler_.pattern(), M_, L_, units_.tau, units_.omega, X, X0, factor / sys, R, mass_weight);
       for(Eigen::Index i = 0; i < nfree; ++i) B.row(i) = R.row(free_[std::size_t(i)]);
       if(!unknown_scale_.empty())
         for(Eigen::Index i = 0; i < nfree; ++i) B.row(i) /= std::pow(unknown_scale_[std::size_t(free_[std::size_t(i)])], 3);
-      st.assemble_seconds = assemble_seconds + clock.seconds();
+      st.assemble_seconds = assemble_seconds + clock.time();
 
-      clock = Stopwatch();
+      clock.reset();
       const Solve_statistics sol = choice.solve(A_, B, dX, cg, st.direct_solve);   // CG warm-started from the last dX
-      st.solve_seconds = clock.seconds();
+      st.solve_seconds = clock.time();
       choice.record(st.direct_solve, sol, st.solve_seconds);
       report.used_cholesky = report.used_cholesky || st.direct_solve;
       st.solver_iterations = sol.iterations;
@@ -182,7 +185,7 @@ public:
         step_dX_ = dX;
         for(Eigen::Index i = 0; i < nfree; ++i) step_dX_.row(i) *= unknown_scale_[std::size_t(free_[std::size_t(i)])];
       }
-      const Dense_block& dX_model = unknown_scale_.empty() ? dX : step_dX_;
+      const Control_matrix& dX_model = unknown_scale_.empty() ? dX : step_dX_;
       const bool finite = dX_model.allFinite() && std::isfinite(sol.residual);
       if(!sol.ok && finite) return fail(report, Fairing_status::SOLVER_FAILED, "step " + std::to_string(step) + ": " + sol.message, total);
 
@@ -201,7 +204,7 @@ public:
         }
         else move_free_rows(Xc, dX_model, X0, metric_columns, st);
       }
-      clock = Stopwatch();
+      clock.reset();
       save_operator();
       Surface_soundness candidate;
       candidate.finite = finite && Xc.allFinite();
@@ -214,7 +217,7 @@ public:
         candidate.finite = Y.allFinite();
         if(candidate.finite) count_folds(layer_, Cache::has_second_derivatives, components_.of_face, component_edge_, Xc, candidate);
       }
-      assemble_seconds = clock.seconds();
+      assemble_seconds = clock.time();
       std::string why;
       const Step_verdict verdict = judge_step(initial, accepted, input_folds, lowest_H, candidate, why);
       if(verdict == Step_verdict::COLLAPSED)
@@ -314,7 +317,7 @@ public:
                        "); the run ends on the last surface without new folds (step " + std::to_string(unfolded_steps) + ")";
       if(noise_stop) { output_positions(X, Y); report.noise_displacement = s.noise->relative_displacement(Y, X0, {}); }
     }
-    report.total_seconds = total.seconds();
+    report.total_seconds = total.time();
     return report;
   }
 
@@ -328,15 +331,17 @@ public:
   template <typename Tensor, typename Callback>
   Fairing_report run_on_fixed_surface(Control_matrix& X, const Tensor& tensor_in, const Stepper_settings& s, Callback& callback)
   {
-    Stopwatch total;
+    CGAL::Real_timer total;
+    total.start();
     Fairing_report report;
     report.vertices = std::size_t(X.rows());
     report.constrained_vertices = std::size_t(X.rows()) - free_.size();
-    Stopwatch clock;
+    CGAL::Real_timer clock;
+    clock.start();
     Tensor tensor = tensor_in;
     Assembly_statistics a;
     if(!set_units(X, 3, s, tensor, report, a, total)) return report;
-    const double assemble_seconds = clock.seconds();
+    const double assemble_seconds = clock.time();
     const Eigen::Index n = X.rows(), k = X.cols() - 3, nfree = Eigen::Index(free_.size());
     const Control_matrix F0 = X.rightCols(k);
     Control_matrix F = F0;
@@ -367,20 +372,20 @@ public:
     report.used_cholesky = factorise && nfree > 0;
     if(nfree == 0) report.stop_reason = Stop_reason::NO_FREE_VERTEX;
 
-    Dense_block R(n, k), B(nfree, k), dF = Dense_block::Zero(nfree, k);
+    Control_matrix R(n, k), B(nfree, k), dF = Control_matrix::Zero(nfree, k);
     for(std::size_t step = 1; step <= s.maximum_steps && nfree > 0; ++step)
     {
       Fairing_step st;
       st.step = step;
       st.time_step = report.time_step;
       st.time = double(step) * report.time_step;
-      clock = Stopwatch();
+      clock.reset();
       step_residual(assembler_.pattern(), M_, L_, units_.tau, units_.omega, F, F0, 1.0 / sys, R);
       for(Eigen::Index i = 0; i < nfree; ++i) B.row(i) = R.row(free_[std::size_t(i)]);
-      st.assemble_seconds = (step == 1 ? assemble_seconds : 0.0) + clock.seconds();
-      clock = Stopwatch();
+      st.assemble_seconds = (step == 1 ? assemble_seconds : 0.0) + clock.time();
+      clock.reset();
       const Solve_statistics sol = factorise ? cholesky.solve(A_, B, dF) : cg.solve(A_, B, dF);
-      st.solve_seconds = clock.seconds();
+      st.solve_seconds = clock.time();
       st.direct_solve = factorise;
       st.solver_iterations = sol.iterations;
       st.residual = sol.residual;
@@ -399,7 +404,7 @@ public:
       if(stop) break;
     }
     X.rightCols(k) = F;
-    report.total_seconds = total.seconds();
+    report.total_seconds = total.time();
     return report;
   }
 
@@ -417,7 +422,7 @@ private:
   // then M and L(D) at X: false (and a failed report) when the input has no surface.
   template <typename Tensor>
   bool set_units(const Control_matrix& X, int metric_columns, const Stepper_settings& s, Tensor& tensor,
-                 Fairing_report& report, Assembly_statistics& a, const Stopwatch& total)
+                 Fairing_report& report, Assembly_statistics& a, const CGAL::Real_timer& total)
   {
     const bool scaled_tensor = wants_length_scale(tensor, 0);
     std::vector<double> m, l;
@@ -511,7 +516,7 @@ private:
       std::vector<double> Mi, Li;
       assembler_.assemble(X, metric_columns, Isotropic_diffusion_tensor(), Mi, Li);
       if(prefilter_A_.rows() != A_.rows()) prefilter_A_ = A_;
-      Dense_block dX;
+      Control_matrix dX;
       const Solve_statistics sol = prefilter_step(assembler_.pattern(), Mi, Li, eps_, free_, source_, entry_column_, prefilter_A_,
                                                   X, metric_columns, dX);
       if(!sol.ok || !dX.allFinite())
@@ -532,7 +537,7 @@ private:
   // adds the free rows' displacements to X; records the step's and the total (from X0) largest motion
   // over the first `columns` columns; returns the step's
   // (and the same in the units of the relative stopping thresholds: max_relative_, moved_relative_)
-  double move_free_rows(Control_matrix& X, const Dense_block& dX, const Control_matrix& X0, int columns, Fairing_step& st)
+  double move_free_rows(Control_matrix& X, const Control_matrix& dX, const Control_matrix& X0, int columns, Fairing_step& st)
   {
     double moved = 0;
     moved_relative_ = max_relative_ = 0;
@@ -565,7 +570,7 @@ private:
   bool prefiltered_valid_ = false;
   std::string prefilter_error_;
   const Tangential_motion_filter* tangential_filter_ = nullptr;
-  Dense_block normal_dX_;
+  Control_matrix normal_dX_;
   const Ghost_layer& layer_;
   const Mesh_components& components_;
   const std::vector<double>& component_edge_;
@@ -581,11 +586,11 @@ private:
   double moved_relative_ = 0, max_relative_ = 0;
   double limit_weight_ = 1;
   std::vector<double> unknown_scale_;   // per row, with several components (else empty)
-  Dense_block step_dX_;
+  Control_matrix step_dX_;
 };
 
 } // namespace internal
 } // namespace Anisotropic_fairing
 } // namespace CGAL
 
-#endif // CGAL_ANISOTROPIC_FAIRING_INTERNAL_TIME_STEPPER_H
+#endif // CGAL_ANISOTROPIC_FAIRING_INTERNAL_FLOW_TIME_STEPPER_H

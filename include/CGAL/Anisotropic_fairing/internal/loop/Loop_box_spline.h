@@ -4,8 +4,10 @@
 // The 12 quartic box-spline basis functions of a regular Loop patch and their first and second
 // derivatives (Bajaj & Xu 2003, eq. 17-18; Stam 1998).
 
-#ifndef CGAL_ANISOTROPIC_FAIRING_INTERNAL_LOOP_BOX_SPLINE_H
-#define CGAL_ANISOTROPIC_FAIRING_INTERNAL_LOOP_BOX_SPLINE_H
+#ifndef CGAL_ANISOTROPIC_FAIRING_INTERNAL_LOOP_LOOP_BOX_SPLINE_H
+#define CGAL_ANISOTROPIC_FAIRING_INTERNAL_LOOP_LOOP_BOX_SPLINE_H
+
+#include <CGAL/Anisotropic_fairing/internal/types/Stencil_row.h>
 
 #include <array>
 
@@ -13,11 +15,8 @@ namespace CGAL {
 namespace Anisotropic_fairing {
 namespace internal {
 
-/// Rows of a stencil: value, d/dxi1, d/dxi2, d2/dxi1^2, d2/dxi1dxi2, d2/dxi2^2.
-enum Stencil_row { VALUE = 0, D1 = 1, D2 = 2, D11 = 3, D12 = 4, D22 = 5, STENCIL_ROWS = 6 };
-
 /// Values and derivatives of the 12 basis functions at a parameter point; `b[row][i]` belongs to
-/// local control vertex i+1 of the patch numbering (loop-fem.md section 2):
+/// local control vertex i+1 of the patch numbering (doc/Anisotropic_fairing/design/loop-fem.md section 2):
 ///
 ///           1   2
 ///         3   4   5
@@ -125,4 +124,4 @@ public:
 } // namespace Anisotropic_fairing
 } // namespace CGAL
 
-#endif // CGAL_ANISOTROPIC_FAIRING_INTERNAL_LOOP_BOX_SPLINE_H
+#endif // CGAL_ANISOTROPIC_FAIRING_INTERNAL_LOOP_LOOP_BOX_SPLINE_H

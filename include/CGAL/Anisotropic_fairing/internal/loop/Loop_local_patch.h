@@ -9,13 +9,13 @@
 // so on until the child is regular. With one extraordinary vertex this is Stam's scheme; with two
 // or three it branches at the first level. The user's mesh is never changed: a patch is a set of
 // local triangles plus a dense matrix W saying how each local vertex combines the root controls.
-// (loop-fem.md section 4; Bajaj & Xu 2003 section 3.3 with its two errata avoided.)
+// (doc/Anisotropic_fairing/design/loop-fem.md section 4; Bajaj & Xu 2003 section 3.3 with its two errata avoided.)
 
-#ifndef CGAL_ANISOTROPIC_FAIRING_INTERNAL_LOOP_LOCAL_PATCH_H
-#define CGAL_ANISOTROPIC_FAIRING_INTERNAL_LOOP_LOCAL_PATCH_H
+#ifndef CGAL_ANISOTROPIC_FAIRING_INTERNAL_LOOP_LOOP_LOCAL_PATCH_H
+#define CGAL_ANISOTROPIC_FAIRING_INTERNAL_LOOP_LOOP_LOCAL_PATCH_H
 
-#include <CGAL/Anisotropic_fairing/internal/Loop_box_spline.h>
-#include <CGAL/Anisotropic_fairing/internal/Loop_rules.h>
+#include <CGAL/Anisotropic_fairing/internal/loop/Loop_box_spline.h>
+#include <CGAL/Anisotropic_fairing/internal/loop/Loop_rules.h>
 
 #include <algorithm>
 #include <array>
@@ -366,4 +366,4 @@ private:
 } // namespace Anisotropic_fairing
 } // namespace CGAL
 
-#endif // CGAL_ANISOTROPIC_FAIRING_INTERNAL_LOOP_LOCAL_PATCH_H
+#endif // CGAL_ANISOTROPIC_FAIRING_INTERNAL_LOOP_LOOP_LOCAL_PATCH_H

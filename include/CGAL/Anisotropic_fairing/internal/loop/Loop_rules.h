@@ -2,10 +2,10 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 //
 // Loop subdivision weights: the vertex rule a(n), the limit mask chi(n) and the tangent masks.
-// (Bajaj & Xu 2003, eq. 14-15; limit and tangent masks as in loop-fem.md section 1.)
+// (Bajaj & Xu 2003, eq. 14-15; limit and tangent masks as in doc/Anisotropic_fairing/design/loop-fem.md section 1.)
 
-#ifndef CGAL_ANISOTROPIC_FAIRING_INTERNAL_LOOP_RULES_H
-#define CGAL_ANISOTROPIC_FAIRING_INTERNAL_LOOP_RULES_H
+#ifndef CGAL_ANISOTROPIC_FAIRING_INTERNAL_LOOP_LOOP_RULES_H
+#define CGAL_ANISOTROPIC_FAIRING_INTERNAL_LOOP_LOOP_RULES_H
 
 #include <cmath>
 
@@ -42,4 +42,4 @@ inline double loop_tangent_v(int j, int n) { return double(std::sin(2 * loop_pi(
 } // namespace Anisotropic_fairing
 } // namespace CGAL
 
-#endif // CGAL_ANISOTROPIC_FAIRING_INTERNAL_LOOP_RULES_H
+#endif // CGAL_ANISOTROPIC_FAIRING_INTERNAL_LOOP_LOOP_RULES_H

@@ -3,12 +3,12 @@
 //
 // Closed-form limit position and limit tangent plane of a control vertex (no evaluation of patches).
 
-#ifndef CGAL_ANISOTROPIC_FAIRING_INTERNAL_VERTEX_LIMIT_MASKS_H
-#define CGAL_ANISOTROPIC_FAIRING_INTERNAL_VERTEX_LIMIT_MASKS_H
+#ifndef CGAL_ANISOTROPIC_FAIRING_INTERNAL_LOOP_VERTEX_LIMIT_MASKS_H
+#define CGAL_ANISOTROPIC_FAIRING_INTERNAL_LOOP_VERTEX_LIMIT_MASKS_H
 
-#include <CGAL/Anisotropic_fairing/internal/Control_matrix.h>
-#include <CGAL/Anisotropic_fairing/internal/Loop_rules.h>
-#include <CGAL/Anisotropic_fairing/internal/Triangle_topology.h>
+#include <CGAL/Anisotropic_fairing/internal/types/Control_matrix.h>
+#include <CGAL/Anisotropic_fairing/internal/loop/Loop_rules.h>
+#include <CGAL/Anisotropic_fairing/internal/mesh/Triangle_topology.h>
 
 #include <cmath>
 #include <vector>
@@ -85,4 +85,4 @@ inline void vertex_limit_normal(const Triangle_topology& topo, const Control_mat
 } // namespace Anisotropic_fairing
 } // namespace CGAL
 
-#endif // CGAL_ANISOTROPIC_FAIRING_INTERNAL_VERTEX_LIMIT_MASKS_H
+#endif // CGAL_ANISOTROPIC_FAIRING_INTERNAL_LOOP_VERTEX_LIMIT_MASKS_H

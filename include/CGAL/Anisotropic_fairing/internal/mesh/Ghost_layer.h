@@ -3,7 +3,7 @@
 //
 // The ghost layer that closes the fans of boundary vertices, so that every real triangle of a mesh
 // with borders is an ordinary Loop patch (Bajaj & Xu 2003, section 4.3, completed as in
-// loop-fem.md section 6). It lives in a private index space: ghosts are numbered after the real
+// doc/Anisotropic_fairing/design/loop-fem.md section 6). It lives in a private index space: ghosts are numbered after the real
 // vertices and are affine combinations of them (x_ghost = sum_j w_j x_j, sum w_j = 1), so they move
 // with the surface and X_ext = E X. The user's mesh is never touched.
 //
@@ -14,11 +14,11 @@
 //    ghosts h_j = 2v - r_{m-2+j} (point reflections through v).
 // v then has valence m + 2 + c (6 for m <= 3), and on a regular lattice every ghost is a lattice point.
 
-#ifndef CGAL_ANISOTROPIC_FAIRING_INTERNAL_GHOST_LAYER_H
-#define CGAL_ANISOTROPIC_FAIRING_INTERNAL_GHOST_LAYER_H
+#ifndef CGAL_ANISOTROPIC_FAIRING_INTERNAL_MESH_GHOST_LAYER_H
+#define CGAL_ANISOTROPIC_FAIRING_INTERNAL_MESH_GHOST_LAYER_H
 
 #include <CGAL/Anisotropic_fairing/Input_error.h>
-#include <CGAL/Anisotropic_fairing/internal/Triangle_topology.h>
+#include <CGAL/Anisotropic_fairing/internal/mesh/Triangle_topology.h>
 
 #include <Eigen/Core>
 
@@ -72,7 +72,7 @@ inline Ghost_layer make_ghost_layer(std::size_t n, const std::vector<Triangle_to
   Ghost_layer gl;
   gl.real_vertices = n;
   gl.real_faces = faces.size();
-  auto key = [](int a, int b) { return (std::uint64_t(std::uint32_t(a)) << 32) | std::uint32_t(b); };
+  auto key = &Triangle_topology::key;
   for(std::size_t f = 0; f < faces.size(); ++f)
     for(int k = 0; k < 3; ++k)
       if(faces[f][k] < 0 || std::size_t(faces[f][k]) >= n)
@@ -153,4 +153,4 @@ inline Ghost_layer make_ghost_layer(std::size_t n, const std::vector<Triangle_to
 } // namespace Anisotropic_fairing
 } // namespace CGAL
 
-#endif // CGAL_ANISOTROPIC_FAIRING_INTERNAL_GHOST_LAYER_H
+#endif // CGAL_ANISOTROPIC_FAIRING_INTERNAL_MESH_GHOST_LAYER_H

@@ -5,14 +5,14 @@
 // order, the validated Triangle_topology (closed, or closed by a ghost layer), and property maps
 // read into dense matrices (with the checks that keep bad input from reaching the numerics).
 
-#ifndef CGAL_ANISOTROPIC_FAIRING_INTERNAL_INDEXED_MESH_H
-#define CGAL_ANISOTROPIC_FAIRING_INTERNAL_INDEXED_MESH_H
+#ifndef CGAL_ANISOTROPIC_FAIRING_INTERNAL_MESH_INDEXED_MESH_H
+#define CGAL_ANISOTROPIC_FAIRING_INTERNAL_MESH_INDEXED_MESH_H
 
 #include <CGAL/Anisotropic_fairing/Input_error.h>
 #include <CGAL/Anisotropic_fairing/Vector_attribute_traits.h>
-#include <CGAL/Anisotropic_fairing/internal/Control_matrix.h>
-#include <CGAL/Anisotropic_fairing/internal/Ghost_layer.h>
-#include <CGAL/Anisotropic_fairing/internal/Triangle_topology.h>
+#include <CGAL/Anisotropic_fairing/internal/types/Control_matrix.h>
+#include <CGAL/Anisotropic_fairing/internal/mesh/Ghost_layer.h>
+#include <CGAL/Anisotropic_fairing/internal/mesh/Triangle_topology.h>
 
 #include <CGAL/boost/graph/iterator.h>
 #include <CGAL/number_utils.h>
@@ -180,4 +180,4 @@ private:
 } // namespace Anisotropic_fairing
 } // namespace CGAL
 
-#endif // CGAL_ANISOTROPIC_FAIRING_INTERNAL_INDEXED_MESH_H
+#endif // CGAL_ANISOTROPIC_FAIRING_INTERNAL_MESH_INDEXED_MESH_H

@@ -9,10 +9,10 @@
 // Only real vertices and faces are renumbered; the ghost layer of the renumbered mesh is rebuilt
 // (its ghosts follow the faces, so they are local too).
 
-#ifndef CGAL_ANISOTROPIC_FAIRING_INTERNAL_LOCALITY_ORDERING_H
-#define CGAL_ANISOTROPIC_FAIRING_INTERNAL_LOCALITY_ORDERING_H
+#ifndef CGAL_ANISOTROPIC_FAIRING_INTERNAL_MESH_LOCALITY_ORDERING_H
+#define CGAL_ANISOTROPIC_FAIRING_INTERNAL_MESH_LOCALITY_ORDERING_H
 
-#include <CGAL/Anisotropic_fairing/internal/Ghost_layer.h>
+#include <CGAL/Anisotropic_fairing/internal/mesh/Ghost_layer.h>
 
 #include <algorithm>
 #include <memory>
@@ -116,4 +116,4 @@ inline Locality_ordering make_locality_ordering(const Ghost_layer& gl)
 } // namespace Anisotropic_fairing
 } // namespace CGAL
 
-#endif // CGAL_ANISOTROPIC_FAIRING_INTERNAL_LOCALITY_ORDERING_H
+#endif // CGAL_ANISOTROPIC_FAIRING_INTERNAL_MESH_LOCALITY_ORDERING_H

@@ -5,10 +5,10 @@
 // feature threshold, prefilter) are measured per component, so that a small part next to a large
 // one is faired like the same part alone instead of shrinking to a dot in the first step.
 
-#ifndef CGAL_ANISOTROPIC_FAIRING_INTERNAL_MESH_COMPONENTS_H
-#define CGAL_ANISOTROPIC_FAIRING_INTERNAL_MESH_COMPONENTS_H
+#ifndef CGAL_ANISOTROPIC_FAIRING_INTERNAL_MESH_MESH_COMPONENTS_H
+#define CGAL_ANISOTROPIC_FAIRING_INTERNAL_MESH_MESH_COMPONENTS_H
 
-#include <CGAL/Anisotropic_fairing/internal/Triangle_topology.h>
+#include <CGAL/Anisotropic_fairing/internal/mesh/Triangle_topology.h>
 
 #include <cstddef>
 #include <numeric>
@@ -59,4 +59,4 @@ inline Mesh_components make_mesh_components(const Triangle_topology& topo, std::
 } // namespace Anisotropic_fairing
 } // namespace CGAL
 
-#endif // CGAL_ANISOTROPIC_FAIRING_INTERNAL_MESH_COMPONENTS_H
+#endif // CGAL_ANISOTROPIC_FAIRING_INTERNAL_MESH_MESH_COMPONENTS_H

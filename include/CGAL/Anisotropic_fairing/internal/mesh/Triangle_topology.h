@@ -5,8 +5,8 @@
 // (patch categories, assembly) works on indices only, so it does not depend on the FaceGraph
 // model, and a ghost layer can later extend it without touching the user's mesh.
 
-#ifndef CGAL_ANISOTROPIC_FAIRING_INTERNAL_TRIANGLE_TOPOLOGY_H
-#define CGAL_ANISOTROPIC_FAIRING_INTERNAL_TRIANGLE_TOPOLOGY_H
+#ifndef CGAL_ANISOTROPIC_FAIRING_INTERNAL_MESH_TRIANGLE_TOPOLOGY_H
+#define CGAL_ANISOTROPIC_FAIRING_INTERNAL_MESH_TRIANGLE_TOPOLOGY_H
 
 #include <CGAL/Anisotropic_fairing/Input_error.h>
 
@@ -76,11 +76,13 @@ public:
     do { *out++ = target(h); h = ccw(h); } while(h != h0);
   }
 
-private:
+  /// a key of the directed edge (a, b), for hashing
   static std::uint64_t key(int a, int b)
   {
     return (std::uint64_t(std::uint32_t(a)) << 32) | std::uint32_t(b);
   }
+
+private:
 
   void build()
   {
@@ -166,4 +168,4 @@ private:
 } // namespace Anisotropic_fairing
 } // namespace CGAL
 
-#endif // CGAL_ANISOTROPIC_FAIRING_INTERNAL_TRIANGLE_TOPOLOGY_H
+#endif // CGAL_ANISOTROPIC_FAIRING_INTERNAL_MESH_TRIANGLE_TOPOLOGY_H

@@ -15,8 +15,8 @@
 //    With the strongly falling edge-stopping function most of a noisy surface diffuses slowly, and the
 //    noise criterion runs it long enough; twice the threshold lost 1.7-3.6 degrees on CAD pairs.
 
-#ifndef CGAL_ANISOTROPIC_FAIRING_INTERNAL_AUTOMATIC_PARAMETERS_H
-#define CGAL_ANISOTROPIC_FAIRING_INTERNAL_AUTOMATIC_PARAMETERS_H
+#ifndef CGAL_ANISOTROPIC_FAIRING_INTERNAL_RUN_AUTOMATIC_PARAMETERS_H
+#define CGAL_ANISOTROPIC_FAIRING_INTERNAL_RUN_AUTOMATIC_PARAMETERS_H
 
 namespace CGAL {
 namespace Anisotropic_fairing {
@@ -33,4 +33,4 @@ struct Automatic_parameters
 } // namespace Anisotropic_fairing
 } // namespace CGAL
 
-#endif // CGAL_ANISOTROPIC_FAIRING_INTERNAL_AUTOMATIC_PARAMETERS_H
+#endif // CGAL_ANISOTROPIC_FAIRING_INTERNAL_RUN_AUTOMATIC_PARAMETERS_H

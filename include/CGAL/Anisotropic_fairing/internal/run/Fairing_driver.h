@@ -5,8 +5,8 @@
 // validate, read the maps into matrices, close the borders by a ghost layer and hold them, pick the
 // element, run the time stepper, and write the result back only if the run succeeded.
 
-#ifndef CGAL_ANISOTROPIC_FAIRING_INTERNAL_FAIRING_DRIVER_H
-#define CGAL_ANISOTROPIC_FAIRING_INTERNAL_FAIRING_DRIVER_H
+#ifndef CGAL_ANISOTROPIC_FAIRING_INTERNAL_RUN_FAIRING_DRIVER_H
+#define CGAL_ANISOTROPIC_FAIRING_INTERNAL_RUN_FAIRING_DRIVER_H
 
 #include <CGAL/Anisotropic_fairing/Fairing_report.h>
 #include <CGAL/Anisotropic_fairing/Fairing_settings.h>
@@ -16,18 +16,18 @@
 #include <CGAL/Anisotropic_fairing/Vector_attribute_traits.h>
 #include <CGAL/Anisotropic_fairing/named_function_parameters.h>
 #include <CGAL/Anisotropic_fairing/Anisotropic_diffusion_tensor.h>
-#include <CGAL/Anisotropic_fairing/internal/Automatic_parameters.h>
-#include <CGAL/Anisotropic_fairing/internal/Tensor_selection.h>
-#include <CGAL/Anisotropic_fairing/internal/Boundary_constraints.h>
-#include <CGAL/Anisotropic_fairing/internal/Ghosted_patch_cache.h>
-#include <CGAL/Anisotropic_fairing/internal/Indexed_mesh.h>
-#include <CGAL/Anisotropic_fairing/internal/Linear_element_cache.h>
-#include <CGAL/Anisotropic_fairing/internal/Locality_ordering.h>
-#include <CGAL/Anisotropic_fairing/internal/Mesh_components.h>
-#include <CGAL/Anisotropic_fairing/internal/Noise_estimate.h>
-#include <CGAL/Anisotropic_fairing/internal/Tensor_hooks.h>
-#include <CGAL/Anisotropic_fairing/internal/Time_stepper.h>
-#include <CGAL/Anisotropic_fairing/internal/Vertex_limit_masks.h>
+#include <CGAL/Anisotropic_fairing/internal/run/Automatic_parameters.h>
+#include <CGAL/Anisotropic_fairing/internal/run/Tensor_selection.h>
+#include <CGAL/Anisotropic_fairing/internal/flow/Boundary_constraints.h>
+#include <CGAL/Anisotropic_fairing/internal/element/Ghosted_patch_cache.h>
+#include <CGAL/Anisotropic_fairing/internal/mesh/Indexed_mesh.h>
+#include <CGAL/Anisotropic_fairing/internal/element/Linear_element_cache.h>
+#include <CGAL/Anisotropic_fairing/internal/mesh/Locality_ordering.h>
+#include <CGAL/Anisotropic_fairing/internal/mesh/Mesh_components.h>
+#include <CGAL/Anisotropic_fairing/internal/flow/Noise_estimate.h>
+#include <CGAL/Anisotropic_fairing/internal/flow/Tensor_hooks.h>
+#include <CGAL/Anisotropic_fairing/internal/flow/Time_stepper.h>
+#include <CGAL/Anisotropic_fairing/internal/loop/Vertex_limit_masks.h>
 
 #include <CGAL/property_map.h>
 
@@ -105,7 +105,8 @@ Fairing_report run_stepper(const Cache& cache, const Locality_ordering& ordering
                            const Tensor& tensor, const Stepper_settings& s, Callback& callback, double& setup_seconds,
                            double& limit_weight)
 {
-  const Stopwatch clock;
+  CGAL::Real_timer clock;
+  clock.start();
   // with automatic parameters, the isotropic and the uniform flow's time step follows the mesh's density
   // (Local_time_scale.h)
   Stepper_settings settings = s;
@@ -118,7 +119,7 @@ Fairing_report run_stepper(const Cache& cache, const Locality_ordering& ordering
   stepper.assembler().use_original_indices(&ordering.old_of_new_vertex, &ordering.old_of_new_face);
   stepper.assembler().exclude_from_curvature(&border);
   const int metric_columns = mode == Attribute_mode::COUPLED ? int(X.cols()) : 3;
-  setup_seconds += clock.seconds();
+  setup_seconds += clock.time();
   if(mode == Attribute_mode::ATTRIBUTES_ONLY) return stepper.run_on_fixed_surface(X, tensor, settings, callback);
   Fairing_report report = stepper.run(X, metric_columns, tensor, settings, callback);
   report.normal_motion_only = normal_motion;
@@ -176,7 +177,8 @@ Fairing_report fair(TriangleMesh& tm, VertexPointMap vpm, AttributeMap attribute
   using parameters::is_default_parameter;
   typedef typename boost::graph_traits<TriangleMesh>::vertex_descriptor vertex_descriptor;
   typedef typename boost::property_traits<VertexPointMap>::value_type Point;
-  Stopwatch total;
+  CGAL::Real_timer total;
+  total.start();
 
   // parameters; without a time step the package chooses the time step, the stopping rule and (unless
   // given) the tensor from the mesh (Automatic_parameters.h)
@@ -239,7 +241,8 @@ Fairing_report fair(TriangleMesh& tm, VertexPointMap vpm, AttributeMap attribute
   const Control_matrix A = mode == Attribute_mode::GEOMETRY_ONLY ? Control_matrix() : read_attribute_columns(im, attributes);
   const std::size_t n = im.number_of_vertices();
 
-  Stopwatch setup;
+  CGAL::Real_timer setup;
+  setup.start();
   // the solver works in a private, cache-friendly numbering (row i of X is vertex old_of_new_vertex[i])
   // (the ghost layer of a mesh with borders is rebuilt in that numbering)
   const Locality_ordering ordering = make_locality_ordering(im.ghost_layer());
@@ -328,7 +331,7 @@ Fairing_report fair(TriangleMesh& tm, VertexPointMap vpm, AttributeMap attribute
   {
     Ghosted_patch_cache cache(layer, spec);
     boundary_held = hold(boundary_constrained_vertices(layer, cache, boundary == Boundary_handling::HOLD_BOUNDARY_CURVE));
-    setup_seconds = setup.seconds();
+    setup_seconds = setup.time();
     auto run = [&](const auto& t, Control_matrix& Y) {
       Y = input;
       double limit_weight = 1;
@@ -350,7 +353,7 @@ Fairing_report fair(TriangleMesh& tm, VertexPointMap vpm, AttributeMap attribute
   {
     Linear_element_cache cache(*layer.topology, layer.real_faces);
     boundary_held = hold(border);
-    setup_seconds = setup.seconds();
+    setup_seconds = setup.time();
     auto run = [&](const auto& t, Control_matrix& Y) {
       Y = input;
       double limit_weight = 1;   // the linear element writes its control points: no limit surface to approach
@@ -390,7 +393,7 @@ Fairing_report fair(TriangleMesh& tm, VertexPointMap vpm, AttributeMap attribute
     }
     if(A.cols() > 0) write_attribute_columns(im, attributes, result, 3, keep);
   }
-  report.total_seconds = total.seconds();
+  report.total_seconds = total.time();
   return report;
 }
 
@@ -398,4 +401,4 @@ Fairing_report fair(TriangleMesh& tm, VertexPointMap vpm, AttributeMap attribute
 } // namespace Anisotropic_fairing
 } // namespace CGAL
 
-#endif // CGAL_ANISOTROPIC_FAIRING_INTERNAL_FAIRING_DRIVER_H
+#endif // CGAL_ANISOTROPIC_FAIRING_INTERNAL_RUN_FAIRING_DRIVER_H

@@ -14,12 +14,12 @@
 // keeps creases, and on a graded triangulation the uniform weights smooth every region over the same
 // number of rings (on evenly triangulated meshes the two are close).
 
-#ifndef CGAL_ANISOTROPIC_FAIRING_INTERNAL_TENSOR_SELECTION_H
-#define CGAL_ANISOTROPIC_FAIRING_INTERNAL_TENSOR_SELECTION_H
+#ifndef CGAL_ANISOTROPIC_FAIRING_INTERNAL_RUN_TENSOR_SELECTION_H
+#define CGAL_ANISOTROPIC_FAIRING_INTERNAL_RUN_TENSOR_SELECTION_H
 
-#include <CGAL/Anisotropic_fairing/internal/Control_matrix.h>
-#include <CGAL/Anisotropic_fairing/internal/Step_safety.h>
-#include <CGAL/Anisotropic_fairing/internal/Triangle_topology.h>
+#include <CGAL/Anisotropic_fairing/internal/types/Control_matrix.h>
+#include <CGAL/Anisotropic_fairing/internal/flow/Step_safety.h>
+#include <CGAL/Anisotropic_fairing/internal/mesh/Triangle_topology.h>
 
 #include <algorithm>
 #include <cmath>
@@ -54,4 +54,4 @@ inline double normal_variation(const Triangle_topology& topo, std::size_t real_f
 } // namespace Anisotropic_fairing
 } // namespace CGAL
 
-#endif // CGAL_ANISOTROPIC_FAIRING_INTERNAL_TENSOR_SELECTION_H
+#endif // CGAL_ANISOTROPIC_FAIRING_INTERNAL_RUN_TENSOR_SELECTION_H

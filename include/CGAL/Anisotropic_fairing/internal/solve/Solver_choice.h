@@ -3,11 +3,12 @@
 //
 // Which linear solver runs each time step when the user leaves the choice to the package.
 
-#ifndef CGAL_ANISOTROPIC_FAIRING_INTERNAL_SOLVER_CHOICE_H
-#define CGAL_ANISOTROPIC_FAIRING_INTERNAL_SOLVER_CHOICE_H
+#ifndef CGAL_ANISOTROPIC_FAIRING_INTERNAL_SOLVE_SOLVER_CHOICE_H
+#define CGAL_ANISOTROPIC_FAIRING_INTERNAL_SOLVE_SOLVER_CHOICE_H
 
+#include <CGAL/Anisotropic_fairing/internal/types/Control_matrix.h>
 #include <CGAL/Anisotropic_fairing/Fairing_settings.h>
-#include <CGAL/Anisotropic_fairing/internal/Spd_solvers.h>
+#include <CGAL/Anisotropic_fairing/internal/solve/Spd_solvers.h>
 
 #include <algorithm>
 #include <cmath>
@@ -42,7 +43,7 @@ public:
 
   /// Solves A X = B the chosen way (X holds the initial guess of conjugate gradients); a conjugate-
   /// gradient solve that fails is retried by the factorisation when allowed. `direct`: how it was solved.
-  Solve_statistics solve(const Eigen::SparseMatrix<double>& A, const Dense_block& B, Dense_block& X,
+  Solve_statistics solve(const Eigen::SparseMatrix<double>& A, const Control_matrix& B, Control_matrix& X,
                          Block_conjugate_gradient& cg, bool& direct)
   {
     direct = factorise_now();
@@ -87,11 +88,11 @@ private:
   double predicted_iterate_seconds_ = 0, factorised_seconds_ = HUGE_VAL;
   int previous_iterations_ = 0;
   std::unique_ptr<Sparse_cholesky> cholesky_;
-  Dense_block start_;
+  Control_matrix start_;
 };
 
 } // namespace internal
 } // namespace Anisotropic_fairing
 } // namespace CGAL
 
-#endif // CGAL_ANISOTROPIC_FAIRING_INTERNAL_SOLVER_CHOICE_H
+#endif // CGAL_ANISOTROPIC_FAIRING_INTERNAL_SOLVE_SOLVER_CHOICE_H

@@ -7,9 +7,10 @@
 // by the topology. Both solve for the step's displacement, whose right-hand side does not depend on
 // where the model sits in space, so a relative residual means the same on every model.
 
-#ifndef CGAL_ANISOTROPIC_FAIRING_INTERNAL_SPD_SOLVERS_H
-#define CGAL_ANISOTROPIC_FAIRING_INTERNAL_SPD_SOLVERS_H
+#ifndef CGAL_ANISOTROPIC_FAIRING_INTERNAL_SOLVE_SPD_SOLVERS_H
+#define CGAL_ANISOTROPIC_FAIRING_INTERNAL_SOLVE_SPD_SOLVERS_H
 
+#include <CGAL/Anisotropic_fairing/internal/types/Control_matrix.h>
 #include <Eigen/Core>
 #include <Eigen/SparseCholesky>
 #include <Eigen/SparseCore>
@@ -29,7 +30,6 @@ namespace CGAL {
 namespace Anisotropic_fairing {
 namespace internal {
 
-typedef Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, Eigen::RowMajor> Dense_block;
 
 struct Solve_statistics
 {
@@ -41,7 +41,7 @@ struct Solve_statistics
 };
 
 /// Y = A X for a symmetric matrix stored in full (column j = row j), X and Y with one row per unknown.
-inline void symmetric_product(const Eigen::SparseMatrix<double>& A, const Dense_block& X, Dense_block& Y)
+inline void symmetric_product(const Eigen::SparseMatrix<double>& A, const Control_matrix& X, Control_matrix& Y)
 {
   Y.resize(X.rows(), X.cols());
   const int* outer = A.outerIndexPtr();
@@ -72,23 +72,15 @@ inline void symmetric_product(const Eigen::SparseMatrix<double>& A, const Dense_
   range(0, X.rows());
 }
 
-class Spd_solver
-{
-public:
-  virtual ~Spd_solver() {}
-  /// Solves A X = B; X holds the initial guess on entry (used by iterative solvers).
-  virtual Solve_statistics solve(const Eigen::SparseMatrix<double>& A, const Dense_block& B, Dense_block& X) = 0;
-};
-
 /// Jacobi-preconditioned conjugate gradients on all columns at once; a column stops updating once
 /// its residual is below tolerance * |b|.
-class Block_conjugate_gradient : public Spd_solver
+class Block_conjugate_gradient
 {
 public:
   Block_conjugate_gradient(double tolerance, int max_iterations)
     : tolerance_(tolerance), max_iterations_(max_iterations) {}
 
-  Solve_statistics solve(const Eigen::SparseMatrix<double>& A, const Dense_block& B, Dense_block& X) override
+  Solve_statistics solve(const Eigen::SparseMatrix<double>& A, const Control_matrix& B, Control_matrix& X)
   {
     Solve_statistics st;
     const Eigen::Index n = B.rows(), k = B.cols();
@@ -161,8 +153,8 @@ public:
 
 private:
   // the reported residual is recomputed from scratch, not the recurrence's
-  Solve_statistics& finish(Solve_statistics& st, const Eigen::SparseMatrix<double>& A, const Dense_block& B,
-                           const Dense_block& X, const std::vector<double>& bnorm, int it)
+  Solve_statistics& finish(Solve_statistics& st, const Eigen::SparseMatrix<double>& A, const Control_matrix& B,
+                           const Control_matrix& X, const std::vector<double>& bnorm, int it)
   {
     st.iterations = it;
     symmetric_product(A, X, AP_);
@@ -176,15 +168,15 @@ private:
 
   double tolerance_;
   int max_iterations_;
-  Dense_block R_, Z_, P_, AP_;
+  Control_matrix R_, Z_, P_, AP_;
 };
 
 /// Sparse LDL^T (fill-reducing ordering and symbolic analysis on the first call, numeric
 /// factorisation on every call).
-class Sparse_cholesky : public Spd_solver
+class Sparse_cholesky
 {
 public:
-  Solve_statistics solve(const Eigen::SparseMatrix<double>& A, const Dense_block& B, Dense_block& X) override
+  Solve_statistics solve(const Eigen::SparseMatrix<double>& A, const Control_matrix& B, Control_matrix& X)
   {
     Solve_statistics st;
     if(!analysed_)
@@ -231,4 +223,4 @@ private:
 } // namespace Anisotropic_fairing
 } // namespace CGAL
 
-#endif // CGAL_ANISOTROPIC_FAIRING_INTERNAL_SPD_SOLVERS_H
+#endif // CGAL_ANISOTROPIC_FAIRING_INTERNAL_SOLVE_SPD_SOLVERS_H

@@ -6,10 +6,10 @@
 // time scale s (Local_time_scale.h) M_ij stands for M_ij w_i w_j in both sides, w_i = 1 / sqrt(s_i)
 // (`mass_weight`, empty: none).
 
-#ifndef CGAL_ANISOTROPIC_FAIRING_INTERNAL_STEP_SYSTEM_H
-#define CGAL_ANISOTROPIC_FAIRING_INTERNAL_STEP_SYSTEM_H
+#ifndef CGAL_ANISOTROPIC_FAIRING_INTERNAL_SOLVE_STEP_SYSTEM_H
+#define CGAL_ANISOTROPIC_FAIRING_INTERNAL_SOLVE_STEP_SYSTEM_H
 
-#include <CGAL/Anisotropic_fairing/internal/Control_matrix.h>
+#include <CGAL/Anisotropic_fairing/internal/types/Control_matrix.h>
 
 #include <Eigen/Dense>
 #include <Eigen/SparseCore>
@@ -77,4 +77,4 @@ inline void step_residual(const Eigen::SparseMatrix<double>& pattern, const std:
 } // namespace Anisotropic_fairing
 } // namespace CGAL
 
-#endif // CGAL_ANISOTROPIC_FAIRING_INTERNAL_STEP_SYSTEM_H
+#endif // CGAL_ANISOTROPIC_FAIRING_INTERNAL_SOLVE_STEP_SYSTEM_H

@@ -7,12 +7,12 @@
 // Only the faces of the patch cache are refined: with a ghost layer these are the real faces, so the
 // output keeps the user's borders (a border edge has one face, hence its points are written once).
 
-#ifndef CGAL_ANISOTROPIC_FAIRING_INTERNAL_LIMIT_RESAMPLER_H
-#define CGAL_ANISOTROPIC_FAIRING_INTERNAL_LIMIT_RESAMPLER_H
+#ifndef CGAL_ANISOTROPIC_FAIRING_INTERNAL_SURFACE_LIMIT_RESAMPLER_H
+#define CGAL_ANISOTROPIC_FAIRING_INTERNAL_SURFACE_LIMIT_RESAMPLER_H
 
-#include <CGAL/Anisotropic_fairing/internal/Control_matrix.h>
-#include <CGAL/Anisotropic_fairing/internal/Patch_cache.h>
-#include <CGAL/Anisotropic_fairing/internal/Vertex_limit_masks.h>
+#include <CGAL/Anisotropic_fairing/internal/types/Control_matrix.h>
+#include <CGAL/Anisotropic_fairing/internal/element/Patch_cache.h>
+#include <CGAL/Anisotropic_fairing/internal/loop/Vertex_limit_masks.h>
 
 #include <algorithm>
 #include <array>
@@ -187,4 +187,4 @@ inline Resampled_surface resample_limit_surface(const Triangle_topology& topo, c
 } // namespace Anisotropic_fairing
 } // namespace CGAL
 
-#endif // CGAL_ANISOTROPIC_FAIRING_INTERNAL_LIMIT_RESAMPLER_H
+#endif // CGAL_ANISOTROPIC_FAIRING_INTERNAL_SURFACE_LIMIT_RESAMPLER_H

@@ -10,15 +10,16 @@
 // diagonalised there. The singularities are integrable, the quadrature points lie inside the faces,
 // and on a smooth surface the average is second-order accurate (the star is symmetric to first order).
 
-#ifndef CGAL_ANISOTROPIC_FAIRING_INTERNAL_VERTEX_CURVATURE_H
-#define CGAL_ANISOTROPIC_FAIRING_INTERNAL_VERTEX_CURVATURE_H
+#ifndef CGAL_ANISOTROPIC_FAIRING_INTERNAL_SURFACE_VERTEX_CURVATURE_H
+#define CGAL_ANISOTROPIC_FAIRING_INTERNAL_SURFACE_VERTEX_CURVATURE_H
 
 #include <CGAL/Anisotropic_fairing/Quadrature_point_geometry.h>
 #include <CGAL/Anisotropic_fairing/Surface_curvature.h>
-#include <CGAL/Anisotropic_fairing/internal/Control_matrix.h>
-#include <CGAL/Anisotropic_fairing/internal/Patch_cache.h>
-#include <CGAL/Anisotropic_fairing/internal/Triangle_topology.h>
-#include <CGAL/Anisotropic_fairing/internal/Vertex_limit_masks.h>
+#include <CGAL/Anisotropic_fairing/internal/types/Control_matrix.h>
+#include <CGAL/Anisotropic_fairing/internal/types/Symmetric_2x2_eigen.h>
+#include <CGAL/Anisotropic_fairing/internal/element/Patch_cache.h>
+#include <CGAL/Anisotropic_fairing/internal/mesh/Triangle_topology.h>
+#include <CGAL/Anisotropic_fairing/internal/loop/Vertex_limit_masks.h>
 
 #include <array>
 #include <cmath>
@@ -125,19 +126,14 @@ averaged_vertex_curvatures(const Triangle_topology& topo, const Patch_cache& cac
     const double s11 = u1[0] * y1[0] + u1[1] * y1[1] + u1[2] * y1[2];
     const double s12 = 0.5 * (u2[0] * y1[0] + u2[1] * y1[1] + u2[2] * y1[2] + u1[0] * y2[0] + u1[1] * y2[1] + u1[2] * y2[2]);
     const double s22 = u2[0] * y2[0] + u2[1] * y2[1] + u2[2] * y2[2];
-    const double mean = 0.5 * (s11 + s22), dev = std::hypot(0.5 * (s11 - s22), s12);
+    const Symmetric_2x2_eigen e = symmetric_2x2_eigen(s11, s12, s22);
     Vertex_curvature_value& r = out[v];
-    r.k1 = mean - dev;
-    r.k2 = mean + dev;
-    double c1x, c1y;   // eigenvector of k1 in (u1, u2), from the better conditioned row
-    if(dev == 0) { c1x = 1; c1y = 0; }
-    else if(s11 - r.k1 >= s22 - r.k1) { c1x = -s12; c1y = s11 - r.k1; }
-    else { c1x = s22 - r.k1; c1y = -s12; }
-    const double l = std::hypot(c1x, c1y);
-    c1x /= l; c1y /= l;
+    r.k1 = e.k1;
+    r.k2 = e.k2;
+    const double c1x = e.x, c1y = e.y;   // the eigenvector of k1 in (u1, u2)
     for(int c = 0; c < 3; ++c)
     {
-      r.H[std::size_t(c)] = mean * n[c];
+      r.H[std::size_t(c)] = e.mean * n[c];
       r.d1[std::size_t(c)] = c1x * u1[c] + c1y * u2[c];
       r.d2[std::size_t(c)] = -c1y * u1[c] + c1x * u2[c];
     }
@@ -149,4 +145,4 @@ averaged_vertex_curvatures(const Triangle_topology& topo, const Patch_cache& cac
 } // namespace Anisotropic_fairing
 } // namespace CGAL
 
-#endif // CGAL_ANISOTROPIC_FAIRING_INTERNAL_VERTEX_CURVATURE_H
+#endif // CGAL_ANISOTROPIC_FAIRING_INTERNAL_SURFACE_VERTEX_CURVATURE_H

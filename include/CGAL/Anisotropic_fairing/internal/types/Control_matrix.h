@@ -4,8 +4,8 @@
 // Control points (or any per-vertex data) as a dense matrix: one row per vertex, one column per
 // coordinate. Row-major, so a vertex's kappa values are contiguous when gathered into a ring.
 
-#ifndef CGAL_ANISOTROPIC_FAIRING_INTERNAL_CONTROL_MATRIX_H
-#define CGAL_ANISOTROPIC_FAIRING_INTERNAL_CONTROL_MATRIX_H
+#ifndef CGAL_ANISOTROPIC_FAIRING_INTERNAL_TYPES_CONTROL_MATRIX_H
+#define CGAL_ANISOTROPIC_FAIRING_INTERNAL_TYPES_CONTROL_MATRIX_H
 
 #include <Eigen/Core>
 
@@ -19,4 +19,4 @@ typedef Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, Eigen::RowMajor> C
 } // namespace Anisotropic_fairing
 } // namespace CGAL
 
-#endif // CGAL_ANISOTROPIC_FAIRING_INTERNAL_CONTROL_MATRIX_H
+#endif // CGAL_ANISOTROPIC_FAIRING_INTERNAL_TYPES_CONTROL_MATRIX_H
