@@ -288,7 +288,7 @@ const char* const help_before_options =
 "\n"
 "Without --time-step and --relative-time-step the parameters are automatic: the program estimates\n"
 "the noise of the mesh itself, fairs with the anisotropic tensor (unless --tensor says otherwise) in\n"
-"steps of 0.1 h^2 (h: the mean edge length) and stops when the surface has moved off the input by\n"
+"steps of 0.3 h^2 (h: the mean edge length) and stops when the surface has moved off the input by\n"
 "the noise (a noise-free mesh is left nearly as it is); the report's choices say what was chosen.\n"
 "\n"
 "options:\n";
