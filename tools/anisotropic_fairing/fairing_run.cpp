@@ -9,7 +9,8 @@
 //    library's Output_positions::LIMIT_SURFACE to the same control points, so the positions are the
 //    ones a LIMIT_SURFACE run writes up to the order of the floating-point sums (about 1e-16
 //    relative; the test cli_limit_normals_keep_positions checks 1e-14 absolute on bumpy.off), and the
-//    normals are the exact normals of the faired limit surface at those points.
+//    normals are the exact normals of the faired limit surface at those points (write_limit_surface()
+//    says where this differs from the library's write-back).
 //  - `--output control` or the linear element: the written mesh is the surface itself (control
 //    polygon or P1 surface), so the normals are CGAL::Polygon_mesh_processing::compute_vertex_normals.
 // Without input normals (and without --curvature) the library's LIMIT_SURFACE output is used directly
@@ -78,6 +79,39 @@ std::string strip_library_prefix(const std::string& what)
 {
   const std::string prefix = "Anisotropic_fairing: ";
   return what.compare(0, prefix.size(), prefix) == 0 ? what.substr(prefix.size()) : what;
+}
+
+typedef AF::Loop_limit_surface<Mesh> Limit;
+
+// The library's Output_positions::LIMIT_SURFACE write-back, redone on the faired control points that
+// the mesh holds: the exact limit normals (and the curvature) need those control points, which that
+// output replaces, and the library has no public call that writes the limit points and also returns
+// the control points. As the library does, boundary and isolated vertices keep their (held) positions
+// and attribute values. Two differences, kept so that the program's output does not change:
+//  - the positions agree with the library's to the order of the floating-point sums (about 1 ulp;
+//    cli_limit_normals_keep_positions checks 1e-14 on bumpy.off);
+//  - when the noise stop ends a run before its first step (the input's own limit surface is already
+//    off it by more than the noise), the library writes a blend of the input and its limit points
+//    (Time_stepper's limit weight); this writes the limit points themselves.
+void write_limit_surface(Mesh& mesh, const Limit& limit, bool normals, std::vector<std::vector<double>>* attribute_values)
+{
+  if(normals) limit.limit_normals(mesh.property_map<Vertex_index, Vector>("v:normal").first);
+  std::vector<std::pair<Vertex_index, Point>> held;
+  std::vector<std::pair<Vertex_index, std::vector<double>>> held_values;
+  for(Vertex_index v : mesh.vertices())
+    if(mesh.is_border(v) || mesh.is_isolated(v))
+    {
+      held.emplace_back(v, mesh.point(v));
+      if(attribute_values) held_values.emplace_back(v, (*attribute_values)[std::size_t(v)]);
+    }
+  limit.limit_positions(mesh.points());
+  if(attribute_values)
+  {
+    const Attribute_vectors map{attribute_values};
+    limit.limit_values(map, map);
+  }
+  for(const auto& h : held) mesh.point(h.first) = h.second;
+  for(const auto& h : held_values) (*attribute_values)[std::size_t(h.first)] = h.second;
 }
 
 } // namespace
@@ -192,7 +226,6 @@ int run(const Options& o, Run_record& r)
     // points written, whose limit surface is the faired or fixed surface). The limit surface is a
     // snapshot: one serves the curvature and the limit positions and normals. Only the curvature's
     // averages use the quadrature (the run's degree); otherwise degree 4 is the cheapest set-up.
-    typedef AF::Loop_limit_surface<Mesh> Limit;
     const Limit limit(mesh, AF::parameters::quadrature_degree(o.curvature ? o.quadrature_degree : 4));
     if(o.curvature)
     {
@@ -211,22 +244,7 @@ int run(const Options& o, Run_record& r)
       r.curvature = true;
     }
     if(limit_from_control)
-    {
-      if(exact_limit_normals) limit.limit_normals(mesh.property_map<Vertex_index, Vector>("v:normal").first);
-      // as in the library's limit output, boundary and isolated vertices keep their (held) positions and attributes
-      std::vector<std::pair<Vertex_index, Point>> held;
-      std::vector<std::pair<Vertex_index, std::vector<double>>> held_values;
-      for(Vertex_index v : mesh.vertices())
-        if(mesh.is_border(v) || mesh.is_isolated(v))
-        {
-          held.emplace_back(v, mesh.point(v));
-          if(fair_attributes) held_values.emplace_back(v, attribute_values[std::size_t(v)]);
-        }
-      limit.limit_positions(mesh.points());
-      if(fair_attributes) limit.limit_values(attribute_map, attribute_map);
-      for(const auto& h : held) mesh.point(h.first) = h.second;
-      for(const auto& h : held_values) attribute_values[std::size_t(h.first)] = h.second;
-    }
+      write_limit_surface(mesh, limit, exact_limit_normals, fair_attributes ? &attribute_values : nullptr);
   }
   if(info.has_normals)
   {
