@@ -1,0 +1,35 @@
+// The JSON report of anisotropic_fairing (--report): what was asked, what the run chose and did,
+// and the statistics of every step; written on success and on failure (with status and message).
+// Numbers have 17 significant digits; unknown or non-finite values are null. The keys and their
+// meaning are a public interface (README, JSON report table): change them only with the README.
+#ifndef AF_TOOL_JSON_REPORT_H
+#define AF_TOOL_JSON_REPORT_H
+
+#include "options.h"
+
+#include <CGAL/Anisotropic_fairing/Fairing_report.h>
+
+#include <cstddef>
+#include <string>
+
+namespace af_tool {
+
+// What the program did, for the report: filled as the run goes.
+struct Run_record
+{
+  std::string status = "success";
+  std::string message;
+  bool mesh_read = false;
+  std::size_t vertices = 0, faces = 0;
+  bool fairing_ran = false;
+  AF::Fairing_report report;
+  std::string normals = "none";
+  bool curvature = false;   // k1, k2, mean_curvature were added to the output
+  bool output_written = false;
+};
+
+std::string report_json(const Options& o, const Run_record& r, double wall_seconds);
+
+} // namespace af_tool
+
+#endif // AF_TOOL_JSON_REPORT_H

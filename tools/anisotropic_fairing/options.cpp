@@ -1,0 +1,460 @@
+// The options of anisotropic_fairing. The table `option_table` is the one list of the options: the
+// parser reads it, the help text is made from it, and the test cli_option_docs checks that the
+// README's option table and the manual name exactly its flags.
+#include "options.h"
+
+#include <CGAL/Anisotropic_fairing/Fairing_settings.h>
+
+#include <algorithm>
+#include <cctype>
+#include <cerrno>
+#include <cmath>
+#include <cstdlib>
+#include <filesystem>
+#include <limits>
+#include <string>
+#include <vector>
+
+namespace af_tool {
+namespace fs = std::filesystem;
+
+namespace {
+
+// "quality,red" -> {"quality", "red"}; blanks around a name are ignored
+std::vector<std::string> parse_attribute_list(const std::string& text)
+{
+  std::vector<std::string> names;
+  std::string::size_type start = 0;
+  for(;;)
+  {
+    const std::string::size_type comma = text.find(',', start);
+    std::string name = text.substr(start, comma == std::string::npos ? std::string::npos : comma - start);
+    const std::string::size_type b = name.find_first_not_of(" \t"), e = name.find_last_not_of(" \t");
+    name = b == std::string::npos ? std::string() : name.substr(b, e - b + 1);
+    if(name.empty()) usage_error("--attributes expects NAME,NAME,..., not '" + text + "'");
+    if(std::find(names.begin(), names.end(), name) != names.end())
+      usage_error("--attributes names '" + name + "' twice");
+    names.push_back(name);
+    if(comma == std::string::npos) break;
+    start = comma + 1;
+  }
+  return names;
+}
+
+double parse_double(const std::string& flag, const std::string& text)
+{
+  errno = 0;
+  char* end = nullptr;
+  const double v = std::strtod(text.c_str(), &end);
+  if(text.empty() || end != text.c_str() + text.size() || (errno != ERANGE && !std::isfinite(v)))
+    usage_error(flag + " expects a finite number, not '" + text + "'");
+  if(errno == ERANGE && std::abs(v) > 1) usage_error(flag + " " + text + " is beyond the range of double precision");
+  if(errno == ERANGE)   // strtod says so below the smallest normal double, where the arithmetic loses its digits
+    usage_error(flag + " " + text + " is below the smallest normal double (2.2e-308), too small to compute with");
+  return v;
+}
+
+unsigned int parse_unsigned(const std::string& flag, const std::string& text)
+{
+  errno = 0;
+  char* end = nullptr;
+  const unsigned long long v = std::strtoull(text.c_str(), &end, 10);
+  if(text.empty() || text[0] == '-' || text[0] == '+' || end != text.c_str() + text.size() || errno == ERANGE ||
+     v > (std::numeric_limits<unsigned int>::max)())
+    usage_error(flag + " expects a non-negative integer, not '" + text + "'");
+  return static_cast<unsigned int>(v);
+}
+
+// Whether two paths name one file: the same file if both exist (links included), else the same path.
+bool same_file(const std::string& a, const std::string& b)
+{
+  std::error_code ec1, ec2;
+  if(fs::exists(a, ec1) && fs::exists(b, ec2))
+  {
+    std::error_code ec;
+    return fs::equivalent(a, b, ec);
+  }
+  return fs::weakly_canonical(a, ec1) == fs::weakly_canonical(b, ec2);
+}
+
+// One option: its name, an alias, the value it takes (nullptr: a flag without value), its help (the
+// lines after the first are indented under it) and what it does with its value. A handler may throw
+// usage_error(); it runs in the order of the command line, so that a later --report is still read.
+struct Option_spec
+{
+  const char* name;
+  const char* alias;
+  const char* value;
+  const char* help;
+  void (*apply)(Options& o, const std::string& flag, const std::string& value);
+};
+
+const Option_spec option_table[] = {
+  {"--time-step", nullptr, "T", "time step tau in model units (length^2), as in the paper",
+   [](Options& o, const std::string& flag, const std::string& v) {
+     o.time_step = parse_double(flag, v);
+     if(!(o.time_step > 0)) usage_error("--time-step must be positive");
+     o.has_time_step = true;
+   }},
+  {"--relative-time-step", nullptr, "R",
+   "time step in units of l^2, l = sqrt(area/4pi) of the input (per connected\n"
+   "component); give at most one of the two (neither: automatic parameters)",
+   [](Options& o, const std::string& flag, const std::string& v) {
+     o.relative_time_step = parse_double(flag, v);
+     if(!(o.relative_time_step > 0)) usage_error("--relative-time-step must be positive");
+     o.has_relative_time_step = true;
+   }},
+  {"--steps", nullptr, "N", "the most time steps to run (default 10; with automatic parameters 200)",
+   [](Options& o, const std::string& flag, const std::string& v) { o.steps = parse_unsigned(flag, v); o.has_steps = true; }},
+  {"--stop", nullptr, "auto|noise|paper|off",
+   "auto (default): noise with automatic parameters, paper otherwise;\n"
+   "noise: stop when the surface has moved off the input by the estimated\n"
+   "noise; paper: the criteria (27)-(29) and a steady-state test; off: exactly\n"
+   "N steps. A step that would fold the surface is retried with a smaller\n"
+   "time step, and the run ends on the last sound surface if that fails",
+   [](Options& o, const std::string&, const std::string& v) {
+     o.stop = v;
+     if(o.stop != "auto" && o.stop != "noise" && o.stop != "paper" && o.stop != "off")
+       usage_error("--stop expects auto, noise, paper or off, not '" + o.stop + "'");
+   }},
+  {"--fidelity", nullptr, "W", "fidelity weight omega in model units (1/time), as in the paper (default 0)",
+   [](Options& o, const std::string& flag, const std::string& v) {
+     o.fidelity = parse_double(flag, v);
+     if(!(o.fidelity >= 0)) usage_error("--fidelity must be >= 0");
+     o.has_fidelity = true;
+   }},
+  {"--relative-fidelity", nullptr, "W", "fidelity weight in units of 1/l^2; give at most one of the two",
+   [](Options& o, const std::string& flag, const std::string& v) {
+     o.relative_fidelity = parse_double(flag, v);
+     if(!(o.relative_fidelity >= 0)) usage_error("--relative-fidelity must be >= 0");
+     o.has_relative_fidelity = true;
+   }},
+  {"--element", nullptr, "loop|linear", "Loop limit-surface elements (default) or linear (P1) elements",
+   [](Options& o, const std::string&, const std::string& v) {
+     if(v == "loop") o.element = AF::Finite_element::LOOP;
+     else if(v == "linear") o.element = AF::Finite_element::LINEAR;
+     else usage_error("--element expects loop or linear, not '" + v + "'");
+   }},
+  {"--output", nullptr, "limit|control",
+   "write the points of the faired limit surface (default) or the faired\n"
+   "control points (the mesh whose Loop limit surface is the faired surface)",
+   [](Options& o, const std::string&, const std::string& v) {
+     if(v == "limit") o.output_positions = AF::Output_positions::LIMIT_SURFACE;
+     else if(v == "control") o.output_positions = AF::Output_positions::CONTROL_POINTS;
+     else usage_error("--output expects limit or control, not '" + v + "'");
+   }},
+  {"--tensor", nullptr, "isotropic|anisotropic|uniform",
+   "the diffusion tensor: isotropic (mean-curvature flow; the\n"
+   "default with a time step), anisotropic (curvature-driven, feature-preserving:\n"
+   "Anisotropic_diffusion_tensor; the default with automatic parameters, its\n"
+   "threshold and prefilter then chosen from the mesh unless given, and the\n"
+   "isotropic (or uniform) result kept instead when its normals vary clearly\n"
+   "less at the noise level: the report's tensor and choices say which) or uniform (the\n"
+   "uniform Laplacian's weights, Uniform_diffusion_tensor: for noisy scans with a\n"
+   "graded triangulation; it rounds creases like the isotropic tensor)",
+   [](Options& o, const std::string&, const std::string& v) {
+     o.has_tensor = true;   // set before the check: a usage error's report shows what was asked
+     o.anisotropic = v == "anisotropic";
+     o.uniform = v == "uniform";
+     if(v != "anisotropic" && v != "isotropic" && v != "uniform")
+       usage_error("--tensor expects isotropic, anisotropic or uniform, not '" + v + "'");
+   }},
+  {"--lambda", nullptr, "L",
+   "the anisotropic tensor's feature threshold, a curvature in units of 1/l\n"
+   "(default 2): principal curvatures above it are diffused less",
+   [](Options& o, const std::string& flag, const std::string& v) {
+     o.lambda = parse_double(flag, v);
+     o.has_lambda = true;
+     if(!(o.lambda > 0)) usage_error("--lambda must be positive");
+   }},
+  {"--epsilon", nullptr, "E",
+   "the anisotropic tensor reads curvature on the surface after an isotropic\n"
+   "step of E (units of l^2; the paper's prefiltered M_eps); default 1e-3;\n"
+   "0: on the current surface",
+   [](Options& o, const std::string& flag, const std::string& v) {
+     o.epsilon = parse_double(flag, v);
+     o.has_epsilon = true;
+     if(!(o.epsilon >= 0)) usage_error("--epsilon must be >= 0");
+   }},
+  {"--tangential-motion", nullptr, "remove|keep",
+   "the anisotropic flow moves control points along the surface's\n"
+   "normal only (remove, the default: the tangential part of div(D grad x)\n"
+   "folds noisy meshes) or also within it, as the paper does (keep)",
+   [](Options& o, const std::string&, const std::string& v) {
+     if(v == "remove") o.normal_motion_only = true;
+     else if(v == "keep") o.normal_motion_only = false;
+     else usage_error("--tangential-motion expects remove or keep, not '" + v + "'");
+     o.has_tangential_motion = true;
+   }},
+  {"--solver", nullptr, "auto|cg|cholesky", "linear solver: automatic (default), conjugate gradients, sparse LDL^T",
+   [](Options& o, const std::string&, const std::string& v) {
+     if(v == "auto") o.solver = AF::Linear_solver::AUTOMATIC;
+     else if(v == "cg") o.solver = AF::Linear_solver::CONJUGATE_GRADIENT;
+     else if(v == "cholesky") o.solver = AF::Linear_solver::CHOLESKY;
+     else usage_error("--solver expects auto, cg or cholesky, not '" + v + "'");
+   }},
+  {"--boundary", nullptr, "curve|vertices",
+   "on a mesh with borders, hold the limit boundary curve (default: the\n"
+   "boundary vertices and the interior vertices that shape the curve) or only\n"
+   "the boundary vertices (the paper's choice; the border may slide)",
+   [](Options& o, const std::string&, const std::string& v) {
+     if(v == "curve") o.boundary = AF::Boundary_handling::HOLD_BOUNDARY_CURVE;
+     else if(v == "vertices") o.boundary = AF::Boundary_handling::HOLD_BOUNDARY_VERTICES;
+     else usage_error("--boundary expects curve or vertices, not '" + v + "'");
+   }},
+  {"--quadrature-degree", nullptr, "4|6|8", "Gauss rule per face for the Loop element (default 8)",
+   [](Options& o, const std::string&, const std::string& v) {
+     if(v == "4" || v == "6" || v == "8") o.quadrature_degree = std::atoi(v.c_str());
+     else usage_error("--quadrature-degree expects 4, 6 or 8, not '" + v + "'");
+   }},
+  {"--attributes", nullptr, "NAME,...",
+   "the per-vertex attributes to fair, in this order, as one vector per\n"
+   "vertex: PLY: any numeric vertex property by name (quality, u, v, s, t,\n"
+   "...), red, green, blue, alpha, or color (= red,green,blue); OFF: color\n"
+   "(COFF), red, green, blue, uv (texture coordinates); OBJ: uv (the vt, if\n"
+   "one per vertex). Not x, y, z, nx, ny, nz. A name the input does not have\n"
+   "fails (exit 1) and the message lists the available ones",
+   [](Options& o, const std::string&, const std::string& v) { o.attributes = parse_attribute_list(v); }},
+  {"--mode", nullptr, "separate|coupled|attributes|geometry",
+   "how they are faired: separate (the default with\n"
+   "--attributes): with the operator of the geometry's surface; coupled: as one\n"
+   "surface with the geometry in R^(3+d); attributes: the geometry is fixed (not\n"
+   "written) and only the attributes diffuse on it; geometry (the default\n"
+   "without --attributes): the attributes are not faired. coupled and\n"
+   "attributes need --attributes",
+   [](Options& o, const std::string&, const std::string& v) {
+     if(v == "separate") o.mode = AF::Attribute_mode::SEPARATE;
+     else if(v == "coupled") o.mode = AF::Attribute_mode::COUPLED;
+     else if(v == "attributes") o.mode = AF::Attribute_mode::ATTRIBUTES_ONLY;
+     else if(v == "geometry") o.mode = AF::Attribute_mode::GEOMETRY_ONLY;
+     else usage_error("--mode expects separate, coupled, attributes or geometry, not '" + v + "'");
+     o.has_mode = true;
+   }},
+  {"--attribute-weight", nullptr, "W", "coupled: the length that one attribute unit counts for (> 0, default 1)",
+   [](Options& o, const std::string& flag, const std::string& v) {
+     o.attribute_weight = parse_double(flag, v);
+     if(!(o.attribute_weight > 0)) usage_error("--attribute-weight must be positive");
+     o.has_attribute_weight = true;
+   }},
+  {"--curvature", nullptr, nullptr,
+   "also write the curvature of the faired Loop limit surface at each vertex\n"
+   "as the PLY vertex properties k1, k2 (principal curvatures, k1 <= k2) and\n"
+   "mean_curvature ((k1 + k2)/2), w.r.t. the oriented normal (negative on a\n"
+   "convex surface oriented outward); at vertices of valence other than 6,\n"
+   "where the limit surface has no finite curvature, an average over the\n"
+   "vertex's faces (Loop_limit_surface::vertex_curvatures). Needs a .ply\n"
+   "OUTPUT and the Loop element",
+   [](Options& o, const std::string&, const std::string&) { o.curvature = true; }},
+  {"--report", nullptr, "FILE.json", "write per-step statistics (also, with status and message, on failure)",
+   [](Options& o, const std::string&, const std::string& v) { o.report = v; }},
+  {"--repair", nullptr, nullptr,
+   "if the faces are not an oriented 2-manifold, repair them with CGAL's\n"
+   "Polygon_mesh_processing (drop faces that repeat a vertex, orient, split\n"
+   "non-manifold vertices and edges; the input's vertex properties other\n"
+   "than positions are then not kept), and on any mesh stitch coinciding\n"
+   "borders and remove vertices on no face; each change is printed",
+   [](Options& o, const std::string&, const std::string&) { o.repair = true; }},
+  {"--quiet", "-q", nullptr, "no progress line per step on stderr",
+   [](Options& o, const std::string&, const std::string&) { o.quiet = true; }},
+  {"--help", "-h", nullptr, "print this help and exit",
+   [](Options& o, const std::string&, const std::string&) { o.help = true; }},
+};
+
+const char* const help_before_options =
+"usage: anisotropic_fairing INPUT OUTPUT [options]\n"
+"\n"
+"Fairs the triangle mesh INPUT by geometric diffusion with Loop-subdivision finite elements\n"
+"(Bajaj & Xu 2003; isotropic tensor: mean-curvature flow, or the anisotropic, feature-preserving one)\n"
+"and writes the result to OUTPUT.\n"
+"INPUT and OUTPUT are OFF, OBJ or PLY files (by extension; the formats may differ); INPUT may also be\n"
+"STL (coincident corners are merged into vertices) or a PLY of triangle strips. Every file is checked\n"
+"before it is read: a bad count, index, number or a face set that is not an oriented 2-manifold is\n"
+"refused with the line or element named (see --repair). The output keeps\n"
+"the vertex order, full double precision and every vertex property of the input that its format can\n"
+"hold (PLY: normals, colours, numeric properties; OFF: colours, texture coordinates, face colours;\n"
+"OBJ: normals, texture coordinates; a warning names the dropped ones).\n"
+"If the input has vertex normals, the normals of the faired surface are written: for the Loop element\n"
+"with --output limit the exact normals of the faired limit surface (and the limit points), otherwise\n"
+"the vertex normals of the output mesh (CGAL::Polygon_mesh_processing::compute_vertex_normals);\n"
+"with --mode attributes (geometry unchanged) the input's normals (OBJ: recomputed).\n"
+"Borders (holes, scan boundaries) are held fixed, and boundary vertices are written unchanged;\n"
+"vertices on no face are left as they are.\n"
+"With --attributes, per-vertex attributes (a function on the surface: scalars, colours, texture\n"
+"coordinates) are faired too, all in one solve, and written back into their own properties with their\n"
+"own types (integers rounded and clamped, colours to 0..255 with alpha kept); boundary and isolated\n"
+"vertices keep their values. Like the positions, the values written are those of the faired limit\n"
+"function at the vertices (--output limit: Loop limit masks; even 0 steps smooth them) or the\n"
+"control values (--output control).\n"
+"\n"
+"Without --time-step and --relative-time-step the parameters are automatic: the program estimates\n"
+"the noise of the mesh itself, fairs with the anisotropic tensor (unless --tensor says otherwise) in\n"
+"steps of 0.3 h^2 (h: the mean edge length) and stops when the surface has moved off the input by\n"
+"the noise (a noise-free mesh is left nearly as it is); the report's choices say what was chosen.\n"
+"\n"
+"options:\n";
+
+const char* const help_after_options =
+"Options also accept the form --option=value.\n"
+"\n"
+"JSON report: status, message, input, output, vertices, faces, element, output_positions, tensor, lambda,\n"
+"lambda_model_units, epsilon, tangential_motion, automatic_parameters, choices, noise_level,\n"
+"noise_deviation, noise_displacement, components, rejected_steps,\n"
+"solver, requested_solver, stop, max_steps, quadrature_degree, time_step, relative_time_step, scale,\n"
+"fidelity_weight, relative_fidelity_weight, mean_edge_length, normals, curvature, mode, attributes,\n"
+"attribute_dimension, attribute_weight, boundary_handling,\n"
+"boundary_vertices, boundary_held_vertices, boundary_loops, isolated_vertices, constrained_vertices,\n"
+"stop_reason, initial {area,\n"
+"energy, H_integral}, steps [{step, time, solver_iterations, residual, area, energy, H_integral,\n"
+"max_displacement, step_displacement, assemble_seconds, solve_seconds, direct_solve, time_step,\n"
+"noise_displacement}], setup_seconds,\n"
+"total_seconds (the fairing call), wall_seconds (the whole program). Unknown values are null.\n"
+"\n"
+"exit status: 0 success; 1 failure (unreadable input, a mesh that is not a 2-manifold triangle mesh,\n"
+"an attribute the input does not have, fairing failure, unwritable output or report); 2 usage error\n"
+"(including OUTPUT or --report naming the INPUT or each other).\n"
+"On failure one line starting with\n"
+"\"anisotropic_fairing: \" is printed on stderr and OUTPUT is not created (an existing one is left as is).\n";
+
+const Option_spec* find_option(const std::string& arg)
+{
+  for(const Option_spec& s : option_table)
+    if(arg == s.name || (s.alias && arg == s.alias)) return &s;
+  return nullptr;
+}
+
+} // namespace
+
+bool automatic_parameters(const Options& o) { return !o.has_time_step && !o.has_relative_time_step; }
+// the anisotropic tensor whose threshold and prefilter are chosen from the mesh
+bool automatic_tensor(const Options& o)
+{
+  return automatic_parameters(o) && o.anisotropic && !o.has_lambda && !o.has_epsilon && o.normal_motion_only;
+}
+
+// --mode, or its default: separate with --attributes, geometry without
+AF::Attribute_mode effective_mode(const Options& o)
+{
+  if(o.has_mode) return o.mode;
+  return o.attributes.empty() ? AF::Attribute_mode::GEOMETRY_ONLY : AF::Attribute_mode::SEPARATE;
+}
+
+const char* mode_name(AF::Attribute_mode m)
+{
+  switch(m)
+  {
+    case AF::Attribute_mode::COUPLED: return "coupled";
+    case AF::Attribute_mode::SEPARATE: return "separate";
+    case AF::Attribute_mode::ATTRIBUTES_ONLY: return "attributes";
+    default: return "geometry";
+  }
+}
+
+std::string extension(const std::string& path)
+{
+  std::string e = fs::path(path).extension().string();
+  std::transform(e.begin(), e.end(), e.begin(), [](unsigned char c) { return char(std::tolower(c)); });
+  return e;
+}
+
+bool format_of(const std::string& path, Format& f)
+{
+  const std::string e = extension(path);
+  if(e == ".off") f = Format::OFF;
+  else if(e == ".obj") f = Format::OBJ;
+  else if(e == ".ply") f = Format::PLY;
+  else if(e == ".stl") f = Format::STL;
+  else return false;
+  return true;
+}
+
+// "  --name VALUE" padded to 28 columns (or followed by three blanks), the help's further lines under it
+std::string help_text()
+{
+  std::string text = help_before_options;
+  for(const Option_spec& s : option_table)
+  {
+    std::string line = std::string("  ") + s.name + (s.value ? std::string(" ") + s.value : std::string());
+    line += line.size() <= 25 ? std::string(28 - line.size(), ' ') : std::string(3, ' ');
+    for(const char* c = s.help; *c; ++c)
+      line += *c == '\n' ? std::string("\n") + std::string(28, ' ') : std::string(1, *c);
+    text += line + "\n";
+  }
+  return text + help_after_options;
+}
+
+void parse_arguments(int argc, char** argv, Options& o)
+{
+  std::vector<std::string> positional;
+  Failure first_error{0, "", ""};
+  bool has_error = false;
+  for(int i = 1; i < argc; ++i)
+  {
+    std::string arg = argv[i];
+    if(arg.size() < 2 || arg[0] != '-') { positional.push_back(arg); continue; }
+    if(arg == "--") { for(++i; i < argc; ++i) positional.push_back(argv[i]); break; }
+    std::string value;
+    bool has_inline_value = false;
+    const std::size_t eq = arg.find('=');
+    if(arg.compare(0, 2, "--") == 0 && eq != std::string::npos)
+    {
+      value = arg.substr(eq + 1);
+      arg = arg.substr(0, eq);
+      has_inline_value = true;
+    }
+    try
+    {
+      const Option_spec* spec = find_option(arg);
+      if(!spec) usage_error("unknown option " + arg);
+      if(!spec->value && has_inline_value) usage_error(arg + " takes no value");
+      if(spec->value && !has_inline_value)
+      {
+        if(i + 1 >= argc) usage_error(arg + " needs a value");
+        value = argv[++i];
+      }
+      spec->apply(o, arg, value);
+    }
+    catch(const Failure& f)
+    {
+      // keep reading, so that a --report given later is still honoured, then report the first problem
+      if(!has_error) { first_error = f; has_error = true; }
+    }
+  }
+  if(o.help) return;
+  if(has_error) throw first_error;
+  if(positional.size() < 2) usage_error("INPUT and OUTPUT are required");
+  if(positional.size() > 2) usage_error("unexpected argument '" + positional[2] + "'");
+  o.input = positional[0];
+  o.output = positional[1];
+  if(o.has_time_step && o.has_relative_time_step) usage_error("give either --time-step or --relative-time-step, not both");
+  if(o.has_fidelity && o.has_relative_fidelity) usage_error("give either --fidelity or --relative-fidelity, not both");
+  if(o.attributes.empty() && (o.mode == AF::Attribute_mode::COUPLED || o.mode == AF::Attribute_mode::ATTRIBUTES_ONLY))
+    usage_error(std::string("--mode ") + mode_name(o.mode) + " needs --attributes");
+  // without a time step the parameters are automatic: the anisotropic tensor unless --tensor is given
+  if(automatic_parameters(o) && !o.has_tensor) o.anisotropic = true;
+  if(!o.has_steps && automatic_parameters(o)) o.steps = AF::automatic_maximum_steps;
+  const bool asked_anisotropic = o.has_tensor && o.anisotropic;   // the tensor's options need it said
+  if(o.has_lambda && !asked_anisotropic) usage_error("--lambda needs --tensor anisotropic");
+  if(o.has_epsilon && !asked_anisotropic) usage_error("--epsilon needs --tensor anisotropic");
+  if(o.has_tangential_motion && !asked_anisotropic) usage_error("--tangential-motion needs --tensor anisotropic");
+  Format f;
+  if(!format_of(o.input, f)) usage_error("INPUT must be an .off, .obj, .ply or .stl file: " + o.input);
+  if(!format_of(o.output, f) || f == Format::STL) usage_error("OUTPUT must be an .off, .obj or .ply file: " + o.output);
+  // nothing written may overwrite the input or another file written (the report is not written either)
+  if(same_file(o.output, o.input)) usage_error("OUTPUT " + o.output + " is the INPUT: it would be overwritten");
+  if(!o.report.empty() && same_file(o.report, o.input))
+  {
+    o.report_refused = true;
+    usage_error("the report " + o.report + " is the INPUT: it would be overwritten");
+  }
+  if(!o.report.empty() && same_file(o.report, o.output))
+  {
+    o.report_refused = true;
+    usage_error("the report " + o.report + " is the OUTPUT: one would overwrite the other");
+  }
+  if(o.curvature && f != Format::PLY)
+    usage_error("--curvature needs a .ply OUTPUT (k1, k2 and mean_curvature are written as vertex properties)");
+  if(o.curvature && o.element != AF::Finite_element::LOOP)
+    usage_error("--curvature needs --element loop (the linear element has no curvature)");
+}
+
+} // namespace af_tool
