@@ -87,14 +87,16 @@ typedef AF::Loop_limit_surface<Mesh> Limit;
 // the mesh holds: the exact limit normals (and the curvature) need those control points, which that
 // output replaces, and the library has no public call that writes the limit points and also returns
 // the control points. As the library does, boundary and isolated vertices keep their (held) positions
-// and attribute values. Two differences, kept so that the program's output does not change:
-//  - the positions agree with the library's to the order of the floating-point sums (about 1 ulp;
-//    cli_limit_normals_keep_positions checks 1e-14 on bumpy.off);
-//  - when the noise stop ends a run before its first step (the input's own limit surface is already
-//    off it by more than the noise), the library writes a blend of the input and its limit points
-//    (Time_stepper's limit weight); this writes the limit points themselves.
-void write_limit_surface(Mesh& mesh, const Limit& limit, bool normals, std::vector<std::vector<double>>* attribute_values)
+// and attribute values. The positions agree with the library's to the order of the floating-point sums
+// (about 1 ulp; cli_limit_normals_keep_positions checks 1e-14 on bumpy.off). When the noise stop ends a
+// run before its first step (the input's own limit surface already off it by more than the noise), the
+// positions are the same blend of the input and its limit points, `Fairing_report::limit_weight`; the
+// normals are then the limit surface's at its own points.
+void write_limit_surface(Mesh& mesh, const Limit& limit, bool normals, std::vector<std::vector<double>>* attribute_values,
+                         double limit_weight)
 {
+  std::vector<Point> input;
+  if(limit_weight < 1) input.assign(mesh.points().begin(), mesh.points().end());
   if(normals) limit.limit_normals(mesh.property_map<Vertex_index, Vector>("v:normal").first);
   std::vector<std::pair<Vertex_index, Point>> held;
   std::vector<std::pair<Vertex_index, std::vector<double>>> held_values;
@@ -105,6 +107,14 @@ void write_limit_surface(Mesh& mesh, const Limit& limit, bool normals, std::vect
       if(attribute_values) held_values.emplace_back(v, (*attribute_values)[std::size_t(v)]);
     }
   limit.limit_positions(mesh.points());
+  if(limit_weight < 1)
+    for(Vertex_index v : mesh.vertices())
+    {
+      const Point& p0 = input[std::size_t(v)];
+      const Point& p = mesh.point(v);
+      mesh.point(v) = Point(p0.x() + limit_weight * (p.x() - p0.x()), p0.y() + limit_weight * (p.y() - p0.y()),
+                            p0.z() + limit_weight * (p.z() - p0.z()));
+    }
   if(attribute_values)
   {
     const Attribute_vectors map{attribute_values};
@@ -244,7 +254,8 @@ int run(const Options& o, Run_record& r)
       r.curvature = true;
     }
     if(limit_from_control)
-      write_limit_surface(mesh, limit, exact_limit_normals, fair_attributes ? &attribute_values : nullptr);
+      write_limit_surface(mesh, limit, exact_limit_normals, fair_attributes ? &attribute_values : nullptr,
+                          r.report.limit_weight);
   }
   if(info.has_normals)
   {

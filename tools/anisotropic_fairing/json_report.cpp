@@ -116,6 +116,7 @@ std::string report_json(const Options& o, const Run_record& r, double wall_secon
   kv("noise_level", ran ? json_number(f.noise_level) : "null");
   kv("noise_deviation", ran ? json_number(f.noise_deviation) : "null");
   kv("noise_displacement", ran ? json_number(f.noise_displacement) : "null");
+  kv("limit_weight", ran ? json_number(f.limit_weight) : "null");
   kv("components", ran ? json_count(f.components) : "null");
   kv("rejected_steps", ran ? json_count(f.rejected_steps) : "null");
   if(ran)

@@ -298,7 +298,7 @@ const char* const help_after_options =
 "\n"
 "JSON report: status, message, input, output, vertices, faces, element, output_positions, tensor, lambda,\n"
 "lambda_model_units, epsilon, tangential_motion, automatic_parameters, choices, noise_level,\n"
-"noise_deviation, noise_displacement, components, rejected_steps,\n"
+"noise_deviation, noise_displacement, limit_weight, components, rejected_steps,\n"
 "solver, requested_solver, stop, max_steps, quadrature_degree, time_step, relative_time_step, scale,\n"
 "fidelity_weight, relative_fidelity_weight, mean_edge_length, normals, curvature, mode, attributes,\n"
 "attribute_dimension, attribute_weight, boundary_handling,\n"

@@ -132,6 +132,11 @@ struct Fairing_report
   double noise_displacement = 0;  ///< how far the written surface moved off the input (as `Fairing_step::noise_displacement`), at the end
   double feature_threshold = 0;   ///< the anisotropic tensor's threshold \f$\lambda\f$ used, model units (1/length); 0 for the isotropic tensor
   double prefilter_time = 0;      ///< the anisotropic tensor's prefilter time \f$\varepsilon\f$ used, model units; 0 without prefilter
+  /// the share of the way from the input to its Loop limit points that the written positions go,
+  /// \f$x = x_0 + w\,(\mathrm{limit}(x_0) - x_0)\f$: below 1 only when the noise stop ends the run before its
+  /// first step, the input's own limit surface being off it by more than the noise (Loop element; with
+  /// `Output_positions::CONTROL_POINTS` the input is written and this says what the limit output would be)
+  double limit_weight = 1;
   std::string choices;            ///< with automatic parameters: what was chosen and why, in one sentence
   std::string selected_tensor;    ///< with automatic parameters and no tensor given: "anisotropic", "isotropic" or "uniform", the result kept (empty otherwise)
   double setup_seconds = 0;       ///< set-up: private numbering, element (patch categories, stencils), sparsity patterns

@@ -28,7 +28,7 @@ struct Stepper_settings
   double solver_tolerance = 1e-8;
   int solver_maximum_iterations = 10000;
   bool verbose = false;
-  bool limit_output = false;        // the written positions are the Loop limit points of the control points
+  bool limit_output = false;        // the positions measured are the Loop limit points of the control points
   const Noise_estimate* noise = nullptr;   // of the input, in the stepper's numbering (noise criterion)
   int maximum_rejections = 5;       // retries of a step, each with a quarter of the time step
   bool local_time_scale = false;    // the time step follows the mesh's density (Local_time_scale.h)

@@ -293,7 +293,11 @@ Fairing_report fair(TriangleMesh& tm, VertexPointMap vpm, AttributeMap attribute
   for(std::size_t i = 0; i < n; ++i) sampled[i] = !constrained[i] && !border[i];
   const Noise_estimate noise(*layer.topology, X, sampled);
   s.noise = &noise;
-  s.limit_output = element == Finite_element::LOOP && output == Output_positions::LIMIT_SURFACE;
+  // the noise stop measures the limit surface, the surface faired, whichever positions are written: a
+  // run that writes control points (the tool does, to give exact limit normals) then stops where the
+  // limit-surface run stops, and `limit_weight` says how far toward the limit points the latter writes
+  s.limit_output = element == Finite_element::LOOP &&
+                   (output == Output_positions::LIMIT_SURFACE || s.stopping.noise_discrepancy > 0);
   std::string choices;
   if(automatic)
   {
@@ -337,6 +341,7 @@ Fairing_report fair(TriangleMesh& tm, VertexPointMap vpm, AttributeMap attribute
       double limit_weight = 1;
       Fairing_report r = run_stepper(cache, ordering, components, component_edge, mean_edge, Y, mode, constrained, border, t, s,
                                      callback, setup_seconds, limit_weight);
+      r.limit_weight = limit_weight;
       if(r.succeeded() && output == Output_positions::LIMIT_SURFACE)
       {
         const Control_matrix extended = layer.extend(Y);
