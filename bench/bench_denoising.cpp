@@ -60,7 +60,7 @@
 #include <CGAL/Anisotropic_fairing/Loop_limit_surface.h>
 #include <CGAL/Anisotropic_fairing/anisotropic_fairing.h>
 
-#include "bench_mesh_measures.h"
+#include "bench_cases.h"   // the mesh types, reading in order, face normals, fmt
 
 #include <algorithm>
 #include <cmath>
@@ -79,36 +79,9 @@
 #define AF_SOURCE_DIR "."
 #endif
 
-typedef CGAL::Exact_predicates_inexact_constructions_kernel K;
-typedef K::Point_3 Point;
-typedef K::Vector_3 Vector;
-typedef CGAL::Surface_mesh<Point> Mesh;
 typedef CGAL::AABB_face_graph_triangle_primitive<Mesh> Primitive;
 typedef CGAL::AABB_tree<CGAL::AABB_traits<K, Primitive> > Tree;
 namespace AF = CGAL::Anisotropic_fairing;
-namespace PMP = CGAL::Polygon_mesh_processing;
-
-static const double pi = 3.14159265358979323846;
-
-// Reads an OBJ keeping the file's vertex and face order (read_polygon_mesh may repair and reorder).
-bool read_obj_in_order(const std::string& path, Mesh& mesh)
-{
-  std::vector<Point> points;
-  std::vector<std::vector<std::size_t> > polygons;
-  if(!CGAL::IO::read_OBJ(path, points, polygons)) return false;
-  if(!PMP::is_polygon_soup_a_polygon_mesh(polygons)) return false;
-  PMP::polygon_soup_to_polygon_mesh(points, polygons, mesh);
-  return num_vertices(mesh) == points.size() && num_faces(mesh) == polygons.size();
-}
-
-Vector face_normal(const Mesh& m, Mesh::Face_index f)
-{
-  Mesh::Halfedge_index h = m.halfedge(f);
-  const Point& a = m.point(m.source(h));
-  const Point& b = m.point(m.target(h));
-  const Point& c = m.point(m.target(m.next(h)));
-  return CGAL::cross_product(b - a, c - a);
-}
 
 
 struct Quality
@@ -172,13 +145,6 @@ struct Best
   }
   void note(const std::string& s) { notes += (notes.empty() ? "" : "; ") + s; }
 };
-
-std::string fmt(const char* f, double x)
-{
-  char b[64];
-  std::snprintf(b, sizeof b, f, x);
-  return b;
-}
 
 std::vector<double> our_taus = {1e-4, 3e-4, 1e-3, 3e-3};   // TAUS argument overrides
 const std::vector<int> step_counts = {1, 2, 3, 5, 10};

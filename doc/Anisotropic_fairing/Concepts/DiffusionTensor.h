@@ -43,4 +43,33 @@ public:
   /// returns \f$A\f$ at the quadrature point described by `q` (the current surface's tangents,
   /// second derivatives, metric, and the face's basis functions to interpolate per-vertex data)
   CGAL::Anisotropic_fairing::Parametric_tensor operator()(const CGAL::Anisotropic_fairing::Quadrature_point_geometry& q) const;
+
+  /// \name Optional members
+  /// Each is found at compile time (in one place, `internal/flow/Tensor_hooks.h`); a model without it
+  /// behaves as the default said here.
+  /// @{
+
+  /// (optional) receives the model's scale \f$\ell\f$ before the first assembly (see above); without it,
+  /// parameters are in model units
+  void set_length_scale(double l);
+
+  /// (optional) the prefilter time \f$\varepsilon\f$ in model units (see above); default 0: no prefilter
+  double prefilter_time() const;
+
+  /// (optional) whether each step keeps only the normal component of the motion (see above); default `false`
+  bool normal_motion_only() const;
+
+  /// (optional) the feature threshold in model units (1/length), reported as
+  /// `Fairing_report::feature_threshold`; default 0
+  double threshold() const;
+
+  /// (optional) whether the package chooses the model's parameters from the mesh when it chooses the time
+  /// step (automatic parameters); it then calls `choose()`, and compares the result with the isotropic
+  /// flow's (see `anisotropic_fairing()`); default `false`
+  bool is_automatic() const;
+
+  /// (optional, with `is_automatic()`) sets the threshold in units of \f$1/h\f$ and the prefilter time in
+  /// units of \f$h^2\f$, \f$h\f$ the mean edge length of each connected component
+  void choose(double lambda, double epsilon);
+  /// @}
 };

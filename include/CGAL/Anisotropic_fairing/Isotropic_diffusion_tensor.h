@@ -23,7 +23,7 @@ This is the default `diffusion_tensor`.
 */
 struct Isotropic_diffusion_tensor
 {
-  /// lets the solver skip any per-point work beyond the metric
+  /// marks the tensor as \f$G^{-1}\f$ everywhere (kept for compatibility; the package does not read it)
   static constexpr bool is_isotropic = true;
 
   /// returns \f$G^{-1}\f$

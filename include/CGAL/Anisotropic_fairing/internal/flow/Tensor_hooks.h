@@ -46,10 +46,6 @@ template <typename Tensor>
 auto choose_tensor(Tensor& t, double lambda, double epsilon, int) -> decltype(t.choose(lambda, epsilon), void()) { t.choose(lambda, epsilon); }
 template <typename Tensor>
 void choose_tensor(Tensor&, double, double, long) {}
-template <typename Tensor>
-auto relative_epsilon_of(const Tensor& t, int) -> decltype(double(t.epsilon())) { return double(t.epsilon()); }
-template <typename Tensor>
-double relative_epsilon_of(const Tensor&, long) { return 0.0; }
 
 } // namespace internal
 } // namespace Anisotropic_fairing
