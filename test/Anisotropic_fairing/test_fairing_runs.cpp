@@ -210,7 +210,9 @@ void relative_units(const Mesh& clean)
     AF_CHECK(ra.steps.size() == rb.steps.size() && ra.stop_reason == rb.stop_reason, "the same steps at both scales");
     AF_CHECK(ra.stop_reason != AF::Stop_reason::MAXIMUM_STEPS && !ra.steps.empty(), "the default criteria end a run on bumpy");
     AF_CHECK(err <= 1e-9 * size, "a scaled model is faired into the scaled result (relative units)");
-    AF_CHECK_REL(rb.time_step, s * s * ra.time_step, 1e-12, "the absolute time step scales with the square of the size");
+    AF_CHECK(ra.flow_order == rb.flow_order, "the same flow at both scales");
+    AF_CHECK_REL(rb.time_step, std::pow(s, ra.flow_order) * ra.time_step, 1e-12,
+                 "the absolute time step scales with the size to the flow's order (2, or 4 for the fourth-order flow)");
   }
 }
 

@@ -210,6 +210,7 @@ int run(const Options& o, Run_record& r)
                       .quadrature_degree(o.quadrature_degree)
                       .attribute_mode(library_mode)
                       .attribute_weight(o.attribute_weight)
+                      .flow_order(o.order)
                       .callback(progress);
   try
   {

@@ -87,7 +87,8 @@ std::string report_json(const Options& o, const Run_record& r, double wall_secon
   kv("max_steps", json_count(o.steps));
   kv("quadrature_degree", std::to_string(o.quadrature_degree));
   kv("time_step", ran ? json_number(f.time_step) : (o.has_time_step ? json_number(o.time_step) : "null"));
-  kv("relative_time_step", ran && scale2 > 0 ? json_number(f.time_step / scale2)
+  kv("order", std::to_string(ran ? f.flow_order : o.order));
+  kv("relative_time_step", ran && scale2 > 0 ? json_number(f.time_step / std::pow(scale2, f.flow_order / 2))
                                              : (o.has_relative_time_step ? json_number(o.relative_time_step) : "null"));
   kv("scale", ran ? json_number(f.scale) : "null");
   kv("fidelity_weight", ran ? json_number(f.fidelity_weight) : (o.has_fidelity ? json_number(o.fidelity) : "null"));

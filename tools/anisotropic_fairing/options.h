@@ -18,6 +18,8 @@ struct Options
   bool has_time_step = false, has_relative_time_step = false;
   double time_step = 0, relative_time_step = 0;
   unsigned int steps = 10;
+  int order = 2;                   // --order: of the flow (2 or 4)
+  bool has_order = false;
   bool has_steps = false;
   std::string stop = "auto";   // auto, noise, paper, off
   bool has_fidelity = false, has_relative_fidelity = false;

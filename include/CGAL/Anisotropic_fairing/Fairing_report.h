@@ -110,7 +110,8 @@ struct Fairing_report
   std::vector<Fairing_step> steps;///< one entry per completed step
   Fairing_step initial;           ///< area, energy and \f$\int|H|^2\f$ of the input surface (step 0)
   double scale = 0;               ///< \f$\ell = \sqrt{\mathrm{Area}(M(0))/4\pi}\f$, the length unit of relative parameters
-  double time_step = 0;           ///< \f$\tau\f$ in model units
+  double time_step = 0;           ///< \f$\tau\f$ in model units (length^2, or length^4 for the fourth-order flow)
+  int flow_order = 2;             ///< 2: diffusion (the paper's flow); 4: the fourth-order flow \f$\partial_t x = -(M^{-1}L)^2 x\f$ (named parameter `flow_order`)
   double fidelity_weight = 0;     ///< \f$\omega\f$ in model units (1/time)
   double mean_edge_length = 0;    ///< h of the input mesh; \f$\tau/h^2\f$ governs the linear solver's work
   bool used_cholesky = false;     ///< whether any step was solved by the sparse factorisation
@@ -138,7 +139,7 @@ struct Fairing_report
   /// `Output_positions::CONTROL_POINTS` the input is written and this says what the limit output would be)
   double limit_weight = 1;
   std::string choices;            ///< with automatic parameters: what was chosen and why, in one sentence
-  std::string selected_tensor;    ///< with automatic parameters and no tensor given: "anisotropic", "isotropic" or "uniform", the result kept (empty otherwise)
+  std::string selected_tensor;    ///< with automatic parameters and no tensor given: "anisotropic", "isotropic" or "uniform", the result kept (empty otherwise; "uniform" is the uniform tensor's fourth-order flow, `flow_order` 4)
   double setup_seconds = 0;       ///< set-up: private numbering, element (patch categories, stencils), sparsity patterns
   double total_seconds = 0;       ///< the whole call
 

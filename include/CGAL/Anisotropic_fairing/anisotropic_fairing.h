@@ -64,6 +64,15 @@ of its area per step. `time_step` and `fidelity_weight` give them in model units
     \cgalParamDescription{the time step \f$\tau\f$ in model units (length squared); excludes `relative_time_step`}
     \cgalParamType{double > 0} \cgalParamDefault{unused}
   \cgalParamNEnd
+  \cgalParamNBegin{flow_order}
+    \cgalParamDescription{2: the paper's diffusion, \f$\partial_t x = -M^{-1}L(D)\,x\f$; 4: the fourth-order flow
+                          \f$\partial_t x = -(M^{-1}L(D))^2 x\f$ with the lumped inverse mass, whose step damps a mode of
+                          \f$M^{-1}L\f$ with eigenvalue \f$\mu\f$ by \f$1/(1+\tau\mu^2)\f$ instead of \f$1/(1+\tau\mu)\f$:
+                          noise goes, the shape is rounded less. Its time step is in length\f$^4\f$ (`relative_time_step`
+                          in \f$\ell^4\f$; automatic: \f$0.1\,h^4\f$). Held vertices (borders, constraints) carry no
+                          curvature penalty of their own, so that a noisy held border does not bend the surface next to it}
+    \cgalParamType{int, 2 or 4} \cgalParamDefault{`2`}
+  \cgalParamNEnd
   \cgalParamNBegin{number_of_iterations}
     \cgalParamDescription{the largest number of time steps; `stopping_criteria` may end the run earlier}
     \cgalParamType{unsigned int} \cgalParamDefault{`10`}

@@ -162,7 +162,7 @@ def check_table(spec, work):
 
 # ---- the report ----------------------------------------------------------------------------------
 REQUIRED_TOP = ('steps stop_reason total_seconds vertices faces mode attributes attribute_dimension attribute_weight '
-                'automatic_parameters choices noise_level noise_deviation noise_displacement components rejected_steps').split()
+                'automatic_parameters choices noise_level noise_deviation noise_displacement components rejected_steps order').split()
 REQUIRED_STEP = ('step time solver_iterations residual area energy H_integral max_displacement assemble_seconds '
                  'solve_seconds time_step noise_displacement').split()
 

@@ -21,3 +21,4 @@ CGAL_AF_add_named_parameter(attribute_weight_t,          attribute_weight,      
 CGAL_AF_add_named_parameter(solver_tolerance_t,          solver_tolerance,          solver_tolerance)
 CGAL_AF_add_named_parameter(solver_maximum_iterations_t, solver_maximum_iterations, solver_maximum_iterations)
 CGAL_AF_add_named_parameter(vertex_curvature_map_t,      vertex_curvature_map,      vertex_curvature_map)
+CGAL_AF_add_named_parameter(flow_order_t,                flow_order,                flow_order)

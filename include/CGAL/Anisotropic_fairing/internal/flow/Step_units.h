@@ -36,10 +36,10 @@ struct Step_units
   double relative_time_step = 0;    // tau / l^2 of the largest component
 };
 
-/// `time_step` in units of `time_unit`^2, `fidelity` in 1/l^2 if relative; the tensor measured in
+/// `time_step` in units of `time_unit`^order (the flow's order: 2 or 4), `fidelity` in 1/l^2 if relative; the tensor measured in
 /// `tensor_unit`. `edge[c]`: mean edge length of component c, `global_edge` of the whole mesh.
 inline Step_units make_step_units(const Assembly_statistics& a0, const Mesh_components& comp, std::size_t rows,
-                                  double time_step, Length_unit time_unit, double fidelity, bool relative_fidelity,
+                                  double time_step, Length_unit time_unit, int order, double fidelity, bool relative_fidelity,
                                   bool relative_stopping, Length_unit tensor_unit,
                                   const std::vector<double>& edge, double global_edge)
 {
@@ -53,7 +53,7 @@ inline Step_units make_step_units(const Assembly_statistics& a0, const Mesh_comp
   {
     ell[c] = nc == 1 ? u.scale : std::sqrt(a0.component_area[c] / four_pi);
     const double unit = time_unit == Length_unit::SCALE ? ell[c] : time_unit == Length_unit::EDGE ? edge[c] : 1.0;
-    tau[c] = time_step * unit * unit;
+    tau[c] = time_step * std::pow(unit, order);
     omega[c] = relative_fidelity ? fidelity / (ell[c] * ell[c]) : fidelity;
     if(a0.component_area[c] > a0.component_area[largest]) largest = c;
   }

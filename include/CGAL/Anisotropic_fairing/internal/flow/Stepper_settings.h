@@ -18,7 +18,8 @@ namespace internal {
 
 struct Stepper_settings
 {
-  double time_step = 1e-3;          // tau in units of time_unit^2
+  int order = 2;                    // of the flow: 2 (diffusion), 4 (Fourth_order_system.h)
+  double time_step = 1e-3;          // tau in units of time_unit^order
   Length_unit time_unit = Length_unit::SCALE;
   double fidelity_weight = 0;       // omega, relative (omega = w / scale^2) or absolute
   bool relative_fidelity = true;

@@ -26,6 +26,7 @@
 #include <CGAL/Anisotropic_fairing/internal/mesh/Mesh_components.h>
 #include <CGAL/Anisotropic_fairing/internal/flow/Noise_estimate.h>
 #include <CGAL/Anisotropic_fairing/internal/flow/Step_safety.h>
+#include <CGAL/Anisotropic_fairing/internal/solve/Fourth_order_system.h>
 #include <CGAL/Anisotropic_fairing/internal/solve/Step_system.h>
 #include <CGAL/Anisotropic_fairing/internal/flow/Step_units.h>
 #include <CGAL/Anisotropic_fairing/internal/flow/Stepper_settings.h>
@@ -41,6 +42,7 @@
 #include <cmath>
 #include <cstdio>
 #include <iostream>
+#include <memory>
 #include <string>
 #include <vector>
 
@@ -116,7 +118,7 @@ public:
     Assembly_statistics a;
     if(!set_units(X, metric_columns, s, tensor, report, a, total)) return report;
     double assemble_seconds = clock.time();
-    const double time_unit = s.stopping.relative_units ? report.scale * report.scale : 1.0;   // (28), steady speed
+    const double time_unit = s.stopping.relative_units ? std::pow(report.scale, s.order) : 1.0;   // (28), steady speed
     Stopping_monitor monitor(s.stopping, a.H_integral);
 
     // the noise criterion: stop once the written surface moved off the input by the noise
@@ -136,6 +138,8 @@ public:
     const double first_discrepancy = noise_stop ? std::max(discrepancy, s.noise->relative_displacement(Y, X0, {}, true)) : 0.0;
 
     const Eigen::Index n = X.rows(), k = X.cols(), nfree = Eigen::Index(free_.size());
+    std::unique_ptr<Fourth_order_system> fourth_order;
+    if(s.order == 4) fourth_order.reset(new Fourth_order_system(assembler_.pattern(), free_));
     Control_matrix R(n, k), B(nfree, k), dX = Control_matrix::Zero(nfree, k);
     Control_matrix Xc, X_previous;
     // the last surface with no more folded edges than the input mesh (or its limit surface): what the
@@ -165,16 +169,25 @@ public:
       st.time_step = factor * report.time_step;
       // system and right-hand side at X_n, divided by sys so that a huge tau cannot overflow
       clock.reset();
-      const double sys = system_scale(factor);
-      fill_step_matrix(A_, source_, entry_column_, free_, M_, L_, units_.tau, units_.omega, factor, sys, unknown_scale_, mass_weight);
-      step_residual(assembler_.pattern(), M_, L_, units_.tau, units_.omega, X, X0, factor / sys, R, mass_weight);
+      const double sys = system_scale(factor, s.order);
+      if(fourth_order)
+      {
+        fourth_order->set_operator(M_, L_, mass_weight);
+        fourth_order->fill_matrix(units_.tau, units_.omega, factor, sys, unknown_scale_, A4_);
+        fourth_order->residual(units_.tau, units_.omega, X, X0, factor / sys, R);
+      }
+      else
+      {
+        fill_step_matrix(A_, source_, entry_column_, free_, M_, L_, units_.tau, units_.omega, factor, sys, unknown_scale_, mass_weight);
+        step_residual(assembler_.pattern(), M_, L_, units_.tau, units_.omega, X, X0, factor / sys, R, mass_weight);
+      }
       for(Eigen::Index i = 0; i < nfree; ++i) B.row(i) = R.row(free_[std::size_t(i)]);
       if(!unknown_scale_.empty())
         for(Eigen::Index i = 0; i < nfree; ++i) B.row(i) /= std::pow(unknown_scale_[std::size_t(free_[std::size_t(i)])], 3);
       st.assemble_seconds = assemble_seconds + clock.time();
 
       clock.reset();
-      const Solve_statistics sol = choice.solve(A_, B, dX, cg, st.direct_solve);   // CG warm-started from the last dX
+      const Solve_statistics sol = choice.solve(fourth_order ? A4_ : A_, B, dX, cg, st.direct_solve);   // CG warm-started from the last dX
       st.solve_seconds = clock.time();
       choice.record(st.direct_solve, sol, st.solve_seconds);
       report.used_cholesky = report.used_cholesky || st.direct_solve;
@@ -348,7 +361,7 @@ public:
     report.initial.energy = dirichlet_energy(assembler_.pattern(), L_, F);
 
     const Stopping_criteria& c = s.stopping;
-    const double time_unit = c.relative_units ? report.scale * report.scale : 1.0;
+    const double time_unit = c.relative_units ? std::pow(report.scale, s.order) : 1.0;
     double spread = 0;
     {
       const Eigen::RowVectorXd mean = F0.colwise().mean();
@@ -362,8 +375,15 @@ public:
 
     // the constant system, and its solver: factorised once (up to automatic_cholesky_limit free
     // vertices for AUTOMATIC), or conjugate gradients warm-started from the last step
-    const double sys = system_scale(1.0);
-    fill_step_matrix(A_, source_, entry_column_, free_, M_, L_, units_.tau, units_.omega, 1.0, sys, {}, {});
+    const double sys = system_scale(1.0, s.order);
+    std::unique_ptr<Fourth_order_system> fourth_order;
+    if(s.order == 4)
+    {
+      fourth_order.reset(new Fourth_order_system(assembler_.pattern(), free_));
+      fourth_order->set_operator(M_, L_, {});
+      fourth_order->fill_matrix(units_.tau, units_.omega, 1.0, sys, {}, A4_);
+    }
+    else fill_step_matrix(A_, source_, entry_column_, free_, M_, L_, units_.tau, units_.omega, 1.0, sys, {}, {});
     const bool factorise = s.solver == Linear_solver::CHOLESKY ||
                            (s.solver == Linear_solver::AUTOMATIC && free_.size() <= std::size_t(automatic_cholesky_limit));
     Sparse_cholesky cholesky;
@@ -380,11 +400,13 @@ public:
       st.time_step = report.time_step;
       st.time = double(step) * report.time_step;
       clock.reset();
-      step_residual(assembler_.pattern(), M_, L_, units_.tau, units_.omega, F, F0, 1.0 / sys, R);
+      if(fourth_order) fourth_order->residual(units_.tau, units_.omega, F, F0, 1.0 / sys, R);
+      else step_residual(assembler_.pattern(), M_, L_, units_.tau, units_.omega, F, F0, 1.0 / sys, R);
       for(Eigen::Index i = 0; i < nfree; ++i) B.row(i) = R.row(free_[std::size_t(i)]);
       st.assemble_seconds = (step == 1 ? assemble_seconds : 0.0) + clock.time();
       clock.reset();
-      const Solve_statistics sol = factorise ? cholesky.solve(A_, B, dF) : cg.solve(A_, B, dF);
+      const Eigen::SparseMatrix<double>& A = fourth_order ? A4_ : A_;
+      const Solve_statistics sol = factorise ? cholesky.solve(A, B, dF) : cg.solve(A, B, dF);
       st.solve_seconds = clock.time();
       st.direct_solve = factorise;
       st.solver_iterations = sol.iterations;
@@ -411,10 +433,11 @@ public:
 private:
   // 1, or what the system of a step with f times the time step is divided by so that a huge time
   // step cannot overflow its norms (the solution does not change)
-  double system_scale(double f) const
+  double system_scale(double f, int order) const
   {
     double largest = 0;
-    for(int i : free_) largest = std::max(largest, f * units_.tau[std::size_t(i)] * (units_.omega[std::size_t(i)] + 1 / (mean_edge_ * mean_edge_)));
+    const double stiffness = std::pow(mean_edge_, -order);
+    for(int i : free_) largest = std::max(largest, f * units_.tau[std::size_t(i)] * (units_.omega[std::size_t(i)] + stiffness));
     return largest > 1e6 ? largest : 1.0;
   }
 
@@ -437,9 +460,10 @@ private:
         return false;
       }
     const Length_unit tensor_unit = is_automatic_tensor(tensor, 0) ? Length_unit::EDGE : Length_unit::SCALE;
-    units_ = make_step_units(a, components_, std::size_t(X.rows()), s.time_step, s.time_unit, s.fidelity_weight,
+    units_ = make_step_units(a, components_, std::size_t(X.rows()), s.time_step, s.time_unit, s.order, s.fidelity_weight,
                              s.relative_fidelity, s.stopping.relative_units, tensor_unit, component_edge_, mean_edge_);
     report.scale = units_.scale;
+    report.flow_order = s.order;
     report.time_step = units_.time_step;
     report.fidelity_weight = units_.fidelity_weight;
     report.components = components_.count;
@@ -563,7 +587,7 @@ private:
   Fem_assembler<Cache> assembler_;
   std::vector<int> free_index_, free_;
   std::vector<int> source_;
-  Eigen::SparseMatrix<double> A_;
+  Eigen::SparseMatrix<double> A_, A4_;   // the system of a second-, a fourth-order step
   std::vector<double> M_, L_;
   Eigen::SparseMatrix<double> prefilter_A_;
   Control_matrix prefiltered_X_;

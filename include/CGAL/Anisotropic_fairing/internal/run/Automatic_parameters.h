@@ -9,6 +9,9 @@
 // a feature is, per edge:
 //  - time step 0.3 h^2: a noise of 0.2-0.5 h is reached in 3-11 steps; 0.1 h^2 costs three times as
 //    many steps for the same result within 0.1-0.6 degrees on the denoising pairs (bench_defaults);
+//  - the fourth-order flow's time step 0.1 h^4: the noise is reached in 3-15 steps on our noisy scans at
+//    0.2-0.5 h; 0.03 h^4 takes three times as many for results within 0.1 degrees, while at 1 h^4 one step
+//    overshoots and the last-step interpolation loses (camel head at 0.2 h: 4.58 degrees against 3.99);
 //  - prefilter 0.4 h^2: one isotropic step that removes most of the curvature of noise (at 0.3 h,
 //    the best single isotropic step of the Fandisk0.3 pair is 0.41 h^2);
 //  - feature threshold 0.1 / h: a surface that turns by more than about 6 degrees per edge on M_eps.
@@ -25,6 +28,7 @@ namespace internal {
 struct Automatic_parameters
 {
   double time_step = 0.3;   // tau / h^2 per step
+  double time_step4 = 0.1;  // tau / h^4 per step of the fourth-order flow
   double lambda = 0.1;      // feature threshold, units of 1/h
   double epsilon = 0.4;     // prefilter time, units of h^2
 };

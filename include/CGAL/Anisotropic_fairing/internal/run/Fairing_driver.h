@@ -127,10 +127,18 @@ Fairing_report run_stepper(const Cache& cache, const Locality_ordering& ordering
   return report;
 }
 
-/// Runs the isotropic flow too (`run(tensor, Y)` runs from the input and writes Y) and keeps, in X and
-/// `report`, whichever result's normals vary less at the noise level (Tensor_selection.h), or the one
-/// that succeeded; when the isotropic one is kept, the uniform flow's result replaces it if its normals
-/// vary less still. Says which in `choices`. (The user's callback sees every run.)
+/// Runs the isotropic flow too (`run(tensor, Y, order)` runs from the input and writes Y) and keeps, in X
+/// and `report`, whichever result's normals vary less at the noise level (Tensor_selection.h), or the one
+/// that succeeded; when the isotropic one is kept, the uniform tensor's fourth-order flow's result replaces
+/// it if its normals vary less still. Says which in `choices`. (The user's callback sees every run.)
+/// The settings of a run of the given order; with automatic parameters, its time step too.
+inline Stepper_settings with_order(Stepper_settings s, int order)
+{
+  if(order != s.order && s.time_unit == Length_unit::EDGE) s.time_step = order == 4 ? Automatic_parameters().time_step4 : Automatic_parameters().time_step;
+  s.order = order;
+  return s;
+}
+
 template <typename Run>
 void select_smoother(Run& run, const Ghost_layer& layer, Control_matrix& X, Fairing_report& report, std::string& choices)
 {
@@ -141,7 +149,7 @@ void select_smoother(Run& run, const Ghost_layer& layer, Control_matrix& X, Fair
     return;
   }
   Control_matrix Y;
-  Fairing_report isotropic = run(Isotropic_diffusion_tensor(), Y);
+  Fairing_report isotropic = run(Isotropic_diffusion_tensor(), Y, 2);
   const double va = report.succeeded() ? normal_variation(*layer.topology, layer.real_faces, X) : 0.0;
   const double vi = isotropic.succeeded() ? normal_variation(*layer.topology, layer.real_faces, Y) : 0.0;
   const bool at_noise_level = report.stop_reason == Stop_reason::NOISE_LEVEL && isotropic.stop_reason == Stop_reason::NOISE_LEVEL;
@@ -155,14 +163,14 @@ void select_smoother(Run& run, const Ghost_layer& layer, Control_matrix& X, Fair
   report = isotropic;
   report.selected_tensor = "isotropic";
   if(isotropic.stop_reason != Stop_reason::NOISE_LEVEL) return;
-  Fairing_report uniform = run(Uniform_diffusion_tensor(), Y);
+  Fairing_report uniform = run(Uniform_diffusion_tensor(), Y, 4);
   const bool uniform_at_noise_level = uniform.succeeded() && uniform.stop_reason == Stop_reason::NOISE_LEVEL;
   const double vu = uniform_at_noise_level ? normal_variation(*layer.topology, layer.real_faces, Y) : 0.0;
   const bool keep_uniform = uniform_at_noise_level && vu < vi;
   if(uniform_at_noise_level)
-    std::snprintf(text, sizeof text, "; then the %s flow's among the isotropic results (total variation of the uniform flow's normals %.4g)",
-                  keep_uniform ? "uniform" : "cotangent", vu);
-  choices += uniform_at_noise_level ? text : "; the uniform flow did not end at the noise level: kept the cotangent one";
+    std::snprintf(text, sizeof text, "; then the %s among the isotropic results (total variation of the uniform "
+                  "fourth-order flow's normals %.4g)", keep_uniform ? "uniform fourth-order flow's" : "cotangent flow's", vu);
+  choices += uniform_at_noise_level ? text : "; the uniform fourth-order flow did not end at the noise level: kept the cotangent one";
   if(!keep_uniform) return;
   X.swap(Y);
   report = uniform;
@@ -201,6 +209,8 @@ Fairing_report fair(TriangleMesh& tm, VertexPointMap vpm, AttributeMap attribute
   check_parameter(std::isfinite(s.fidelity_weight) && s.fidelity_weight >= 0, "the fidelity weight must be finite and >= 0");
   s.maximum_steps = std::size_t(choose_parameter(get_parameter(np, CGAL::internal_np::number_of_iterations),
                                                   automatic ? automatic_maximum_steps : 10u));
+  s.order = choose_parameter(get_parameter(np, internal_np::flow_order), 2);
+  check_parameter(s.order == 2 || s.order == 4, "the flow's order must be 2 (diffusion) or 4");
   s.solver = choose_parameter(get_parameter(np, internal_np::linear_solver), Linear_solver::AUTOMATIC);
   s.solver_tolerance = choose_parameter(get_parameter(np, internal_np::solver_tolerance), 1e-8);
   check_parameter(s.solver_tolerance > 0 && s.solver_tolerance < 1, "the solver tolerance must lie in (0, 1)");
@@ -303,12 +313,13 @@ Fairing_report fair(TriangleMesh& tm, VertexPointMap vpm, AttributeMap attribute
   {
     const Automatic_parameters a;
     s.time_step = a.time_step;
+    if(s.order == 4) s.time_step = a.time_step4;
     s.local_time_scale = true;
     const bool tensor_chosen = is_automatic_tensor(tensor, 0);
     if(tensor_chosen) choose_tensor(tensor, a.lambda, a.epsilon, 0);
     char text[400];
-    std::snprintf(text, sizeof text, "noise %.3g h (robust estimate over %zu vertices); time step %.3g h^2 per step until the surface "
-                  "has moved by %.3g x the noise%s", noise.relative_sigma(), noise.number_of_samples(), a.time_step,
+    std::snprintf(text, sizeof text, "noise %.3g h (robust estimate over %zu vertices); time step %.3g h^%d per step until the surface "
+                  "has moved by %.3g x the noise%s", noise.relative_sigma(), noise.number_of_samples(), s.time_step, s.order,
                   s.stopping.noise_discrepancy, tensor_chosen ? "" : "; the tensor given");
     choices = text;
     if(tensor_chosen)
@@ -336,10 +347,10 @@ Fairing_report fair(TriangleMesh& tm, VertexPointMap vpm, AttributeMap attribute
     Ghosted_patch_cache cache(layer, spec);
     boundary_held = hold(boundary_constrained_vertices(layer, cache, boundary == Boundary_handling::HOLD_BOUNDARY_CURVE));
     setup_seconds = setup.time();
-    auto run = [&](const auto& t, Control_matrix& Y) {
+    auto run = [&](const auto& t, Control_matrix& Y, int order) {
       Y = input;
       double limit_weight = 1;
-      Fairing_report r = run_stepper(cache, ordering, components, component_edge, mean_edge, Y, mode, constrained, border, t, s,
+      Fairing_report r = run_stepper(cache, ordering, components, component_edge, mean_edge, Y, mode, constrained, border, t, with_order(s, order),
                                      callback, setup_seconds, limit_weight);
       r.limit_weight = limit_weight;
       if(r.succeeded() && output == Output_positions::LIMIT_SURFACE)
@@ -351,7 +362,7 @@ Fairing_report fair(TriangleMesh& tm, VertexPointMap vpm, AttributeMap attribute
       }
       return r;
     };
-    report = run(tensor, X);
+    report = run(tensor, X, s.order);
     if(select_tensor) select_smoother(run, layer, X, report, choices);
   }
   else
@@ -359,13 +370,13 @@ Fairing_report fair(TriangleMesh& tm, VertexPointMap vpm, AttributeMap attribute
     Linear_element_cache cache(*layer.topology, layer.real_faces);
     boundary_held = hold(border);
     setup_seconds = setup.time();
-    auto run = [&](const auto& t, Control_matrix& Y) {
+    auto run = [&](const auto& t, Control_matrix& Y, int order) {
       Y = input;
       double limit_weight = 1;   // the linear element writes its control points: no limit surface to approach
-      return run_stepper(cache, ordering, components, component_edge, mean_edge, Y, mode, constrained, border, t, s,
+      return run_stepper(cache, ordering, components, component_edge, mean_edge, Y, mode, constrained, border, t, with_order(s, order),
                          callback, setup_seconds, limit_weight);
     };
-    report = run(tensor, X);
+    report = run(tensor, X, s.order);
     if(select_tensor) select_smoother(run, layer, X, report, choices);
   }
   if(mode == Attribute_mode::COUPLED && A.cols() > 0) X.rightCols(A.cols()) /= attribute_weight;

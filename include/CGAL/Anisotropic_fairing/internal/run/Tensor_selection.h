@@ -10,9 +10,10 @@
 // curvature is everywhere as strong as the noise's, the isotropic one can. The anisotropic result is
 // kept unless the isotropic one is clearly smoother (by `isotropic_margin`): a difference of a few
 // percent is within what the noise itself changes from one sample to the next. Once an isotropic result
-// is kept, the uniform flow's result is compared with it by the same measure, without margin: neither
-// keeps creases, and on a graded triangulation the uniform weights smooth every region over the same
-// number of rings (on evenly triangulated meshes the two are close).
+// is kept, the uniform tensor's fourth-order flow (Fourth_order_system.h) is compared with it by the same
+// measure, without margin: neither keeps creases; on a graded triangulation the uniform weights smooth
+// every region over the same number of rings, and the fourth order removes the noise while rounding the
+// shape less (on evenly triangulated meshes the results are close).
 
 #ifndef CGAL_ANISOTROPIC_FAIRING_INTERNAL_RUN_TENSOR_SELECTION_H
 #define CGAL_ANISOTROPIC_FAIRING_INTERNAL_RUN_TENSOR_SELECTION_H

@@ -1,0 +1,105 @@
+// Copyright (c) 2026 Anisotropic_fairing developers.
+// SPDX-License-Identifier: GPL-3.0-or-later
+//
+// The linear system of one semi-implicit step of the fourth-order flow dX/dt = -(M^-1 L)^2 X:
+// ((1 + tau w) M + tau Q) dX = tau (w M (X_0 - X_n) - Q X_n), Q = L D^-1 L, D the lumped (row-sum) mass.
+// A step damps a mode of M^-1 L with eigenvalue mu by 1 / (1 + tau mu^2), where the second-order step
+// damps it by 1 / (1 + tau mu): the cut between the noise (large mu) and the shape (small mu) is sharper,
+// so a run that removes the noise rounds the shape less. Q couples the 6-ring of a vertex (L the 3-ring).
+// The lumped inverse keeps Q sparse; D_i is the integral of the basis function of i (the Loop basis is a
+// partition of unity), positive on a surface. M carries the local time scale as in Step_system.h.
+
+#ifndef CGAL_ANISOTROPIC_FAIRING_INTERNAL_SOLVE_FOURTH_ORDER_SYSTEM_H
+#define CGAL_ANISOTROPIC_FAIRING_INTERNAL_SOLVE_FOURTH_ORDER_SYSTEM_H
+
+#include <CGAL/Anisotropic_fairing/internal/types/Control_matrix.h>
+
+#include <Eigen/SparseCore>
+
+#include <algorithm>
+#include <cmath>
+#include <cstddef>
+#include <vector>
+
+namespace CGAL {
+namespace Anisotropic_fairing {
+namespace internal {
+
+class Fourth_order_system
+{
+public:
+  /// `pattern`: the n x n symmetric pattern of M and L; `free`: the unknowns' rows (increasing).
+  Fourth_order_system(const Eigen::SparseMatrix<double>& pattern, const std::vector<int>& free)
+    : pattern_(pattern), select_(Eigen::Index(free.size()), pattern.rows()), is_free_(std::size_t(pattern.rows()), false)
+  {
+    for(int i : free) is_free_[std::size_t(i)] = true;
+    std::vector<Eigen::Triplet<double>> t;
+    t.reserve(free.size());
+    for(std::size_t k = 0; k < free.size(); ++k) t.emplace_back(Eigen::Index(k), free[k], 1.0);
+    select_.setFromTriplets(t.begin(), t.end());
+  }
+
+  /// Forms M (with the local time scale `mass_weight`, empty: none), Q and D from the pattern's values.
+  void set_operator(const std::vector<double>& M, const std::vector<double>& L, const std::vector<double>& mass_weight)
+  {
+    M_ = pattern_;
+    L_ = pattern_;
+    const int* outer = pattern_.outerIndexPtr();
+    const int* inner = pattern_.innerIndexPtr();
+    const Eigen::Index n = pattern_.rows();
+    Eigen::VectorXd d = Eigen::VectorXd::Zero(n);
+    for(Eigen::Index j = 0; j < n; ++j)
+      for(int p = outer[j]; p < outer[j + 1]; ++p)
+      {
+        double m = M[std::size_t(p)];
+        if(!mass_weight.empty()) m *= mass_weight[std::size_t(inner[p])] * mass_weight[std::size_t(j)];
+        M_.valuePtr()[p] = m;
+        L_.valuePtr()[p] = L[std::size_t(p)];
+        d[inner[p]] += m;
+      }
+    // a vertex on no surface (held, isolated) has no mass and no Laplacian row: any positive D will do
+    const double largest = d.size() > 0 ? d.maxCoeff() : 1.0;
+    for(Eigen::Index i = 0; i < n; ++i) d[i] = is_free_[std::size_t(i)] ? 1 / std::max(d[i], 1e-12 * largest) : 0.0;
+    Q_ = L_ * d.asDiagonal() * L_;
+  }
+
+  /// A (free x free) = (((1 + f tau_i w_i) M + f tau_i Q) restricted to the free rows) / sys, each row and
+  /// column i in units of unknown_scale[i] (empty: none), as fill_step_matrix does for the second order.
+  void fill_matrix(const std::vector<double>& tau, const std::vector<double>& omega, double f, double sys,
+                   const std::vector<double>& unknown_scale, Eigen::SparseMatrix<double>& A) const
+  {
+    const Eigen::Index n = pattern_.rows();
+    Eigen::VectorXd a(n), b(n);
+    for(Eigen::Index i = 0; i < n; ++i)
+    {
+      const double t = f * tau[std::size_t(i)];
+      const double u = unknown_scale.empty() ? 1.0 : unknown_scale[std::size_t(i)];
+      a[i] = (1 + t * omega[std::size_t(i)]) / (sys * u * u);
+      b[i] = t / (sys * u * u);
+    }
+    // tau, w and the unit are constant within a component, and M and Q have no entry between two
+    const Eigen::SparseMatrix<double> S = a.asDiagonal() * M_ + b.asDiagonal() * Q_;
+    A = select_ * S * select_.transpose();
+  }
+
+  /// R = f tau_i (w_i M (X0 - X) - Q X)_i for all rows.
+  void residual(const std::vector<double>& tau, const std::vector<double>& omega, const Control_matrix& X, const Control_matrix& X0,
+                double f, Control_matrix& R) const
+  {
+    Eigen::VectorXd w(X.rows()), t(X.rows());
+    for(Eigen::Index i = 0; i < X.rows(); ++i) { w[i] = omega[std::size_t(i)]; t[i] = f * tau[std::size_t(i)]; }
+    R = t.asDiagonal() * (w.asDiagonal() * (M_ * (X0 - X)) - Q_ * X);
+  }
+
+private:
+  const Eigen::SparseMatrix<double>& pattern_;
+  Eigen::SparseMatrix<double> select_;
+  std::vector<bool> is_free_;
+  Eigen::SparseMatrix<double> M_, L_, Q_;
+};
+
+} // namespace internal
+} // namespace Anisotropic_fairing
+} // namespace CGAL
+
+#endif // CGAL_ANISOTROPIC_FAIRING_INTERNAL_SOLVE_FOURTH_ORDER_SYSTEM_H
