@@ -119,7 +119,8 @@ const Option_spec option_table[] = {
   {"--stop", nullptr, "auto|noise|paper|off",
    "auto (default): noise with automatic parameters, paper otherwise;\n"
    "noise: stop when the surface has moved off the input by the estimated\n"
-   "noise; paper: the criteria (27)-(29) and a steady-state test; off: exactly\n"
+   "noise (--order 4: or when that displacement levels off short of it);\n"
+   "paper: the criteria (27)-(29) and a steady-state test; off: exactly\n"
    "N steps. A step that would fold the surface is retried with a smaller\n"
    "time step, and the run ends on the last sound surface if that fails",
    [](Options& o, const std::string&, const std::string& v) {

@@ -38,7 +38,8 @@ enum class Stop_reason {
   NO_FREE_VERTEX,       ///< every vertex is held (constrained or on a border): nothing can move, no step is taken
   FAILURE,              ///< see `Fairing_report::status`
   NOISE_LEVEL,          ///< the written surface moved off the input by the estimated noise (`Stopping_criteria::noise_discrepancy`); also before any step, when the limit surface of the input already does
-  STEP_REJECTED         ///< a step would have left an unsound surface (folded, pinched, overflowing, \f$\int|H|^2\f$ exploding) even with 1/1024 of the time step: the run ended on the last sound surface, and `Fairing_report::message` says what failed
+  STEP_REJECTED,        ///< a step would have left an unsound surface (folded, pinched, overflowing, \f$\int|H|^2\f$ exploding) even with 1/1024 of the time step: the run ended on the last sound surface, and `Fairing_report::message` says what failed
+  NOISE_REMOVED         ///< the noise criterion, fourth-order flow: its displacement off the input stopped growing short of the estimated noise. What still moves then is shape: the displacement grows more slowly than a wave of \f$4\pi h\f$ (h: the mean edge length) decays under the flow, \f$1/16\f$ per unit of time \f$h^4\f$
 };
 
 /// \ingroup PkgAnisotropicFairingFunctions
@@ -55,6 +56,7 @@ inline const char* to_string(Stop_reason r)
     case Stop_reason::CALLBACK: return "callback";
     case Stop_reason::NO_FREE_VERTEX: return "no_free_vertex";
     case Stop_reason::NOISE_LEVEL: return "noise_level";
+    case Stop_reason::NOISE_REMOVED: return "noise_removed";
     case Stop_reason::STEP_REJECTED: return "step_rejected";
     default: return "failure";
   }

@@ -297,10 +297,20 @@ public:
         }
         report.stop_reason = Stop_reason::NOISE_LEVEL;
       }
+      // the fourth-order flow barely shrinks: once the noise is gone its displacement levels off, maybe short
+      // of the noise level, and what still moves is shape: stop when the displacement grows more slowly than
+      // a wave of 4 pi h decays, |u'/u| = (2 pi / 4 pi h)^4 = 1 / (16 h^4)
+      if(noise_stop && s.order == 4 && report.stop_reason != Stop_reason::NOISE_LEVEL && previous_discrepancy > 0 &&
+         (discrepancy - previous_discrepancy) / discrepancy < st.time_step / (16 * std::pow(mean_edge_, 4)))
+        report.stop_reason = Stop_reason::NOISE_REMOVED;
       report.noise_displacement = st.noise_displacement;
       report.steps.push_back(st);
       if(s.verbose) print(st);
-      if(report.stop_reason == Stop_reason::NOISE_LEVEL) { callback(report.steps.back()); break; }
+      if(report.stop_reason == Stop_reason::NOISE_LEVEL || report.stop_reason == Stop_reason::NOISE_REMOVED)
+      {
+        callback(report.steps.back());
+        break;
+      }
       if(cramped >= 4)
       {
         report.stop_reason = Stop_reason::STEP_REJECTED;

@@ -164,7 +164,8 @@ void select_smoother(Run& run, const Ghost_layer& layer, Control_matrix& X, Fair
   report.selected_tensor = "isotropic";
   if(isotropic.stop_reason != Stop_reason::NOISE_LEVEL) return;
   Fairing_report uniform = run(Uniform_diffusion_tensor(), Y, 4);
-  const bool uniform_at_noise_level = uniform.succeeded() && uniform.stop_reason == Stop_reason::NOISE_LEVEL;
+  const bool uniform_at_noise_level = uniform.succeeded() && (uniform.stop_reason == Stop_reason::NOISE_LEVEL ||
+                                                              uniform.stop_reason == Stop_reason::NOISE_REMOVED);
   const double vu = uniform_at_noise_level ? normal_variation(*layer.topology, layer.real_faces, Y) : 0.0;
   const bool keep_uniform = uniform_at_noise_level && vu < vi;
   if(uniform_at_noise_level)
