@@ -263,21 +263,27 @@ void denoising_pair()
   AF_CHECK(error < normal_error(isotropic, original), "the kept result is the better one");
 }
 
+// camelhead.off (clean) with Gaussian noise of sigma_h mean edge lengths along its vertex normals (noisy)
+void noisy_camel_head(double sigma_h, unsigned seed, Mesh& clean, Mesh& noisy)
+{
+  CGAL::IO::read_polygon_mesh(std::string(DATA) + "/camelhead.off", clean);
+  noisy = clean;
+  const double h = mean_edge(noisy);
+  auto normals = noisy.add_property_map<Mesh::Vertex_index, K::Vector_3>("v:n").first;
+  PMP::compute_vertex_normals(noisy, normals);
+  std::mt19937 rng(seed);
+  std::normal_distribution<double> gauss(0, sigma_h * h);
+  for(auto v : noisy.vertices()) noisy.point(v) = noisy.point(v) + gauss(rng) * normals[v];
+  noisy.remove_property_map(normals);
+}
+
 void tensor_selection()
 {
   // on a graded organic scan with strong noise (the CAD case: denoising_pair), an isotropic result is
   // kept, and of the two isotropic flows the uniform tensor's fourth-order flow, whose normals vary less:
   // it is that run's own, and closer to the truth than the cotangent flow's and the uniform second-order one's
-  Mesh clean;
-  CGAL::IO::read_polygon_mesh(std::string(DATA) + "/camelhead.off", clean);
-  Mesh noisy = clean;
-  const double h = mean_edge(noisy);
-  auto normals = noisy.add_property_map<Mesh::Vertex_index, K::Vector_3>("v:n").first;
-  PMP::compute_vertex_normals(noisy, normals);
-  std::mt19937 rng(11);
-  std::normal_distribution<double> gauss(0, 0.5 * h);
-  for(auto v : noisy.vertices()) noisy.point(v) = noisy.point(v) + gauss(rng) * normals[v];
-  noisy.remove_property_map(normals);
+  Mesh clean, noisy;
+  noisy_camel_head(0.5, 11, clean, noisy);
   Mesh kept = noisy, isotropic = noisy, uniform = noisy, uniform2 = noisy;
   const AF::Fairing_report c = AF::anisotropic_fairing(kept);
   AF::anisotropic_fairing(isotropic, AF::parameters::diffusion_tensor(AF::Isotropic_diffusion_tensor()));
@@ -298,16 +304,8 @@ void fourth_order_noise_removed()
   // the fourth-order flow barely shrinks, so its displacement levels off once the noise is gone: asked to
   // move three times the noise, it must end on its own (noise_removed), long before the step limit, with
   // the noise removed and the shape kept (closer to the truth than the noisy input by far)
-  Mesh clean;
-  CGAL::IO::read_polygon_mesh(std::string(DATA) + "/camelhead.off", clean);
-  Mesh noisy = clean;
-  const double h = mean_edge(noisy);
-  auto normals = noisy.add_property_map<Mesh::Vertex_index, K::Vector_3>("v:n").first;
-  PMP::compute_vertex_normals(noisy, normals);
-  std::mt19937 rng(5);
-  std::normal_distribution<double> gauss(0, 0.2 * h);
-  for(auto v : noisy.vertices()) noisy.point(v) = noisy.point(v) + gauss(rng) * normals[v];
-  noisy.remove_property_map(normals);
+  Mesh clean, noisy;
+  noisy_camel_head(0.2, 5, clean, noisy);
   AF::Stopping_criteria far = AF::Stopping_criteria::automatic();
   far.noise_discrepancy = 3;
   Mesh faired = noisy;
@@ -370,15 +368,8 @@ void local_time_scale_on_a_graded_scan()
 {
   // the automatic isotropic run (time step 0.3 h_i^2) against the same run with one time step 0.3 h^2:
   // on the graded camel head the ears and nostrils keep their shape
-  Mesh clean;
-  CGAL::IO::read_polygon_mesh(std::string(DATA) + "/camelhead.off", clean);
-  Mesh noisy = clean;
-  auto normals = noisy.add_property_map<Mesh::Vertex_index, K::Vector_3>("v:n").first;
-  PMP::compute_vertex_normals(noisy, normals);
-  std::mt19937 rng(7);
-  std::normal_distribution<double> gauss(0, 0.2 * mean_edge(noisy));
-  for(auto v : noisy.vertices()) noisy.point(v) = noisy.point(v) + gauss(rng) * normals[v];
-  noisy.remove_property_map(normals);
+  Mesh clean, noisy;
+  noisy_camel_head(0.2, 7, clean, noisy);
   Mesh local = noisy, global = noisy;
   const AF::Fairing_report r = AF::anisotropic_fairing(local, AF::parameters::diffusion_tensor(AF::Isotropic_diffusion_tensor()));
   const double h = r.mean_edge_length;
