@@ -127,18 +127,19 @@ Fairing_report run_stepper(const Cache& cache, const Locality_ordering& ordering
   return report;
 }
 
-/// Runs the isotropic flow too (`run(tensor, Y, order)` runs from the input and writes Y) and keeps, in X
-/// and `report`, whichever result's normals vary less at the noise level (Tensor_selection.h), or the one
-/// that succeeded; when the isotropic one is kept, the uniform tensor's fourth-order flow's result replaces
-/// it if its normals vary less still. Says which in `choices`. (The user's callback sees every run.)
 /// The settings of a run of the given order; with automatic parameters, its time step too.
 inline Stepper_settings with_order(Stepper_settings s, int order)
 {
-  if(order != s.order && s.time_unit == Length_unit::EDGE) s.time_step = order == 4 ? Automatic_parameters().time_step4 : Automatic_parameters().time_step;
+  if(order != s.order && s.time_unit == Length_unit::EDGE)
+    s.time_step = order == 4 ? Automatic_parameters().time_step4 : Automatic_parameters().time_step;
   s.order = order;
   return s;
 }
 
+/// Runs the isotropic flow too (`run(tensor, Y, order)` runs from the input and writes Y) and keeps, in X
+/// and `report`, whichever result's normals vary less at the noise level (Tensor_selection.h), or the one
+/// that succeeded; when the isotropic one is kept, the uniform tensor's fourth-order flow's result replaces
+/// it if its normals vary less still. Says which in `choices`. (The user's callback sees every run.)
 template <typename Run>
 void select_smoother(Run& run, const Ghost_layer& layer, Control_matrix& X, Fairing_report& report, std::string& choices)
 {
