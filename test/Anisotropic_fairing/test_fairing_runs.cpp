@@ -10,6 +10,7 @@
 #include <CGAL/boost/graph/IO/polygon_mesh_io.h>
 
 #include <CGAL/Anisotropic_fairing/anisotropic_fairing.h>
+#include <CGAL/Eigen_solver_traits.h>
 
 #include "test_support/check.h"
 #include "test_support/mesh_coordinates.h"
@@ -20,6 +21,7 @@
 #include <cstdio>
 #include <cstring>
 #include <limits>
+#include <memory>
 #include <string>
 #include <vector>
 
@@ -337,6 +339,54 @@ void automatic_solver(const std::string& data)
   AF_CHECK(!other.factorise_now(), "a fast CG step keeps conjugate gradients");
 }
 
+// The sparse_linear_solver named parameter (CGAL's SparseLinearAlgebraWithFactorTraits_d) replaces the
+// package's LDL^T wherever it factorises: the steps, the prefilter, the constant system of a fixed surface.
+// A traits that counts its factorisations shows that it is the one used; its results equal the package's.
+typedef CGAL::Eigen_sparse_matrix<double>::EigenType Eigen_matrix;
+template <typename EigenSolver>
+struct Counting_traits : CGAL::Eigen_solver_traits<EigenSolver>
+{
+  typedef CGAL::Eigen_solver_traits<EigenSolver> Base;
+  std::shared_ptr<int> factorisations = std::make_shared<int>(0);
+  bool factor(const typename Base::Matrix& A, typename Base::NT& D) { ++*factorisations; return Base::factor(A, D); }
+};
+
+void user_sparse_linear_solver(const std::string& data)
+{
+  Mesh hemisphere;
+  CGAL::IO::read_polygon_mesh(data + "/hemisphere.off", hemisphere);
+  const auto np = AF::parameters::relative_time_step(2e-2).number_of_iterations(3u).linear_solver(AF::Linear_solver::CHOLESKY)
+                     .stopping_criteria(AF::Stopping_criteria::none()).output_positions(AF::Output_positions::CONTROL_POINTS);
+  Mesh ours = hemisphere, ldlt = hemisphere, lu = hemisphere;
+  AF::anisotropic_fairing(ours, np);
+  Counting_traits<Eigen::SimplicialLDLT<Eigen_matrix>> ldlt_traits;
+  const AF::Fairing_report r1 = AF::anisotropic_fairing(ldlt, np.sparse_linear_solver(ldlt_traits));
+  Counting_traits<Eigen::SparseLU<Eigen_matrix, Eigen::COLAMDOrdering<int>>> lu_traits;
+  const AF::Fairing_report r2 = AF::anisotropic_fairing(lu, np.sparse_linear_solver(lu_traits));
+  const double d1 = max_abs_difference(coordinates(ldlt), coordinates(ours)), d2 = max_abs_difference(coordinates(lu), coordinates(ours));
+  std::printf("sparse_linear_solver: Eigen_solver_traits<SimplicialLDLT> %d factorisations, |difference| %.3g; SparseLU %d, %.3g\n",
+              *ldlt_traits.factorisations, d1, *lu_traits.factorisations, d2);
+  AF_CHECK(r1.succeeded() && r2.succeeded() && r1.used_cholesky, "runs with the user's factorisation succeed");
+  AF_CHECK(*ldlt_traits.factorisations == 3 && *lu_traits.factorisations == 3, "the user's solver factorises each of the 3 steps");
+  AF_CHECK(d1 < 1e-12 && d2 < 1e-12, "the user's factorisations give the package's result");
+
+  // the prefilter of the anisotropic tensor factorises with it too: two factorisations per step
+  Counting_traits<Eigen::SimplicialLDLT<Eigen_matrix>> prefilter_traits;
+  Mesh aniso = hemisphere;
+  AF::anisotropic_fairing(aniso, np.diffusion_tensor(AF::Anisotropic_diffusion_tensor()).sparse_linear_solver(prefilter_traits));
+  AF_CHECK(*prefilter_traits.factorisations >= 6, "the prefilter uses the user's factorisation");
+
+  // a fixed surface: one constant system, factorised once for all steps
+  Counting_traits<Eigen::SimplicialLDLT<Eigen_matrix>> fixed_traits;
+  Mesh fixed = hemisphere;
+  auto height = fixed.add_property_map<Mesh::Vertex_index, double>("v:height", 0.0).first;
+  for(auto v : vertices(fixed)) height[v] = fixed.point(v).z() + 0.01 * std::sin(17 * fixed.point(v).x());
+  const AF::Fairing_report r3 = AF::anisotropic_fairing(fixed, fixed.points(), height,
+      np.attribute_mode(AF::Attribute_mode::ATTRIBUTES_ONLY).sparse_linear_solver(fixed_traits));
+  AF_CHECK(r3.succeeded() && r3.steps.size() == 3 && *fixed_traits.factorisations == 1,
+           "on a fixed surface the user's solver factorises once");
+}
+
 int main(int argc, char** argv)
 {
   const std::string data = argc > 1 ? argv[1] : "data";
@@ -350,5 +400,6 @@ int main(int argc, char** argv)
   stopping_criteria(bumpy);
   linear_element_sphere();
   automatic_solver(data);
+  user_sparse_linear_solver(data);
   return AF_test::report();
 }

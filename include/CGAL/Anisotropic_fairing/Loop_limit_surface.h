@@ -12,7 +12,8 @@
 #include <CGAL/Anisotropic_fairing/internal/assembly/Fem_assembly.h>
 #include <CGAL/Anisotropic_fairing/internal/mesh/Indexed_mesh.h>
 #include <CGAL/Anisotropic_fairing/internal/surface/Limit_resampler.h>
-#include <CGAL/Anisotropic_fairing/internal/element/Patch_cache.h>
+#include <CGAL/Anisotropic_fairing/internal/element/Ghosted_patch_cache.h>
+#include <CGAL/Anisotropic_fairing/internal/element/Quadrature_parameters.h>
 #include <CGAL/Anisotropic_fairing/internal/surface/Vertex_curvature.h>
 #include <CGAL/Anisotropic_fairing/internal/loop/Vertex_limit_masks.h>
 
@@ -177,7 +178,7 @@ public:
   /// number of control faces (one limit-surface patch each)
   std::size_t number_of_faces() const { return indexed_->number_of_faces(); }
   /// Number of distinct topological categories of face patches; evaluation weights are computed once per category.
-  std::size_t number_of_patch_categories() const { return cache_->number_of_categories(); }
+  std::size_t number_of_patch_categories() const { return patches().number_of_categories(); }
   /// Index of `v` in the order of `vertices(tm)`: the row of `v` in `mass_matrix()`.
   std::size_t vertex_index(vertex_descriptor v) const { return indexed_->index(v); }
   /// @}
@@ -248,7 +249,7 @@ public:
     const std::size_t fi = indexed_->index(f);
     internal::Stencil s;
     stencil_at(fi, b, s);
-    const int* ring = cache_->ring(fi);
+    const int* ring = patches().ring(fi);
     std::vector<double> a(std::size_t(A.cols()), 0.0);
     for(Eigen::Index c = 0; c < A.cols(); ++c)
       for(int k = 0; k < s.m; ++k) a[std::size_t(c)] += s.row(internal::VALUE)[k] * A(ring[k], c);
@@ -263,12 +264,7 @@ public:
   template <typename PointOutputMap>
   void limit_positions(PointOutputMap out) const
   {
-    double p[3];
-    for(std::size_t i = 0; i < number_of_vertices(); ++i)
-    {
-      internal::vertex_limit_value(indexed_->topology(), X_, int(i), p);
-      put(out, indexed_->vertex(i), Point_3(p[0], p[1], p[2]));
-    }
+    write_vertex_masks<Point_3>(out, &internal::vertex_limit_value);
   }
 
   /// writes the unit normal of the limit surface at every control vertex (closed-form tangent masks)
@@ -277,12 +273,7 @@ public:
   template <typename VectorOutputMap>
   void limit_normals(VectorOutputMap out) const
   {
-    double n[3];
-    for(std::size_t i = 0; i < number_of_vertices(); ++i)
-    {
-      internal::vertex_limit_normal(indexed_->topology(), X_, int(i), n);
-      put(out, indexed_->vertex(i), Vector_3(n[0], n[1], n[2]));
-    }
+    write_vertex_masks<Vector_3>(out, &internal::vertex_limit_normal);
   }
 
   /*!
@@ -347,19 +338,15 @@ public:
   */
   Eigen::SparseMatrix<double> mass_matrix() const
   {
-    const internal::Ghost_layer& gl = indexed_->ghost_layer();
-    internal::Fem_assembler<internal::Patch_cache> assembler(*cache_, gl.number_of_extended_vertices());
+    // assembled on the control vertices: the faces next to a border have the ghosts' affine rows
+    // folded into their stencils (Ghosted_patch_cache.h), so E^T M_ext E is never formed
+    const std::size_t n = number_of_vertices();
+    internal::Fem_assembler<internal::Ghosted_patch_cache> assembler(*cache_, n);
     std::vector<double> m, l;
-    assembler.assemble(X_, int(X_.cols()), Isotropic_diffusion_tensor(), m, l);
+    assembler.assemble(X_.topRows(Eigen::Index(n)), int(X_.cols()), Isotropic_diffusion_tensor(), m, l);
     Eigen::SparseMatrix<double> M = assembler.pattern();
     std::copy(m.begin(), m.end(), M.valuePtr());
-    if(!gl.has_boundary()) return M;
-    // Galerkin on the control vertices; the products round (i,j) and (j,i) in different orders, so
-    // average them to keep the matrix exactly symmetric
-    const Eigen::SparseMatrix<double> E = extension_matrix(gl);
-    const Eigen::SparseMatrix<double> R = E.transpose() * M * E;
-    const Eigen::SparseMatrix<double> Rt = R.transpose();
-    return 0.5 * (R + Rt);
+    return M;
   }
   /// @}
 
@@ -421,21 +408,27 @@ public:
   /// @}
 
 private:
+  // puts Value(mask(v)) for every control vertex v: a closed-form limit mask of X_ at v
+  template <typename Value, typename OutputMap, typename Mask>
+  void write_vertex_masks(OutputMap out, const Mask& mask) const
+  {
+    double m[3];
+    for(std::size_t i = 0; i < number_of_vertices(); ++i)
+    {
+      mask(indexed_->topology(), X_, int(i), m);
+      put(out, indexed_->vertex(i), Value(m[0], m[1], m[2]));
+    }
+  }
+
   template <typename PointMap, typename NamedParameters>
   void init(PointMap vpm, const NamedParameters& np)
   {
-    using parameters::choose_parameter;
-    using parameters::get_parameter;
-    internal::Quadrature_spec spec;
-    spec.degree = choose_parameter(get_parameter(np, internal_np::quadrature_degree), 8);
-    spec.tiling_depth = choose_parameter(get_parameter(np, internal_np::quadrature_tiling_depth), 0);
     indexed_.reset(new internal::Indexed_mesh<TriangleMesh>(mesh_, internal::Borders::GHOSTED, true));
     // rows of the ghosts appended, so patches next to a border evaluate like any other
     const internal::Ghost_layer& gl = indexed_->ghost_layer();
     X_ = gl.extend(indexed_->read_points(vpm));
-    cache_.reset(new internal::Patch_cache(indexed_->topology(), gl.real_faces));   // ghost faces get no patch
-    cache_->prepare_quadrature(spec);
-    internal::Fem_assembler<internal::Patch_cache> statistics(*cache_, gl.number_of_extended_vertices(), false);
+    cache_.reset(new internal::Ghosted_patch_cache(gl, internal::read_quadrature_spec(np)));   // ghost faces get no patch
+    internal::Fem_assembler<internal::Patch_cache> statistics(patches(), gl.number_of_extended_vertices(), false);
     std::vector<double> unused;
     area_ = statistics.assemble(X_, int(X_.cols()), Isotropic_diffusion_tensor(), unused, unused, false).area;
   }
@@ -449,18 +442,8 @@ private:
     return gl.has_boundary() ? gl.extend(A) : A;
   }
 
-  // E: (control vertices + ghosts) x control vertices, identity on top, the ghosts' affine rows below
-  static Eigen::SparseMatrix<double> extension_matrix(const internal::Ghost_layer& gl)
-  {
-    std::vector<Eigen::Triplet<double>> t;
-    t.reserve(gl.real_vertices + 3 * gl.ghosts.size());
-    for(std::size_t i = 0; i < gl.real_vertices; ++i) t.emplace_back(Eigen::Index(i), Eigen::Index(i), 1.0);
-    for(std::size_t k = 0; k < gl.ghosts.size(); ++k)
-      for(const auto& w : gl.ghosts[k]) t.emplace_back(Eigen::Index(gl.real_vertices + k), Eigen::Index(w.first), w.second);
-    Eigen::SparseMatrix<double> E(Eigen::Index(gl.number_of_extended_vertices()), Eigen::Index(gl.real_vertices));
-    E.setFromTriplets(t.begin(), t.end());
-    return E;
-  }
+  // the Loop patches over the control vertices and ghosts (evaluation, area, resampling)
+  const internal::Patch_cache& patches() const { return cache_->extended(); }
 
   static void check_barycentric(std::size_t fi, const Barycentric_coordinates& b)
   {
@@ -474,13 +457,13 @@ private:
   {
     check_barycentric(fi, b);
     const double sum = b[0] + b[1] + b[2];
-    cache_->root_patch(cache_->category(fi)).stencil(b[1] / sum, b[2] / sum, s);
+    patches().root_patch(patches().category(fi)).stencil(b[1] / sum, b[2] / sum, s);
   }
 
   // position and derivatives (the stencil's rows VALUE, D1, D2, D11, D12, D22) at a point of face fi
   void jet(std::size_t fi, const internal::Stencil& s, double (&v)[6][3]) const
   {
-    const int* ring = cache_->ring(fi);
+    const int* ring = patches().ring(fi);
     for(int r = 0; r < 6; ++r)
       for(int c = 0; c < 3; ++c)
       {
@@ -494,7 +477,7 @@ private:
   Curvature curvature_at(std::size_t fi, double xi1, double xi2) const
   {
     internal::Stencil s;
-    cache_->root_patch(cache_->category(fi)).stencil(xi1, xi2, s);
+    patches().root_patch(patches().category(fi)).stencil(xi1, xi2, s);
     double v[6][3];
     jet(fi, s, v);
     const double (*t)[3] = v + 1;   // the derivative rows
@@ -512,7 +495,7 @@ private:
 
   std::vector<internal::Vertex_curvature_value> vertex_curvature_values() const
   {
-    return internal::averaged_vertex_curvatures(indexed_->topology(), *cache_, number_of_vertices(), X_);
+    return internal::averaged_vertex_curvatures(indexed_->topology(), patches(), number_of_vertices(), X_);
   }
 
   Curvature to_curvature(const internal::Vertex_curvature_value& c) const
@@ -530,7 +513,7 @@ private:
     if(num_vertices(out) != 0 || num_faces(out) != 0)
       throw Input_error(Input_error::INVALID_PARAMETER, Input_error::no_element,
                         "the output mesh of resample() must be empty");
-    return internal::resample_limit_surface(indexed_->topology(), *cache_, number_of_vertices(), X_, A, levels);
+    return internal::resample_limit_surface(indexed_->topology(), patches(), number_of_vertices(), X_, A, levels);
   }
 
   template <typename OutputMesh, typename NamedParameters, typename AttributeWriter>
@@ -579,7 +562,7 @@ private:
 
   const TriangleMesh& mesh_;
   std::unique_ptr<internal::Indexed_mesh<TriangleMesh>> indexed_;
-  std::unique_ptr<internal::Patch_cache> cache_;
+  std::unique_ptr<internal::Ghosted_patch_cache> cache_;   // its extended() cache: patches()
   internal::Control_matrix X_;   // control points, then ghosts (E X)
   double area_ = 0;
 };

@@ -133,8 +133,17 @@ of its area per step. `time_step` and `fidelity_weight` give them in model units
     \cgalParamDescription{the solver of each step's symmetric positive definite system}
     \cgalParamType{`Linear_solver`} \cgalParamDefault{`Linear_solver::AUTOMATIC`}
   \cgalParamNEnd
+  \cgalParamNBegin{sparse_linear_solver}
+    \cgalParamDescription{the factorisation used wherever the package factorises (`Linear_solver::CHOLESKY`,
+                          `AUTOMATIC` when it decides to, the prefilter of the anisotropic tensor): to plug in
+                          CHOLMOD, a supernodal or an out-of-core solver. It receives each symmetric positive
+                          definite system in full and is asked to factor it, then to solve one column at a time}
+    \cgalParamType{a model of `SparseLinearAlgebraWithFactorTraits_d`, e.g.
+                   `CGAL::Eigen_solver_traits<Eigen::SimplicialLDLT<CGAL::Eigen_sparse_matrix<double>::EigenType>>`}
+    \cgalParamDefault{the package's sparse \f$LDL^T\f$ (Eigen's `SimplicialLDLT`, analysed once per run)}
+  \cgalParamNEnd
   \cgalParamNBegin{solver_tolerance}
-    \cgalParamDescription{relative residual at which conjugate gradients stop}
+    \cgalParamDescription{relative residual at which conjugate gradients stop (the prefilter's: a hundredth of it)}
     \cgalParamType{double in (0, 1)} \cgalParamDefault{`1e-8` (the error it leaves in a step is far below the time-discretisation error)}
   \cgalParamNEnd
   \cgalParamNBegin{solver_maximum_iterations}

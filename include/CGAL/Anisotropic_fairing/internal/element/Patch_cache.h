@@ -13,6 +13,8 @@
 #include <CGAL/Anisotropic_fairing/internal/element/Quadrature_rules.h>
 #include <CGAL/Anisotropic_fairing/internal/mesh/Triangle_topology.h>
 
+#include <CGAL/assertions.h>
+
 #include <Eigen/Core>
 
 #include <algorithm>
@@ -134,10 +136,9 @@ public:
   void prepare_quadrature(const Quadrature_spec& spec)
   {
     if(quadrature_ready_ && spec == spec_) return;
+    // the user's spec is checked where it is read (Quadrature_parameters.h)
+    CGAL_precondition(spec.tiling_depth >= 0 && spec.tiling_depth <= 12);
     const std::vector<Triangle_rule_point> rule = triangle_rule(spec.degree);
-    if(spec.tiling_depth < 0 || spec.tiling_depth > 12)
-      throw Input_error(Input_error::INVALID_PARAMETER, Input_error::no_element,
-                        "quadrature tiling depth must lie in [0, 12]");
     for(auto& c : categories_)
     {
       c->points.clear();

@@ -7,9 +7,8 @@
 #ifndef CGAL_ANISOTROPIC_FAIRING_INTERNAL_ELEMENT_QUADRATURE_RULES_H
 #define CGAL_ANISOTROPIC_FAIRING_INTERNAL_ELEMENT_QUADRATURE_RULES_H
 
-#include <CGAL/Anisotropic_fairing/Input_error.h>
+#include <CGAL/assertions.h>
 
-#include <string>
 #include <vector>
 
 namespace CGAL {
@@ -54,9 +53,8 @@ inline std::vector<Triangle_rule_point> triangle_rule(int degree)
       add_orbit3(r, 0.898905543365938, 0.050547228317031, 0.032458497623198);
       add_orbit6(r, 0.008394777409958, 0.263112829634638, 0.728492392955404, 0.027230314174435);
       break;
-    default:
-      throw Input_error(Input_error::INVALID_PARAMETER, Input_error::no_element,
-                        "quadrature degree " + std::to_string(degree) + " is not available (use 4, 6 or 8)");
+    default:   // the user's degree is checked where it is read (Quadrature_parameters.h)
+      CGAL_error_msg("the quadrature degree must be 4, 6 or 8");
   }
   // The tabulated weights carry 15 digits; normalise so that sum w = 1 exactly and the discrete
   // identities (sum of M = area, partition of unity) hold to rounding.

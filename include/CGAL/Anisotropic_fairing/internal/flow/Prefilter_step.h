@@ -3,12 +3,15 @@
 //
 // Bajaj & Xu's prefiltered surface M_eps, where an anisotropic tensor reads its curvature: the surface
 // after one isotropic implicit step of length eps (per row) from X, (M + eps L) X_eps = M X, held
-// vertices fixed (doc/Anisotropic_fairing/design/loop-fem.md section 7). Solved for the free rows' displacement, like a time step.
+// vertices fixed (doc/Anisotropic_fairing/design/loop-fem.md section 7). Solved for the free rows' displacement, like
+// a time step, with the user's solver.
 
 #ifndef CGAL_ANISOTROPIC_FAIRING_INTERNAL_FLOW_PREFILTER_STEP_H
 #define CGAL_ANISOTROPIC_FAIRING_INTERNAL_FLOW_PREFILTER_STEP_H
 
 #include <CGAL/Anisotropic_fairing/internal/types/Control_matrix.h>
+#include <CGAL/Anisotropic_fairing/Fairing_settings.h>
+#include <CGAL/Anisotropic_fairing/internal/solve/Free_block.h>
 #include <CGAL/Anisotropic_fairing/internal/solve/Spd_solvers.h>
 
 #include <Eigen/Sparse>
@@ -20,18 +23,31 @@ namespace CGAL {
 namespace Anisotropic_fairing {
 namespace internal {
 
-/// M, L: value arrays over `pattern` (isotropic); `free`: the free rows; A: the free-free system, whose
-/// entry e comes from pattern entry source[e] in free row free[entry_row[e]] (its values are overwritten).
-/// dX: the displacement of the free rows' first `columns` columns.
+/// The prefilter's share of the user's solver settings. Its tolerance is a hundredth of a step's: the
+/// tensor reads the second derivatives of M_eps, which amplify its error.
+struct Prefilter_solver
+{
+  Linear_solver solver = Linear_solver::AUTOMATIC;
+  double tolerance = 1e-10;
+  int maximum_iterations = 10000;
+  Direct_solver_factory direct;   // empty: Sparse_cholesky
+};
+
+/// M, L: value arrays over `pattern` (isotropic); A: a matrix of the structure of `block.matrix`, whose
+/// values are overwritten. dX: the displacement of the free rows' first `columns` columns.
 inline Solve_statistics prefilter_step(const Eigen::SparseMatrix<double>& pattern, const std::vector<double>& M,
                                        const std::vector<double>& L, const std::vector<double>& eps,
-                                       const std::vector<int>& free, const std::vector<int>& source,
-                                       const std::vector<int>& entry_row, Eigen::SparseMatrix<double>& A,
-                                       const Control_matrix& X, int columns, Control_matrix& dX)
+                                       const Free_block& block, Eigen::SparseMatrix<double>& A,
+                                       const Control_matrix& X, int columns, const Prefilter_solver& settings,
+                                       Control_matrix& dX)
 {
+  const std::vector<int>& free = block.free;
   double* av = A.valuePtr();
-  for(std::size_t e = 0; e < source.size(); ++e)
-    av[e] = M[std::size_t(source[e])] + eps[std::size_t(free[std::size_t(entry_row[e])])] * L[std::size_t(source[e])];
+  for(std::size_t e = 0; e < block.source.size(); ++e)
+  {
+    const std::size_t p = std::size_t(block.source[e]);
+    av[e] = M[p] + eps[std::size_t(free[std::size_t(block.entry_column[e])])] * L[p];
+  }
   const Eigen::Index nfree = Eigen::Index(free.size());
   Control_matrix B(nfree, columns);
   dX = Control_matrix::Zero(nfree, columns);
@@ -42,13 +58,13 @@ inline Solve_statistics prefilter_step(const Eigen::SparseMatrix<double>& patter
     for(int p = pattern.outerIndexPtr()[row]; p < pattern.outerIndexPtr()[row + 1]; ++p)
       B.row(i) -= eps[std::size_t(row)] * L[std::size_t(p)] * X.row(pattern.innerIndexPtr()[p]).head(columns);
   }
-  Block_conjugate_gradient cg(1e-10, 10000);
+  if(settings.solver == Linear_solver::CHOLESKY) return make_direct_solver(settings.direct)->solve(A, B, dX);
+  Block_conjugate_gradient cg(settings.tolerance, settings.maximum_iterations);
   Solve_statistics sol = cg.solve(A, B, dX);
-  if(!sol.ok)   // near-degenerate faces (quantised scans) can make it too ill-conditioned for CG
+  if(!sol.ok && settings.solver == Linear_solver::AUTOMATIC)   // near-degenerate faces (quantised scans) can make it too ill-conditioned for CG
   {
-    Sparse_cholesky cholesky;
     dX.setZero();
-    sol = cholesky.solve(A, B, dX);
+    sol = make_direct_solver(settings.direct)->solve(A, B, dX);
   }
   return sol;
 }

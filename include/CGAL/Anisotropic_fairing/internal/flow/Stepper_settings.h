@@ -9,6 +9,7 @@
 #include <CGAL/Anisotropic_fairing/Fairing_settings.h>
 #include <CGAL/Anisotropic_fairing/internal/flow/Noise_estimate.h>
 #include <CGAL/Anisotropic_fairing/internal/flow/Step_units.h>
+#include <CGAL/Anisotropic_fairing/internal/solve/Spd_solvers.h>
 
 #include <cstddef>
 
@@ -28,6 +29,7 @@ struct Stepper_settings
   Linear_solver solver = Linear_solver::AUTOMATIC;
   double solver_tolerance = 1e-8;
   int solver_maximum_iterations = 10000;
+  Direct_solver_factory direct_solver;   // the factorisation (empty: Sparse_cholesky)
   bool verbose = false;
   bool limit_output = false;        // the positions measured are the Loop limit points of the control points
   const Noise_estimate* noise = nullptr;   // of the input, in the stepper's numbering (noise criterion)

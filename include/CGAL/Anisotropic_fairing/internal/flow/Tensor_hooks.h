@@ -8,44 +8,69 @@
 #ifndef CGAL_ANISOTROPIC_FAIRING_INTERNAL_FLOW_TENSOR_HOOKS_H
 #define CGAL_ANISOTROPIC_FAIRING_INTERNAL_FLOW_TENSOR_HOOKS_H
 
+#include <type_traits>
+#include <utility>
+
 namespace CGAL {
 namespace Anisotropic_fairing {
 namespace internal {
 
-template <typename Tensor>
-auto give_length_scale(Tensor& t, double ell, int) -> decltype(t.set_length_scale(ell), void()) { t.set_length_scale(ell); }
-template <typename Tensor>
-void give_length_scale(Tensor&, double, long) {}
-template <typename Tensor>
-auto wants_length_scale(const Tensor& t, int) -> decltype(const_cast<Tensor&>(t).set_length_scale(1.0), true) { return true; }
-template <typename Tensor>
-bool wants_length_scale(const Tensor&, long) { return false; }
+// whether Tensor has the member that Member<Tensor> names
+template <typename Tensor, template <typename> class Member, typename = void>
+struct has_tensor_member : std::false_type {};
+template <typename Tensor, template <typename> class Member>
+struct has_tensor_member<Tensor, Member, std::void_t<Member<Tensor>>> : std::true_type {};
+
+template <typename T> using set_length_scale_member = decltype(std::declval<T&>().set_length_scale(1.0));
+template <typename T> using normal_motion_only_member = decltype(bool(std::declval<const T&>().normal_motion_only()));
+template <typename T> using prefilter_time_member = decltype(double(std::declval<const T&>().prefilter_time()));
+template <typename T> using is_automatic_member = decltype(bool(std::declval<const T&>().is_automatic()));
+template <typename T> using threshold_member = decltype(double(std::declval<const T&>().threshold()));
+template <typename T> using choose_member = decltype(std::declval<T&>().choose(1.0, 1.0));
 
 template <typename Tensor>
-auto wants_normal_motion(const Tensor& t, int) -> decltype(bool(t.normal_motion_only())) { return bool(t.normal_motion_only()); }
+constexpr bool wants_length_scale(const Tensor&) { return has_tensor_member<Tensor, set_length_scale_member>::value; }
 template <typename Tensor>
-bool wants_normal_motion(const Tensor&, long) { return false; }
+void give_length_scale(Tensor& t, double ell)
+{
+  if constexpr(has_tensor_member<Tensor, set_length_scale_member>::value) t.set_length_scale(ell);
+}
 
 template <typename Tensor>
-auto prefilter_time(const Tensor& t, int) -> decltype(double(t.prefilter_time())) { return double(t.prefilter_time()); }
-template <typename Tensor>
-double prefilter_time(const Tensor&, long) { return 0.0; }
+bool wants_normal_motion(const Tensor& t)
+{
+  if constexpr(has_tensor_member<Tensor, normal_motion_only_member>::value) return bool(t.normal_motion_only());
+  else return false;
+}
 
 template <typename Tensor>
-auto is_automatic_tensor(const Tensor& t, int) -> decltype(bool(t.is_automatic())) { return bool(t.is_automatic()); }
-template <typename Tensor>
-bool is_automatic_tensor(const Tensor&, long) { return false; }
+double prefilter_time(const Tensor& t)
+{
+  if constexpr(has_tensor_member<Tensor, prefilter_time_member>::value) return double(t.prefilter_time());
+  else return 0.0;
+}
 
 template <typename Tensor>
-auto threshold_of(const Tensor& t, int) -> decltype(double(t.threshold())) { return double(t.threshold()); }
+bool is_automatic_tensor(const Tensor& t)
+{
+  if constexpr(has_tensor_member<Tensor, is_automatic_member>::value) return bool(t.is_automatic());
+  else return false;
+}
+
+/// the threshold in model units, or 0 for a tensor without one
 template <typename Tensor>
-double threshold_of(const Tensor&, long) { return 0.0; }
+double threshold_of(const Tensor& t)
+{
+  if constexpr(has_tensor_member<Tensor, threshold_member>::value) return double(t.threshold());
+  else return 0.0;
+}
 
 /// Automatic tensors: their threshold (units of 1/h) and prefilter time (units of h^2) are chosen by the package.
 template <typename Tensor>
-auto choose_tensor(Tensor& t, double lambda, double epsilon, int) -> decltype(t.choose(lambda, epsilon), void()) { t.choose(lambda, epsilon); }
-template <typename Tensor>
-void choose_tensor(Tensor&, double, double, long) {}
+void choose_tensor(Tensor& t, double lambda, double epsilon)
+{
+  if constexpr(has_tensor_member<Tensor, choose_member>::value) t.choose(lambda, epsilon);
+}
 
 } // namespace internal
 } // namespace Anisotropic_fairing

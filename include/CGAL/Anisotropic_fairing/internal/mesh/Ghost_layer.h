@@ -22,6 +22,7 @@
 
 #include <Eigen/Core>
 
+#include <algorithm>
 #include <cstdint>
 #include <memory>
 #include <string>
@@ -61,6 +62,33 @@ struct Ghost_layer
     return E;
   }
   bool has_boundary() const { return !ghosts.empty(); }
+
+  /// The same mesh and ghost layer with real vertex v renamed new_of_old_vertex[v] and real face
+  /// old_of_new_face[f] moved to position f; the ghosts and their faces keep their places after them.
+  Ghost_layer renumbered(const std::vector<int>& new_of_old_vertex, const std::vector<std::size_t>& old_of_new_face) const
+  {
+    Ghost_layer gl;
+    gl.real_vertices = real_vertices;
+    gl.real_faces = real_faces;
+    gl.boundary_loops = boundary_loops;
+    std::vector<int> vertex_map(new_of_old_vertex);
+    for(std::size_t k = 0; k < ghosts.size(); ++k) vertex_map.push_back(int(real_vertices + k));
+    std::vector<std::size_t> face_order(old_of_new_face);
+    for(std::size_t f = real_faces; f < topology->number_of_faces(); ++f) face_order.push_back(f);
+    gl.topology.reset(new Triangle_topology(topology->renumbered(vertex_map, face_order)));
+    gl.ghosts = ghosts;
+    for(Affine_row& row : gl.ghosts)
+      for(auto& w : row) w.first = new_of_old_vertex[std::size_t(w.first)];
+    auto renamed = [&](const std::vector<int>& vertices) {
+      std::vector<int> r;
+      for(int v : vertices) r.push_back(new_of_old_vertex[std::size_t(v)]);
+      std::sort(r.begin(), r.end());
+      return r;
+    };
+    gl.boundary_vertices = renamed(boundary_vertices);
+    gl.isolated_vertices = renamed(isolated_vertices);
+    return gl;
+  }
 };
 
 /// Builds the ghost layer of the triangle mesh (n vertices, faces). Throws Input_error for what the

@@ -6,8 +6,8 @@
 // scatters into, and the solvers multiply with, a matrix whose pattern is the 3-ring; in the user's
 // order (e.g. after subdivision, or of a scan) neighbours can be far apart and every face touches
 // cold cache lines. The user's mesh and the order results are written in are unchanged.
-// Only real vertices and faces are renumbered; the ghost layer of the renumbered mesh is rebuilt
-// (its ghosts follow the faces, so they are local too).
+// Only real vertices and faces are renumbered; the topology and the ghost layer, built and checked once
+// in the user's numbering, are permuted (the ghosts, along the borders, keep their order).
 
 #ifndef CGAL_ANISOTROPIC_FAIRING_INTERNAL_MESH_LOCALITY_ORDERING_H
 #define CGAL_ANISOTROPIC_FAIRING_INTERNAL_MESH_LOCALITY_ORDERING_H
@@ -29,6 +29,25 @@ struct Locality_ordering
   std::vector<std::size_t> old_of_new_face;
   Ghost_layer layer;   // the same mesh, and its ghost layer, in the new numbering
 };
+
+/// Completes `o`, whose vertex numbering is set: faces by their smallest new vertex index (each keeps its
+/// vertex cycle, so its orientation), and the layer renumbered.
+inline void order_faces_and_renumber(const Ghost_layer& gl, Locality_ordering& o)
+{
+  const Triangle_topology& topo = *gl.topology;
+  const std::size_t nf = gl.real_faces;
+  std::vector<std::pair<int, std::size_t>> key(nf);
+  for(std::size_t f = 0; f < nf; ++f)
+  {
+    const Triangle_topology::Face& t = topo.face(f);
+    key[f] = { std::min({ o.new_of_old_vertex[std::size_t(t[0])], o.new_of_old_vertex[std::size_t(t[1])],
+                          o.new_of_old_vertex[std::size_t(t[2])] }), f };
+  }
+  std::sort(key.begin(), key.end());
+  o.old_of_new_face.resize(nf);
+  for(std::size_t k = 0; k < nf; ++k) o.old_of_new_face[k] = key[k].second;
+  o.layer = gl.renumbered(o.new_of_old_vertex, o.old_of_new_face);
+}
 
 /// Renumbers the real vertices and faces of `gl` (whose real fans are closed).
 inline Locality_ordering make_locality_ordering(const Ghost_layer& gl)
@@ -89,26 +108,7 @@ inline Locality_ordering make_locality_ordering(const Ghost_layer& gl)
     o.new_of_old_vertex[std::size_t(v)] = int(o.old_of_new_vertex.size());
     o.old_of_new_vertex.push_back(v);
   }
-  // faces by their smallest new vertex index; each face keeps its vertex cycle (orientation)
-  const std::size_t nf = gl.real_faces;
-  std::vector<std::pair<int, std::size_t>> key(nf);
-  for(std::size_t f = 0; f < nf; ++f)
-  {
-    const Triangle_topology::Face& t = topo.face(f);
-    key[f] = { std::min({ o.new_of_old_vertex[std::size_t(t[0])], o.new_of_old_vertex[std::size_t(t[1])],
-                          o.new_of_old_vertex[std::size_t(t[2])] }), f };
-  }
-  std::sort(key.begin(), key.end());
-  std::vector<Triangle_topology::Face> faces(nf);
-  o.old_of_new_face.resize(nf);
-  for(std::size_t k = 0; k < nf; ++k)
-  {
-    const Triangle_topology::Face& t = topo.face(key[k].second);
-    o.old_of_new_face[k] = key[k].second;
-    faces[k] = { { o.new_of_old_vertex[std::size_t(t[0])], o.new_of_old_vertex[std::size_t(t[1])],
-                   o.new_of_old_vertex[std::size_t(t[2])] } };
-  }
-  o.layer = make_ghost_layer(std::size_t(n), faces, !gl.isolated_vertices.empty());
+  order_faces_and_renumber(gl, o);
   return o;
 }
 

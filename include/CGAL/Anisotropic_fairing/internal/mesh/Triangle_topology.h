@@ -76,6 +76,30 @@ public:
     do { *out++ = target(h); h = ccw(h); } while(h != h0);
   }
 
+  /// The same topology with vertex v renamed new_of_old_vertex[v] and face old_of_new_face[f] moved to
+  /// position f (each face keeps its vertex cycle): a permutation, no new linking or validation.
+  Triangle_topology renumbered(const std::vector<int>& new_of_old_vertex, const std::vector<std::size_t>& old_of_new_face) const
+  {
+    Triangle_topology t(*this);
+    std::vector<int> new_of_old_face(faces_.size());
+    for(std::size_t f = 0; f < faces_.size(); ++f) new_of_old_face[old_of_new_face[f]] = int(f);
+    auto halfedge = [&](int h) { return h < 0 ? h : 3 * new_of_old_face[std::size_t(h / 3)] + h % 3; };
+    for(std::size_t f = 0; f < faces_.size(); ++f)
+      for(int c = 0; c < 3; ++c)
+      {
+        t.faces_[f][c] = new_of_old_vertex[std::size_t(faces_[old_of_new_face[f]][c])];
+        t.opposite_[3 * f + std::size_t(c)] = halfedge(opposite_[3 * old_of_new_face[f] + std::size_t(c)]);
+      }
+    for(std::size_t v = 0; v < n_vertices_; ++v)
+    {
+      const std::size_t w = std::size_t(new_of_old_vertex[v]);
+      t.out_[w] = halfedge(out_[v]);
+      t.valence_[w] = valence_[v];
+      t.outgoing_count_[w] = outgoing_count_[v];
+    }
+    return t;
+  }
+
   /// a key of the directed edge (a, b), for hashing
   static std::uint64_t key(int a, int b)
   {

@@ -17,6 +17,7 @@
 #include <CGAL/Anisotropic_fairing/named_function_parameters.h>
 #include <CGAL/Anisotropic_fairing/Anisotropic_diffusion_tensor.h>
 #include <CGAL/Anisotropic_fairing/internal/run/Automatic_parameters.h>
+#include <CGAL/Anisotropic_fairing/internal/run/Fairing_parameters.h>
 #include <CGAL/Anisotropic_fairing/internal/run/Tensor_selection.h>
 #include <CGAL/Anisotropic_fairing/internal/flow/Boundary_constraints.h>
 #include <CGAL/Anisotropic_fairing/internal/element/Ghosted_patch_cache.h>
@@ -88,12 +89,6 @@ inline double mean_edge_length(const Ghost_layer& gl, const Control_matrix& P)
 }
 
 
-inline void check_parameter(bool ok, const std::string& message)
-{
-  if(!ok) throw Input_error(Input_error::INVALID_PARAMETER, Input_error::no_element, message);
-}
-
-
 /// The default tensor: chosen from the mesh when the time step is too (automatic parameters).
 inline Anisotropic_diffusion_tensor default_tensor(std::true_type) { return Anisotropic_diffusion_tensor::automatic(); }
 inline Isotropic_diffusion_tensor default_tensor(std::false_type) { return Isotropic_diffusion_tensor(); }
@@ -114,7 +109,7 @@ Fairing_report run_stepper(const Cache& cache, const Locality_ordering& ordering
                                                      std::is_same<Tensor, Uniform_diffusion_tensor>::value);
   Time_stepper<Cache> stepper(cache, std::size_t(X.rows()), constrained, ordering.layer, components, component_edge, mean_edge);
   const Tangential_motion_filter filter(ordering.layer);
-  const bool normal_motion = wants_normal_motion(tensor, 0) && mode != Attribute_mode::ATTRIBUTES_ONLY;
+  const bool normal_motion = wants_normal_motion(tensor) && mode != Attribute_mode::ATTRIBUTES_ONLY;
   if(normal_motion) stepper.set_tangential_filter(&filter);
   stepper.assembler().use_original_indices(&ordering.old_of_new_vertex, &ordering.old_of_new_face);
   stepper.assembler().exclude_from_curvature(&border);
@@ -184,62 +179,23 @@ Fairing_report fair(TriangleMesh& tm, VertexPointMap vpm, AttributeMap attribute
 {
   using parameters::choose_parameter;
   using parameters::get_parameter;
-  using parameters::is_default_parameter;
   typedef typename boost::graph_traits<TriangleMesh>::vertex_descriptor vertex_descriptor;
   typedef typename boost::property_traits<VertexPointMap>::value_type Point;
   CGAL::Real_timer total;
   total.start();
 
-  // parameters; without a time step the package chooses the time step, the stopping rule and (unless
-  // given) the tensor from the mesh (Automatic_parameters.h)
-  Stepper_settings s;
-  const bool absolute_tau = !is_default_parameter<NamedParameters, internal_np::time_step_t>::value;
-  const bool relative_tau = !is_default_parameter<NamedParameters, internal_np::relative_time_step_t>::value;
-  constexpr bool automatic = is_default_parameter<NamedParameters, internal_np::time_step_t>::value &&
-                             is_default_parameter<NamedParameters, internal_np::relative_time_step_t>::value;
-  check_parameter(!(absolute_tau && relative_tau), "give either time_step or relative_time_step, not both");
-  s.time_unit = absolute_tau ? Length_unit::MODEL : relative_tau ? Length_unit::SCALE : Length_unit::EDGE;
-  s.time_step = absolute_tau ? double(choose_parameter(get_parameter(np, internal_np::time_step), 0.0))
-                             : double(choose_parameter(get_parameter(np, internal_np::relative_time_step), 1e-3));
-  check_parameter(std::isfinite(s.time_step) && s.time_step > 0, "the time step must be positive and finite");
-  const bool absolute_w = !is_default_parameter<NamedParameters, internal_np::fidelity_weight_t>::value;
-  const bool relative_w = !is_default_parameter<NamedParameters, internal_np::relative_fidelity_weight_t>::value;
-  check_parameter(!(absolute_w && relative_w), "give either fidelity_weight or relative_fidelity_weight, not both");
-  s.relative_fidelity = !absolute_w;
-  s.fidelity_weight = absolute_w ? double(choose_parameter(get_parameter(np, internal_np::fidelity_weight), 0.0))
-                                 : double(choose_parameter(get_parameter(np, internal_np::relative_fidelity_weight), 0.0));
-  check_parameter(std::isfinite(s.fidelity_weight) && s.fidelity_weight >= 0, "the fidelity weight must be finite and >= 0");
-  s.maximum_steps = std::size_t(choose_parameter(get_parameter(np, CGAL::internal_np::number_of_iterations),
-                                                  automatic ? automatic_maximum_steps : 10u));
-  s.order = choose_parameter(get_parameter(np, internal_np::flow_order), 2);
-  check_parameter(s.order == 2 || s.order == 4, "the flow's order must be 2 (diffusion) or 4");
-  s.solver = choose_parameter(get_parameter(np, internal_np::linear_solver), Linear_solver::AUTOMATIC);
-  s.solver_tolerance = choose_parameter(get_parameter(np, internal_np::solver_tolerance), 1e-8);
-  check_parameter(s.solver_tolerance > 0 && s.solver_tolerance < 1, "the solver tolerance must lie in (0, 1)");
-  s.solver_maximum_iterations = choose_parameter(get_parameter(np, internal_np::solver_maximum_iterations), 10000);
-  check_parameter(s.solver_maximum_iterations >= 1, "the solver needs at least one iteration");
-  s.verbose = choose_parameter(get_parameter(np, CGAL::internal_np::verbose), false);
-  const Finite_element element = choose_parameter(get_parameter(np, internal_np::finite_element), Finite_element::LOOP);
-  const Output_positions output = choose_parameter(get_parameter(np, internal_np::output_positions), Output_positions::LIMIT_SURFACE);
-  constexpr bool has_attributes = !std::is_same<AttributeMap, No_attributes>::value;
-  const Attribute_mode mode = choose_parameter(get_parameter(np, internal_np::attribute_mode),
-                                               has_attributes ? Attribute_mode::SEPARATE : Attribute_mode::GEOMETRY_ONLY);
-  check_parameter(has_attributes || mode == Attribute_mode::GEOMETRY_ONLY || mode == Attribute_mode::SEPARATE,
-                  "the coupled and attributes-only modes need an attribute map");
-  // (the noise criterion measures the geometry: with the geometry fixed, the paper's criteria)
-  s.stopping = choose_parameter(get_parameter(np, internal_np::stopping_criteria),
-                                automatic && mode != Attribute_mode::ATTRIBUTES_ONLY ? Stopping_criteria::automatic()
-                                                                                     : Stopping_criteria());
-  check_parameter(std::isfinite(s.stopping.curvature_rate_ratio) && std::isfinite(s.stopping.curvature_rate) &&
-                  std::isfinite(s.stopping.displacement) && std::isfinite(s.stopping.steady_speed) &&
-                  std::isfinite(s.stopping.noise_discrepancy), "stopping thresholds must be finite");
-  const double attribute_weight = choose_parameter(get_parameter(np, internal_np::attribute_weight), 1.0);
-  check_parameter(std::isfinite(attribute_weight) && attribute_weight > 0, "the attribute weight must be positive and finite");
-  const Boundary_handling boundary = choose_parameter(get_parameter(np, internal_np::boundary_handling),
-                                                      Boundary_handling::HOLD_BOUNDARY_CURVE);
-  Quadrature_spec spec;
-  spec.degree = choose_parameter(get_parameter(np, internal_np::quadrature_degree), 8);
-  spec.tiling_depth = choose_parameter(get_parameter(np, internal_np::quadrature_tiling_depth), 0);
+  // parameters (Fairing_parameters.h); without a time step the package chooses the time step, the
+  // stopping rule and (unless given) the tensor from the mesh (Automatic_parameters.h). The tensor, the
+  // constrained-vertex map and the callback are read here: their types are the caller's.
+  const Fairing_parameters given = read_fairing_parameters(np, !std::is_same<AttributeMap, No_attributes>::value);
+  Stepper_settings s = given.settings;
+  constexpr bool automatic = uses_automatic_parameters<NamedParameters>::value;
+  const Finite_element element = given.element;
+  const Output_positions output = given.output;
+  const Attribute_mode mode = given.mode;
+  const double attribute_weight = given.attribute_weight;
+  const Boundary_handling boundary = given.boundary;
+  const Quadrature_spec& spec = given.quadrature;
   auto tensor = choose_parameter(get_parameter(np, internal_np::diffusion_tensor),
                                  default_tensor(std::integral_constant<bool, automatic>()));
   auto vcm = choose_parameter(get_parameter(np, CGAL::internal_np::vertex_is_constrained),
@@ -256,7 +212,7 @@ Fairing_report fair(TriangleMesh& tm, VertexPointMap vpm, AttributeMap attribute
   CGAL::Real_timer setup;
   setup.start();
   // the solver works in a private, cache-friendly numbering (row i of X is vertex old_of_new_vertex[i])
-  // (the ghost layer of a mesh with borders is rebuilt in that numbering)
+  // (the topology and the ghost layer, checked in the user's numbering, permuted into it)
   const Locality_ordering ordering = make_locality_ordering(im.ghost_layer());
   const Ghost_layer& layer = ordering.layer;
   Control_matrix X(Eigen::Index(n), 3 + A.cols());
@@ -317,8 +273,8 @@ Fairing_report fair(TriangleMesh& tm, VertexPointMap vpm, AttributeMap attribute
     s.time_step = a.time_step;
     if(s.order == 4) s.time_step = a.time_step4;
     s.local_time_scale = true;
-    const bool tensor_chosen = is_automatic_tensor(tensor, 0);
-    if(tensor_chosen) choose_tensor(tensor, a.lambda, a.epsilon, 0);
+    const bool tensor_chosen = is_automatic_tensor(tensor);
+    if(tensor_chosen) choose_tensor(tensor, a.lambda, a.epsilon);
     char text[400];
     std::snprintf(text, sizeof text, "noise %.3g h (robust estimate over %zu vertices); time step %.3g h^%d per step until the surface "
                   "has moved by %.3g x the noise%s", noise.relative_sigma(), noise.number_of_samples(), s.time_step, s.order,
@@ -341,7 +297,7 @@ Fairing_report fair(TriangleMesh& tm, VertexPointMap vpm, AttributeMap attribute
   std::size_t boundary_held = 0;
   // the automatic tensor's result is compared with the isotropic one's at the same discrepancy
   // (Tensor_selection.h): when both stop at the noise level
-  const bool select_tensor = automatic && is_automatic_tensor(tensor, 0) && mode != Attribute_mode::ATTRIBUTES_ONLY &&
+  const bool select_tensor = automatic && is_automatic_tensor(tensor) && mode != Attribute_mode::ATTRIBUTES_ONLY &&
                              s.stopping.noise_discrepancy > 0;
   const Control_matrix input = X;
   if(element == Finite_element::LOOP)

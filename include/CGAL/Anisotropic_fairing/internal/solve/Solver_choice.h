@@ -26,19 +26,28 @@ namespace internal {
 class Solver_choice
 {
 public:
-  Solver_choice(Linear_solver requested, std::size_t free_vertices)
-    : automatic_(requested == Linear_solver::AUTOMATIC),
+  /// `constant_matrix`: every solve has the same matrix (a fixed surface): AUTOMATIC factorises it once
+  /// when it may, else iterates, without timing trials.
+  /// `direct`: makes the factorising solver (empty: Sparse_cholesky).
+  Solver_choice(Linear_solver requested, std::size_t free_vertices, bool constant_matrix = false,
+                Direct_solver_factory direct = Direct_solver_factory())
+    : automatic_(requested == Linear_solver::AUTOMATIC && !constant_matrix),
       may_factorise_(requested == Linear_solver::CHOLESKY ||
-                     (automatic_ && free_vertices <= std::size_t(automatic_cholesky_limit))),
-      mode_(requested == Linear_solver::CHOLESKY ? FACTORISE : ITERATE)
+                     (requested == Linear_solver::AUTOMATIC && free_vertices <= std::size_t(automatic_cholesky_limit))),
+      mode_(requested == Linear_solver::CHOLESKY || (constant_matrix && may_factorise_) ? FACTORISE : ITERATE),
+      constant_(constant_matrix), make_direct_(std::move(direct))
   {}
 
   bool factorise_now() const { return mode_ != ITERATE; }
   bool may_fall_back() const { return automatic_ && may_factorise_; }
-  Sparse_cholesky& cholesky()
+  Direct_solver& direct_solver()
   {
-    if(!cholesky_) cholesky_.reset(new Sparse_cholesky());
-    return *cholesky_;
+    if(!direct_)
+    {
+      direct_ = make_direct_solver(make_direct_);
+      direct_->keep_factorisation(constant_);
+    }
+    return *direct_;
   }
 
   /// Solves A X = B the chosen way (X holds the initial guess of conjugate gradients); a conjugate-
@@ -47,14 +56,14 @@ public:
                          Block_conjugate_gradient& cg, bool& direct)
   {
     direct = factorise_now();
-    if(direct) return cholesky().solve(A, B, X);
+    if(direct) return direct_solver().solve(A, B, X);
     start_ = X;
     Solve_statistics sol = cg.solve(A, B, X);
     if(!sol.ok && may_fall_back())
     {
       X = start_;
       direct = true;
-      sol = cholesky().solve(A, B, X);
+      sol = direct_solver().solve(A, B, X);
     }
     return sol;
   }
@@ -84,10 +93,12 @@ private:
   enum Mode { ITERATE, TRIAL, FACTORISE };
   bool automatic_, may_factorise_;
   Mode mode_;
+  bool constant_;
   bool tried_ = false;
   double predicted_iterate_seconds_ = 0, factorised_seconds_ = HUGE_VAL;
   int previous_iterations_ = 0;
-  std::unique_ptr<Sparse_cholesky> cholesky_;
+  Direct_solver_factory make_direct_;
+  std::unique_ptr<Direct_solver> direct_;
   Control_matrix start_;
 };
 

@@ -23,6 +23,8 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <functional>
+#include <memory>
 #include <string>
 #include <vector>
 
@@ -171,12 +173,42 @@ private:
   Control_matrix R_, Z_, P_, AP_;
 };
 
-/// Sparse LDL^T (fill-reducing ordering and symbolic analysis on the first call, numeric
-/// factorisation on every call).
-class Sparse_cholesky
+/// A factorising solver of the symmetric positive definite system (the matrix stored in full): the
+/// package's Sparse_cholesky, or the user's `sparse_linear_solver` (User_direct_solver.h).
+class Direct_solver
 {
 public:
-  Solve_statistics solve(const Eigen::SparseMatrix<double>& A, const Control_matrix& B, Control_matrix& X)
+  virtual ~Direct_solver() {}
+  virtual Solve_statistics solve(const Eigen::SparseMatrix<double>& A, const Control_matrix& B, Control_matrix& X) = 0;
+  /// For a matrix that does not change between solves: factorise at the first solve only.
+  void keep_factorisation(bool keep) { keep_factorisation_ = keep; }
+
+protected:
+  bool keep_factorisation_ = false;
+};
+
+/// Makes the direct solver to use; empty: Sparse_cholesky.
+typedef std::function<std::unique_ptr<Direct_solver>()> Direct_solver_factory;
+
+/// The largest relative residual |b - A x| / |b| over the columns (A: the lower triangle is read)
+inline double relative_residual(const Eigen::SparseMatrix<double>& A, const Eigen::MatrixXd& b, const Eigen::MatrixXd& x)
+{
+  const Eigen::MatrixXd r = b - A.selfadjointView<Eigen::Lower>() * x;
+  double largest = 0;
+  for(Eigen::Index c = 0; c < b.cols(); ++c)
+  {
+    const double bn = b.col(c).norm();
+    largest = std::max(largest, bn > 0 ? r.col(c).norm() / bn : r.col(c).norm());
+  }
+  return largest;
+}
+
+/// Sparse LDL^T (fill-reducing ordering and symbolic analysis on the first call, numeric
+/// factorisation on every call).
+class Sparse_cholesky : public Direct_solver
+{
+public:
+  Solve_statistics solve(const Eigen::SparseMatrix<double>& A, const Control_matrix& B, Control_matrix& X) override
   {
     Solve_statistics st;
     if(!analysed_)
@@ -201,23 +233,20 @@ public:
     x = ldlt_.solve(b);
     X = x;
     st.iterations = 1;
-    const Eigen::MatrixXd r = b - A.selfadjointView<Eigen::Lower>() * x;
-    for(Eigen::Index c = 0; c < B.cols(); ++c)
-    {
-      const double bn = b.col(c).norm();
-      st.residual = std::max(st.residual, bn > 0 ? r.col(c).norm() / bn : r.col(c).norm());
-    }
+    st.residual = relative_residual(A, b, x);
     return st;
   }
-
-  /// For a matrix that does not change between solves: factorise at the first solve only.
-  void keep_factorisation(bool keep) { keep_factorisation_ = keep; }
 
 private:
   Eigen::SimplicialLDLT<Eigen::SparseMatrix<double>, Eigen::Lower> ldlt_;
   bool analysed_ = false;
-  bool keep_factorisation_ = false, factorised_ = false;
+  bool factorised_ = false;
 };
+
+inline std::unique_ptr<Direct_solver> make_direct_solver(const Direct_solver_factory& factory)
+{
+  return factory ? factory() : std::unique_ptr<Direct_solver>(new Sparse_cholesky());
+}
 
 } // namespace internal
 } // namespace Anisotropic_fairing

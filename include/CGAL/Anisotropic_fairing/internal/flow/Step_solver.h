@@ -1,0 +1,105 @@
+// Copyright (c) 2026 Anisotropic_fairing developers.
+// SPDX-License-Identifier: GPL-3.0-or-later
+//
+// One semi-implicit step: its system over the free vertices, of the second-order flow (Step_system.h) or
+// the fourth-order one (Fourth_order_system.h), and its solution by the chosen solver (Solver_choice.h).
+// With several components the unknowns are scaled per component so that the solver's tolerance means the
+// same on each; the displacement returned is in model units. On a fixed surface the matrix is constant:
+// formed once, and factorised once when factorised at all.
+
+#ifndef CGAL_ANISOTROPIC_FAIRING_INTERNAL_FLOW_STEP_SOLVER_H
+#define CGAL_ANISOTROPIC_FAIRING_INTERNAL_FLOW_STEP_SOLVER_H
+
+#include <CGAL/Anisotropic_fairing/internal/flow/Step_units.h>
+#include <CGAL/Anisotropic_fairing/internal/flow/Stepper_settings.h>
+#include <CGAL/Anisotropic_fairing/internal/solve/Fourth_order_system.h>
+#include <CGAL/Anisotropic_fairing/internal/solve/Free_block.h>
+#include <CGAL/Anisotropic_fairing/internal/solve/Solver_choice.h>
+#include <CGAL/Anisotropic_fairing/internal/solve/Spd_solvers.h>
+#include <CGAL/Anisotropic_fairing/internal/solve/Step_system.h>
+#include <CGAL/Anisotropic_fairing/internal/types/Control_matrix.h>
+#include <CGAL/Real_timer.h>
+
+#include <cmath>
+#include <memory>
+#include <vector>
+
+namespace CGAL {
+namespace Anisotropic_fairing {
+namespace internal {
+
+class Step_solver
+{
+public:
+  /// `columns`: of the unknowns; `constant_matrix`: every step has the same system (a fixed surface).
+  Step_solver(const Eigen::SparseMatrix<double>& pattern, const Free_block& block, const Stepper_settings& s,
+              Eigen::Index columns, bool constant_matrix)
+    : pattern_(pattern), block_(block), A_(block.matrix), cg_(s.solver_tolerance, s.solver_maximum_iterations),
+      choice_(s.solver, block.size(), constant_matrix, s.direct_solver), constant_(constant_matrix),
+      R_(pattern.rows(), columns), B_(Eigen::Index(block.size()), columns), dX_(Control_matrix::Zero(Eigen::Index(block.size()), columns))
+  {
+    if(s.order == 4) fourth_order_.reset(new Fourth_order_system(pattern, block.free));
+  }
+
+  /// Solves the step of `factor` times the time step at (M, L), from X (X0: the input, for the fidelity
+  /// term), the system divided by `sys`. `mass_weight`: the local time scale; `unknown_scale`: per row with
+  /// several components; either empty: none. `direct`: whether it was factorised.
+  Solve_statistics solve(const std::vector<double>& M, const std::vector<double>& L, const Step_units& u,
+                         const std::vector<double>& mass_weight, const std::vector<double>& unknown_scale, double factor, double sys,
+                         const Control_matrix& X, const Control_matrix& X0, bool& direct)
+  {
+    const bool form = !(constant_ && formed_);
+    if(fourth_order_)
+    {
+      if(form)
+      {
+        fourth_order_->set_operator(M, L, mass_weight);
+        fourth_order_->fill_matrix(u.tau, u.omega, factor, sys, unknown_scale, A4_);
+      }
+      fourth_order_->residual(u.tau, u.omega, X, X0, factor / sys, R_);
+    }
+    else
+    {
+      if(form) fill_step_matrix(A_, block_.source, block_.entry_column, block_.free, M, L, u.tau, u.omega, factor, sys, unknown_scale, mass_weight);
+      step_residual(pattern_, M, L, u.tau, u.omega, X, X0, factor / sys, R_, mass_weight);
+    }
+    formed_ = true;
+    block_.gather(R_, B_);
+    if(!unknown_scale.empty())
+      for(Eigen::Index i = 0; i < B_.rows(); ++i) B_.row(i) /= std::pow(unknown_scale[std::size_t(block_.free[std::size_t(i)])], 3);
+    CGAL::Real_timer clock;
+    clock.start();
+    const Solve_statistics sol = choice_.solve(fourth_order_ ? A4_ : A_, B_, dX_, cg_, direct);   // CG warm-started from the last dX
+    solve_seconds_ = clock.time();
+    choice_.record(direct, sol, solve_seconds_);
+    scaled_ = !unknown_scale.empty();
+    if(scaled_)
+    {
+      model_dX_ = dX_;
+      for(Eigen::Index i = 0; i < dX_.rows(); ++i) model_dX_.row(i) *= unknown_scale[std::size_t(block_.free[std::size_t(i)])];
+    }
+    return sol;
+  }
+
+  /// The free rows' displacement of the last solve, in model units
+  const Control_matrix& displacement() const { return scaled_ ? model_dX_ : dX_; }
+  /// of the last solve alone (without forming the system)
+  double solve_seconds() const { return solve_seconds_; }
+
+private:
+  const Eigen::SparseMatrix<double>& pattern_;
+  const Free_block& block_;
+  Eigen::SparseMatrix<double> A_, A4_;   // the system of a second-, a fourth-order step
+  std::unique_ptr<Fourth_order_system> fourth_order_;
+  Block_conjugate_gradient cg_;
+  Solver_choice choice_;
+  bool constant_, formed_ = false, scaled_ = false;
+  double solve_seconds_ = 0;
+  Control_matrix R_, B_, dX_, model_dX_;
+};
+
+} // namespace internal
+} // namespace Anisotropic_fairing
+} // namespace CGAL
+
+#endif // CGAL_ANISOTROPIC_FAIRING_INTERNAL_FLOW_STEP_SOLVER_H
