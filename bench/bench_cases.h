@@ -1,4 +1,5 @@
-// The noisy cases and the measures shared by the denoising benchmarks (bench_defaults, bench_peers).
+// The noisy cases, the measures and the arguments shared by the denoising benchmarks (bench_denoising uses
+// the measures and the pair reading; bench_defaults and bench_peers all of it).
 //
 // Cases (noisy mesh + noise-free original of identical connectivity):
 //   - every <DATA_DIR>/denoising/<Name>/{Noisy,Original}.obj (the scans have borders);
@@ -89,22 +90,29 @@ std::vector<Vector> area_weighted_normals(const Mesh& m)
   return n;
 }
 
-// Mean angle (degrees) between corresponding face normals; NaN if a position is not finite.
-double normal_error(const Mesh& m, const std::vector<Vector>& reference)
+// The angle (radians) between two vectors of any length.
+double normal_angle(const Vector& n, const Vector& r)
+{
+  return std::atan2(std::sqrt(CGAL::cross_product(n, r).squared_length()), n * r);
+}
+
+bool finite_points(const Mesh& m)
 {
   for(Mesh::Vertex_index v : m.vertices())
   {
     const Point& p = m.point(v);
-    if(!std::isfinite(p.x()) || !std::isfinite(p.y()) || !std::isfinite(p.z())) return nan_value;
+    if(!std::isfinite(p.x()) || !std::isfinite(p.y()) || !std::isfinite(p.z())) return false;
   }
+  return true;
+}
+
+// Mean angle (degrees) between corresponding face normals; NaN if a position is not finite.
+double normal_error(const Mesh& m, const std::vector<Vector>& reference)
+{
+  if(!finite_points(m)) return nan_value;
   double sum = 0;
   std::size_t i = 0;
-  for(Mesh::Face_index f : m.faces())
-  {
-    const Vector n = face_normal(m, f);
-    const Vector& r = reference[i++];
-    sum += std::atan2(std::sqrt(CGAL::cross_product(n, r).squared_length()), n * r);
-  }
+  for(Mesh::Face_index f : m.faces()) sum += normal_angle(face_normal(m, f), reference[i++]);
   return sum / double(num_faces(m)) * 180.0 / pi;
 }
 
@@ -215,26 +223,62 @@ public:
   }
 };
 
+#ifndef AF_SOURCE_DIR   // set by CMake: the source directory the project was configured with
+#define AF_SOURCE_DIR "."
+#endif
+
+// The arguments of the programs on these cases (bench_defaults, bench_peers):
+// [DATA_DIR=<repo>/../shared/data] [CASE_SUBSTRING] [PARTS], PARTS a string of part letters.
+struct Case_arguments
+{
+  std::string dir, only, parts;
+  bool part(char p) const { return parts.find(p) != std::string::npos; }
+};
+
+// False (and a message on stderr) if PARTS has a letter not in `letters`.
+bool read_case_arguments(int argc, char** argv, const std::string& default_parts, const std::string& letters, Case_arguments& a)
+{
+  a.dir = argc > 1 && argv[1][0] ? argv[1] : std::string(AF_SOURCE_DIR) + "/../shared/data";
+  a.only = argc > 2 ? argv[2] : "";
+  a.parts = argc > 3 && argv[3][0] ? argv[3] : default_parts;
+  if(a.parts.find_first_not_of(letters) == std::string::npos) return true;
+  std::string list;
+  for(char c : letters) list += (list.empty() ? "" : ", ") + std::string(1, c);
+  std::fprintf(stderr, "PARTS: letters of %s\n", list.c_str());
+  return false;
+}
+
+// The names of the denoising pairs <pairs_dir>/<Name>/{Noisy,Original}.obj, sorted; none if the directory is missing.
+std::vector<std::string> denoising_pairs(const std::string& pairs_dir)
+{
+  std::vector<std::string> pairs;
+  if(std::filesystem::is_directory(pairs_dir))
+    for(const auto& entry : std::filesystem::directory_iterator(pairs_dir))
+      if(std::filesystem::exists(entry.path() / "Noisy.obj") && std::filesystem::exists(entry.path() / "Original.obj"))
+        pairs.push_back(entry.path().filename().string());
+  std::sort(pairs.begin(), pairs.end());
+  return pairs;
+}
+
+// Reads <base>/Noisy.obj and <base>/Original.obj in file order; false (and why in `note`) if they cannot be
+// read or differ in size.
+bool read_denoising_pair(const std::string& base, Mesh& noisy, Mesh& original, std::string& note)
+{
+  if(!read_obj_in_order(base + "/Noisy.obj", noisy) || !read_obj_in_order(base + "/Original.obj", original))
+  { note = "cannot read " + base; return false; }
+  if(num_vertices(noisy) != num_vertices(original) || num_faces(noisy) != num_faces(original))
+  { note = "Noisy and Original differ in size"; return false; }
+  return true;
+}
+
 // The denoising pairs of <dir>/denoising, then, per model of <dir>, Gaussian noise of 0.2 h and 0.5 h
 // (the seed depends on the model's place and sigma only) and quantisation to each of `bits`.
 std::vector<Case> noisy_cases(const std::string& dir, const std::vector<int>& bits)
 {
   std::vector<Case> cases;
-  std::vector<std::string> pairs;
-  if(std::filesystem::is_directory(dir + "/denoising"))
-    for(const auto& entry : std::filesystem::directory_iterator(dir + "/denoising"))
-      if(std::filesystem::exists(entry.path() / "Noisy.obj") && std::filesystem::exists(entry.path() / "Original.obj"))
-        pairs.push_back(entry.path().filename().string());
-  std::sort(pairs.begin(), pairs.end());
+  const std::vector<std::string> pairs = denoising_pairs(dir + "/denoising");
   for(const std::string& p : pairs)
-    cases.push_back({p, [dir, p](Case& c) {
-                       const std::string base = dir + "/denoising/" + p;
-                       if(!read_obj_in_order(base + "/Noisy.obj", c.noisy) || !read_obj_in_order(base + "/Original.obj", c.original))
-                       { c.note = "cannot read " + base; return false; }
-                       if(num_vertices(c.noisy) != num_vertices(c.original) || num_faces(c.noisy) != num_faces(c.original))
-                       { c.note = "Noisy and Original differ in size"; return false; }
-                       return true;
-                     }});
+    cases.push_back({p, [dir, p](Case& c) { return read_denoising_pair(dir + "/denoising/" + p, c.noisy, c.original, c.note); }});
   const unsigned seed_base = 20261121u;
   const std::vector<std::string> models = {"bunny-closed.off", "camelhead.off", "face.obj", "rocker-arm.obj", "fandisk.off"};
   for(std::size_t i = 0; i < models.size(); ++i)

@@ -16,10 +16,6 @@
 
 #include "our_sweeps.h"
 
-#ifndef AF_SOURCE_DIR
-#define AF_SOURCE_DIR "."
-#endif
-
 std::string folded_str(std::size_t before, std::size_t after)
 {
   return std::to_string(before) + " / " + std::to_string(after) + (after > before ? " FOLDED" : "");
@@ -27,12 +23,10 @@ std::string folded_str(std::size_t before, std::size_t after)
 
 int main(int argc, char** argv)
 {
-  const std::string dir = argc > 1 && argv[1][0] ? argv[1] : std::string(AF_SOURCE_DIR) + "/../shared/data";
-  const std::string only = argc > 2 ? argv[2] : "";
-  const std::string parts = argc > 3 && argv[3][0] ? argv[3] : "dsn";
-  if(parts.find_first_not_of("dsnu") != std::string::npos) { std::fprintf(stderr, "PARTS: letters of d, s, n, u\n"); return 1; }
-  const bool part_d = parts.find('d') != std::string::npos, part_s = parts.find('s') != std::string::npos,
-             part_n = parts.find('n') != std::string::npos, part_u = parts.find('u') != std::string::npos;
+  Case_arguments args;
+  if(!read_case_arguments(argc, argv, "dsn", "dsnu", args)) return 1;
+  const std::string &dir = args.dir, &only = args.only, &parts = args.parts;
+  const bool part_d = args.part('d'), part_s = args.part('s'), part_n = args.part('n'), part_u = args.part('u');
   CGAL::Real_timer wall;
   wall.start();
 

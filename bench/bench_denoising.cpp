@@ -44,407 +44,26 @@
 //             default 0: on the current surface), swept as an outer loop around LAMBDAS
 //   TAUS: the tau_rel values of our sweeps (Loop, P1, anisotropic)
 
-#include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/Real_timer.h>
-#include <CGAL/Surface_mesh.h>
-#include <CGAL/AABB_face_graph_triangle_primitive.h>
-#include <CGAL/AABB_traits.h>
-#include <CGAL/AABB_tree.h>
-#include <CGAL/IO/OBJ.h>
-#include <CGAL/Polygon_mesh_processing/bbox.h>
 #include <CGAL/Polygon_mesh_processing/measure.h>
-#include <CGAL/Polygon_mesh_processing/polygon_soup_to_polygon_mesh.h>
-#include <CGAL/Polygon_mesh_processing/smooth_shape.h>
-#include <CGAL/boost/graph/helpers.h>
 
 #include <CGAL/Anisotropic_fairing/Loop_limit_surface.h>
 #include <CGAL/Anisotropic_fairing/anisotropic_fairing.h>
 
-#include "bench_cases.h"   // the mesh types, reading in order, face normals, fmt
+#include "bench_cases.h"           // the mesh types, reading in order, face normals, fmt
+#include "crease_diagnostics.h"    // aniso_diagnostics
+#include "denoising_checks.h"      // equivalence, equivalence_aniso
+#include "denoising_quality.h"     // Quality, Reference, evaluate
+#include "denoising_sweeps.h"      // Best, the grids, sweep_ours, sweep_smooth_shape, print_sweep
 
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
-#include <ctime>
-#include <filesystem>
-#include <limits>
-#include <map>
-#include <memory>
 #include <string>
-#include <type_traits>
 #include <vector>
 
-#ifndef AF_SOURCE_DIR
-#define AF_SOURCE_DIR "."
-#endif
-
-typedef CGAL::AABB_face_graph_triangle_primitive<Mesh> Primitive;
-typedef CGAL::AABB_tree<CGAL::AABB_traits<K, Primitive> > Tree;
-namespace AF = CGAL::Anisotropic_fairing;
-
-
-struct Quality
-{
-  double angle = std::numeric_limits<double>::quiet_NaN();
-  double dist = std::numeric_limits<double>::quiet_NaN();
-  bool ok() const { return std::isfinite(angle) && std::isfinite(dist); }
-};
-
-struct Reference
-{
-  explicit Reference(const Mesh& m) : mesh(m), tree(faces(m).first, faces(m).second, m)
-  {
-    tree.accelerate_distance_queries();
-    const CGAL::Bbox_3 b = PMP::bbox(m);
-    diagonal = std::sqrt(CGAL::square(b.xmax() - b.xmin()) + CGAL::square(b.ymax() - b.ymin()) +
-                         CGAL::square(b.zmax() - b.zmin()));
-    for(Mesh::Face_index f : m.faces()) normals.push_back(face_normal(m, f));
-  }
-  const Mesh& mesh;
-  Tree tree;
-  double diagonal = 0;
-  std::vector<Vector> normals;
-};
-
-// Faces correspond by index (the result is a copy of Noisy, read in file order like Original).
-Quality evaluate(const Mesh& m, const Reference& ref)
-{
-  Quality q;
-  double angle = 0, dist = 0;
-  std::size_t i = 0;
-  for(Mesh::Face_index f : m.faces())
-  {
-    const Vector n = face_normal(m, f);
-    const Vector& r = ref.normals[i++];
-    angle += std::atan2(std::sqrt(CGAL::cross_product(n, r).squared_length()), n * r);
-  }
-  for(Mesh::Vertex_index v : m.vertices())
-  {
-    const Point& p = m.point(v);
-    if(!std::isfinite(p.x()) || !std::isfinite(p.y()) || !std::isfinite(p.z())) return q;
-    dist += std::sqrt(ref.tree.squared_distance(p));
-  }
-  q.angle = angle / double(num_faces(m)) * 180.0 / pi;
-  q.dist = dist / double(num_vertices(m)) / ref.diagonal;
-  return q;
-}
-
-struct Best
-{
-  Quality q;
-  std::string setting;
-  std::string notes;   // failures, refusals
-  bool refused = false;
-  bool run = false;    // false: method not selected
-  double tau_rel = 0, lambda_rel = 0, epsilon_rel = 0;   // of the best cell (ours)
-  int steps = 0;
-  void consider(const Quality& c, const std::string& s, double tr = 0, int k = 0, double lr = 0, double er = 0)
-  {
-    if(c.ok() && (!q.ok() || c.angle < q.angle)) { q = c; setting = s; tau_rel = tr; steps = k; lambda_rel = lr; epsilon_rel = er; }
-  }
-  void note(const std::string& s) { notes += (notes.empty() ? "" : "; ") + s; }
-};
-
-std::vector<double> our_taus = {1e-4, 3e-4, 1e-3, 3e-3};   // TAUS argument overrides
-const std::vector<int> step_counts = {1, 2, 3, 5, 10};
-const std::vector<double> smooth_taus = {1e-5, 1e-4, 3e-4, 1e-3, 3e-3, 1e-2};
-const std::vector<double> smooth_literal_times = {1e-5, 1e-4, 1e-3, 1e-2};
-std::vector<double> aniso_lambdas = {1, 2, 5, 10, 20, 50, 100};   // LAMBDAS argument overrides
-std::vector<double> aniso_epsilons = {0};                          // EPSILONS argument overrides
-
-// The anisotropic tensor with an absolute threshold and prefilter time (model units); the prefilter
-// needs a library whose tensor takes (lambda, relative, epsilon).
-constexpr bool has_prefilter = std::is_constructible<AF::Anisotropic_diffusion_tensor, double, bool, double>::value;
-template <typename T = AF::Anisotropic_diffusion_tensor>
-T aniso_tensor(double threshold, double epsilon, bool relative = false)
-{
-  if constexpr(std::is_constructible<T, double, bool, double>::value) return T(threshold, relative, epsilon);
-  else return T(threshold, relative);
-}
-std::string aniso_prefix(double lambda_rel, double epsilon_rel)
-{
-  return (aniso_epsilons.size() > 1 || epsilon_rel > 0 ? "eps_rel " + fmt("%g", epsilon_rel) + ", " : "") +
-         "lambda_rel " + fmt("%g", lambda_rel) + ", ";
-}
-// anisotropic Loop: the steps beyond 10 are taken only while the angle still falls (from 5 to 10, 10 to 20)
-const std::vector<int> aniso_step_counts = {1, 2, 3, 5, 10, 20, 40};
-
-// One line of the sweep detail: quality after each step count.
-struct Sweep_row
-{
-  std::string label;
-  std::vector<std::string> cells;
-};
-
-void print_sweep(const std::string& title, const std::vector<Sweep_row>& rows, const std::vector<int>& step_counts = ::step_counts)
-{
-  std::printf("\n%s\n\n| setting |", title.c_str());
-  for(int k : step_counts) std::printf(" %d |", k);
-  std::printf("\n|---|");
-  for(std::size_t i = 0; i < step_counts.size(); ++i) std::printf("---|");
-  std::printf("\n");
-  for(const Sweep_row& r : rows)
-  {
-    std::printf("| %s |", r.label.c_str());
-    for(const std::string& c : r.cells) std::printf(" %s |", c.c_str());
-    std::printf("\n");
-  }
-}
-
-std::string cell(const Quality& q) { return q.ok() ? fmt("%.2f", q.angle) + " / " + fmt("%.2e", q.dist) : "non-finite"; }
-
-Quality limit_quality(const Mesh& m, const Reference& ref)
-{
-  Mesh e = m;
-  AF::Loop_limit_surface<Mesh>(m).limit_positions(e.points());
-  return evaluate(e, ref);
-}
-
-// Our method, incrementally: one step per call, control points kept, limit evaluated for LOOP.
-// `lambda_rel` > 0 only labels the cells of the anisotropic sweep (the tensor carries the threshold and prefilter).
-template <typename Tensor>
-void sweep_ours(const Mesh& noisy, const Reference& ref, AF::Finite_element element, double l2, double h,
-                Best& best, std::vector<Sweep_row>& rows, double& seconds, const Tensor& tensor, double lambda_rel = 0,
-                const std::vector<int>& step_counts = ::step_counts, Best* best10 = nullptr, double epsilon_rel = 0)
-{
-  CGAL::Real_timer timer;
-  timer.start();
-  const bool loop = element == AF::Finite_element::LOOP;
-  const std::string prefix = lambda_rel > 0 ? aniso_prefix(lambda_rel, epsilon_rel) : "";
-  for(double tr : our_taus)
-  {
-    const double tau = tr * l2;
-    Sweep_row row;
-    row.label = prefix + "tau_rel " + fmt("%g", tr) + " (tau/h^2 " + fmt("%.2f", tau / (h * h)) + ")";
-    Mesh m = noisy;
-    int done = 0;
-    std::string failure;
-    double previous = std::numeric_limits<double>::infinity(), last = std::numeric_limits<double>::infinity();
-    for(int k : step_counts)
-    {
-      if(k > 10 && failure.empty() && !(last < previous)) { row.cells.push_back("skipped"); continue; }
-      while(failure.empty() && done < k)
-      {
-        AF::Fairing_report r = AF::anisotropic_fairing(m, AF::parameters::time_step(tau)
-                                                           .number_of_iterations(1)
-                                                           .stopping_criteria(AF::Stopping_criteria::none())
-                                                           .finite_element(element)
-                                                           .diffusion_tensor(tensor)
-                                                           .output_positions(AF::Output_positions::CONTROL_POINTS));
-        if(!r.succeeded()) failure = std::string(AF::to_string(r.status)) + " at step " + std::to_string(done + 1);
-        else ++done;
-      }
-      if(!failure.empty()) { row.cells.push_back("failed"); continue; }
-      const Quality q = loop ? limit_quality(m, ref) : evaluate(m, ref);
-      row.cells.push_back(cell(q));
-      previous = last;
-      last = q.ok() ? q.angle : std::numeric_limits<double>::infinity();
-      best.consider(q, prefix + "tau_rel " + fmt("%g", tr) + " x " + std::to_string(k), tr, k, lambda_rel, epsilon_rel);
-      if(best10 && k <= 10)
-        best10->consider(q, prefix + "tau_rel " + fmt("%g", tr) + " x " + std::to_string(k), tr, k, lambda_rel, epsilon_rel);
-    }
-    if(!failure.empty()) best.note(prefix + "tau_rel " + fmt("%g", tr) + ": " + failure);
-    rows.push_back(row);
-  }
-  seconds = timer.time();
-}
-
-void sweep_smooth_shape(const Mesh& noisy, const Reference& ref, const std::vector<double>& times, double scale,
-                        Best& best, std::vector<Sweep_row>& rows, double& seconds, bool relative)
-{
-  CGAL::Real_timer timer;
-  timer.start();
-  for(double t : times)
-  {
-    Sweep_row row;
-    const double time = t * scale;
-    row.label = relative ? "tau_rel " + fmt("%g", t) + " (time " + fmt("%.3g", time) + ")" : "time " + fmt("%g", t);
-    for(int k : step_counts)
-    {
-      Mesh m = noisy;
-      PMP::smooth_shape(m, time, CGAL::parameters::number_of_iterations(k));
-      const Quality q = evaluate(m, ref);
-      row.cells.push_back(cell(q));
-      if(!q.ok()) best.note((relative ? "tau_rel " : "time ") + fmt("%g", t) + " x " + std::to_string(k) + ": non-finite");
-      best.consider(q, (relative ? "tau_rel " : "time ") + fmt("%g", t) + " x " + std::to_string(k));
-    }
-    rows.push_back(row);
-  }
-  seconds = timer.time();
-}
-
-// Incremental (1 step per call, CONTROL_POINTS, limit evaluated here) vs one call with k steps and
-// LIMIT_SURFACE output: the largest vertex difference over the bbox diagonal.
-double equivalence(const Mesh& noisy, double tau, int k, AF::Linear_solver solver, double diagonal, bool* factorised = nullptr)
-{
-  Mesh direct = noisy;
-  const AF::Fairing_report r = AF::anisotropic_fairing(direct, AF::parameters::time_step(tau).number_of_iterations(k)
-                                      .stopping_criteria(AF::Stopping_criteria::none())
-                                      .linear_solver(solver)
-                                      .output_positions(AF::Output_positions::LIMIT_SURFACE));
-  if(factorised) *factorised = r.used_cholesky;
-  Mesh m = noisy;
-  for(int i = 0; i < k; ++i)
-    AF::anisotropic_fairing(m, AF::parameters::time_step(tau).number_of_iterations(1)
-                                   .stopping_criteria(AF::Stopping_criteria::none())
-                                   .linear_solver(solver)
-                                   .output_positions(AF::Output_positions::CONTROL_POINTS));
-  Mesh e = m;
-  AF::Loop_limit_surface<Mesh>(m).limit_positions(e.points());
-  double d = 0;
-  for(Mesh::Vertex_index v : e.vertices()) d = std::max(d, std::sqrt(CGAL::squared_distance(e.point(v), direct.point(v))));
-  return d / diagonal;
-}
-
-// k incremental one-step calls (CONTROL_POINTS) of Loop with `tensor`; returns the control points.
-template <typename Tensor>
-Mesh run_incremental(const Mesh& noisy, double tau, int k, const Tensor& tensor)
-{
-  Mesh m = noisy;
-  for(int i = 0; i < k; ++i)
-    AF::anisotropic_fairing(m, AF::parameters::time_step(tau).number_of_iterations(1)
-                                   .stopping_criteria(AF::Stopping_criteria::none())
-                                   .diffusion_tensor(tensor)
-                                   .output_positions(AF::Output_positions::CONTROL_POINTS));
-  return m;
-}
-
-// The anisotropic sweep's incremental form (absolute threshold lambda_rel / l0) vs one k-step
-// LIMIT_SURFACE call with the relative tensor: the largest vertex difference over the bbox diagonal.
-double equivalence_aniso(const Mesh& noisy, double tau, int k, double lambda_rel, double epsilon_rel, double l0, double diagonal)
-{
-  Mesh direct = noisy;
-  AF::anisotropic_fairing(direct, AF::parameters::time_step(tau).number_of_iterations(k)
-                                      .stopping_criteria(AF::Stopping_criteria::none())
-                                      .diffusion_tensor(aniso_tensor(lambda_rel, epsilon_rel, true))
-                                      .output_positions(AF::Output_positions::LIMIT_SURFACE));
-  const Mesh m = run_incremental(noisy, tau, k, aniso_tensor(lambda_rel / l0, epsilon_rel * l0 * l0));
-  Mesh e = m;
-  AF::Loop_limit_surface<Mesh>(m).limit_positions(e.points());
-  double d = 0;
-  for(Mesh::Vertex_index v : e.vertices()) d = std::max(d, std::sqrt(CGAL::squared_distance(e.point(v), direct.point(v))));
-  return d / diagonal;
-}
-
-// Per face of `m` (control mesh), max and min of |k1|, |k2| of its Loop limit surface at the face centre, times l0.
-void face_curvatures(const Mesh& m, double l0, std::vector<double>& kmax, std::vector<double>& kmin)
-{
-  const AF::Loop_limit_surface<Mesh> s(m);
-  kmax.clear();
-  kmin.clear();
-  for(Mesh::Face_index f : m.faces())
-  {
-    const auto c = s.curvature(f, { { 1.0 / 3, 1.0 / 3, 1.0 / 3 } });
-    kmax.push_back(std::max(std::abs(c.k1), std::abs(c.k2)) * l0);
-    kmin.push_back(std::min(std::abs(c.k1), std::abs(c.k2)) * l0);
-  }
-}
-
-std::vector<double> face_angles(const Mesh& m, const Reference& ref)
-{
-  std::vector<double> a;
-  std::size_t i = 0;
-  for(Mesh::Face_index f : m.faces())
-  {
-    const Vector n = face_normal(m, f);
-    const Vector& r = ref.normals[i++];
-    a.push_back(std::atan2(std::sqrt(CGAL::cross_product(n, r).squared_length()), n * r) * 180.0 / pi);
-  }
-  return a;
-}
-
-double quantile(std::vector<double> v, double q)
-{
-  if(v.empty()) return std::numeric_limits<double>::quiet_NaN();
-  std::sort(v.begin(), v.end());
-  return v[std::min(v.size() - 1, std::size_t(q * double(v.size())))];
-}
-
-// Where the anisotropic tensor can and cannot tell creases from noise (see the header).
-void aniso_diagnostics(const Mesh& noisy, const Mesh& original, const Reference& ref, double l0, double l2,
-                       const Best& aniso, const Best& loop)
-{
-  // faces of Original: 0 = on a crease (an edge with dihedral angle > 30 deg), 1 = sharing a vertex with one, 2 = other
-  std::vector<int> cls(num_faces(original), 2);
-  const double cos30 = std::cos(30.0 * pi / 180.0);
-  for(Mesh::Face_index f : original.faces())
-    for(Mesh::Halfedge_index hh : CGAL::halfedges_around_face(original.halfedge(f), original))
-    {
-      const Mesh::Face_index g = original.face(original.opposite(hh));
-      if(g == Mesh::null_face()) continue;
-      const Vector a = face_normal(original, f), b = face_normal(original, g);
-      if(a * b < cos30 * std::sqrt(a.squared_length() * b.squared_length())) cls[std::size_t(f)] = 0;
-    }
-  for(Mesh::Face_index f : original.faces())
-    if(cls[std::size_t(f)] == 0)
-      for(Mesh::Vertex_index v : CGAL::vertices_around_face(original.halfedge(f), original))
-        for(Mesh::Face_index g : CGAL::faces_around_target(original.halfedge(v), original))
-          if(g != Mesh::null_face() && cls[std::size_t(g)] == 2) cls[std::size_t(g)] = 1;
-  const char* names[3] = { "crease", "next to crease", "other" };
-  std::size_t count[3] = { 0, 0, 0 };
-  for(int c : cls) ++count[c];
-
-  const double tau = aniso.tau_rel * l2;
-  const Mesh result = run_incremental(noisy, tau, aniso.steps, aniso_tensor(aniso.lambda_rel / l0, aniso.epsilon_rel * l0 * l0));
-  // M_eps of Noisy: one isotropic implicit step of eps (what the prefilter computes at the first step)
-  const Mesh noisy_eps = aniso.epsilon_rel > 0 ? run_incremental(noisy, aniso.epsilon_rel * l0 * l0, 1, AF::Isotropic_diffusion_tensor()) : noisy;
-  const Mesh iso_same = run_incremental(noisy, tau, aniso.steps, AF::Isotropic_diffusion_tensor());
-  std::printf("\ncurvature diagnostics (best anisotropic cell %s; l0 = %.4g): faces of Original: %zu crease, %zu next to crease, %zu other\n",
-              aniso.setting.c_str(), l0, count[0], count[1], count[2]);
-  std::printf("k = max(|k1|,|k2|) l0, kmin = min(|k1|,|k2|) l0 of the Loop limit surface at face centres; "
-              "'g<0.5 @L' = fraction of faces with g(k) < 0.5 (k > 2L) for lambda_rel L\n\n| surface | faces | k p10 | k p50 | k p90 | kmin p50 |");
-  for(double L : aniso_lambdas) std::printf(" g<0.5 @%g |", L);
-  std::printf("\n|---|---|---|---|---|---|");
-  for(std::size_t i = 0; i < aniso_lambdas.size(); ++i) std::printf("---|");
-  std::printf("\n");
-  struct Named { const char* name; const Mesh* m; };
-  std::vector<Named> surfaces = { { "Noisy", &noisy } };
-  const std::string eps_name = "M_eps of Noisy (eps_rel " + fmt("%g", aniso.epsilon_rel) + ")";
-  if(aniso.epsilon_rel > 0) surfaces.push_back({ eps_name.c_str(), &noisy_eps });
-  surfaces.push_back({ "Original", &original });
-  surfaces.push_back({ "aniso result", &result });
-  for(const Named& sf : surfaces)
-  {
-    std::vector<double> kmax, kmin;
-    face_curvatures(*sf.m, l0, kmax, kmin);
-    for(int c = 0; c < 3; ++c)
-    {
-      std::vector<double> a, b;
-      for(std::size_t i = 0; i < cls.size(); ++i)
-        if(cls[i] == c) { a.push_back(kmax[i]); b.push_back(kmin[i]); }
-      std::printf("| %s, %s | %zu | %.1f | %.1f | %.1f | %.1f |", sf.name, names[c], a.size(), quantile(a, 0.1),
-                  quantile(a, 0.5), quantile(a, 0.9), quantile(b, 0.5));
-      for(double L : aniso_lambdas)
-      {
-        std::size_t damped = 0;
-        for(double k : a) damped += k > 2 * L ? 1 : 0;
-        std::printf(" %.2f |", a.empty() ? 0.0 : double(damped) / double(a.size()));
-      }
-      std::printf("\n");
-    }
-  }
-  // mean normal angle error per face class
-  auto limit = [](const Mesh& m) { Mesh e = m; AF::Loop_limit_surface<Mesh>(m).limit_positions(e.points()); return e; };
-  std::vector<std::pair<std::string, Mesh> > results;
-  results.emplace_back("Loop limit of Noisy", limit(noisy));
-  results.emplace_back("isotropic Loop, same tau x steps (" + fmt("%g", aniso.tau_rel) + " x " + std::to_string(aniso.steps) + ")", limit(iso_same));
-  if(loop.run && loop.q.ok())
-    results.emplace_back("isotropic Loop best (" + loop.setting + ")", limit(run_incremental(noisy, loop.tau_rel * l2, loop.steps, AF::Isotropic_diffusion_tensor())));
-  results.emplace_back("anisotropic Loop best (" + aniso.setting + ")", limit(result));
-  results.emplace_back("the same, control points (no limit projection)", result);
-  results.emplace_back("Loop limit of Original (what a limit-surface output loses at creases)", limit(original));
-  std::printf("\nmean normal angle error (deg) per face class of Original\n\n| result | crease | next to crease | other | all |\n|---|---|---|---|---|\n");
-  for(const auto& r : results)
-  {
-    const std::vector<double> a = face_angles(r.second, ref);
-    double sum[3] = { 0, 0, 0 }, all = 0;
-    for(std::size_t i = 0; i < a.size(); ++i) { sum[cls[i]] += a[i]; all += a[i]; }
-    std::printf("| %s | %.2f | %.2f | %.2f | %.2f |\n", r.first.c_str(), sum[0] / double(std::max<std::size_t>(count[0], 1)),
-                sum[1] / double(std::max<std::size_t>(count[1], 1)), sum[2] / double(std::max<std::size_t>(count[2], 1)), all / double(a.size()));
-  }
-}
-
+// One model's line of the summary.
 struct Row
 {
   std::string model, size;
@@ -478,6 +97,14 @@ bool parse_list(const char* text, const char* name, bool zero_allowed, std::vect
     c = *end == ',' ? end + 1 : end;
   }
   return true;
+}
+
+// {1e-4, 3e-4} -> "0.0001,0.0003"
+std::string join(const std::vector<double>& values)
+{
+  std::string l;
+  for(double x : values) l += (l.empty() ? "" : ",") + fmt("%g", x);
+  return l;
 }
 
 int main(int argc, char** argv)
@@ -518,12 +145,8 @@ int main(int argc, char** argv)
   wall.start();
 
   std::vector<std::string> models;
-  for(const auto& entry : std::filesystem::directory_iterator(dir))
-    if(entry.is_directory() && std::filesystem::exists(entry.path() / "Noisy.obj") &&
-       std::filesystem::exists(entry.path() / "Original.obj"))
-      if(only.empty() || entry.path().filename().string().find(only) != std::string::npos)
-        models.push_back(entry.path().filename().string());
-  std::sort(models.begin(), models.end());
+  for(const std::string& name : denoising_pairs(dir))
+    if(only.empty() || name.find(only) != std::string::npos) models.push_back(name);
   if(models.empty()) { std::fprintf(stderr, "no <Model>/{Noisy,Original}.obj pairs in %s\n", dir.c_str()); return 1; }
 
   std::printf("# bench_denoising: %s (%zu pairs), methods:%s%s%s%s\n", dir.c_str(), models.size(), run_loop ? " loop" : "",
@@ -531,19 +154,8 @@ int main(int argc, char** argv)
   std::printf("sweep: ours tau_rel {%s} x steps {1,2,3,5,10}; smooth_shape tau_rel {1e-5,1e-4,3e-4,1e-3,3e-3,1e-2}"
               " x iterations {1,2,3,5,10} (time = tau_rel*l^2/4), and its literal times {1e-5,1e-4,1e-3,1e-2};"
               " anisotropic Loop: eps_rel {%s} x lambda_rel {%s} x ours, with steps 20 and 40 while the angle still falls;"
-              " l^2 = Area(Noisy)/(4 pi); cells: angle(deg) / dist(/bbox diag)\n", [] {
-                std::string l;
-                for(double T : our_taus) l += (l.empty() ? "" : ",") + fmt("%g", T);
-                return l;
-              }().c_str(), [] {
-                std::string l;
-                for(double E : aniso_epsilons) l += (l.empty() ? "" : ",") + fmt("%g", E);
-                return l;
-              }().c_str(), [] {
-                std::string l;
-                for(double L : aniso_lambdas) l += (l.empty() ? "" : ",") + fmt("%g", L);
-                return l;
-              }().c_str());
+              " l^2 = Area(Noisy)/(4 pi); cells: angle(deg) / dist(/bbox diag)\n",
+              join(our_taus).c_str(), join(aniso_epsilons).c_str(), join(aniso_lambdas).c_str());
 
   std::vector<Row> table;
   bool checked_cholesky = false;
@@ -551,10 +163,8 @@ int main(int argc, char** argv)
   {
     const std::string base = dir + "/" + name;
     Mesh noisy, original;
-    if(!read_obj_in_order(base + "/Noisy.obj", noisy) || !read_obj_in_order(base + "/Original.obj", original))
-    { std::fprintf(stderr, "cannot read %s\n", base.c_str()); return 1; }
-    if(num_vertices(noisy) != num_vertices(original) || num_faces(noisy) != num_faces(original))
-    { std::fprintf(stderr, "%s: Noisy and Original differ in size\n", name.c_str()); return 1; }
+    std::string why;
+    if(!read_denoising_pair(base, noisy, original, why)) { std::fprintf(stderr, "%s: %s\n", name.c_str(), why.c_str()); return 1; }
     CGAL::Real_timer model_timer;
     model_timer.start();
     const Reference ref(original);

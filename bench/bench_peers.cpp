@@ -1,6 +1,6 @@
 // Denoising quality against widely used smoothers: the library's default run and the best of our sweeps
 // (our_sweeps.h) next to the best of OpenMesh's Jacobi Laplace smoother (C0 and C1, uniform and cotangent
-// weights), Taubin's lambda|mu and bilateral normal filtering (peer_smoothers.h), each tuned by a sweep
+// weights), Taubin's lambda|mu (peer_smoothers.h) and bilateral normal filtering (bilateral_normal_filter.h), each tuned by a sweep
 // and evaluated at its best cell, on the cases of bench_cases.h with 8- and 10-bit quantisation.
 // Two errors per result: the mean face-normal angle to the original (degrees), and the mean distance of
 // the vertices to the original surface (units of its mean edge length h: drift and shrinkage).
@@ -10,10 +10,6 @@
 
 #include "our_sweeps.h"
 #include "peer_smoothers.h"
-
-#ifndef AF_SOURCE_DIR
-#define AF_SOURCE_DIR "."
-#endif
 
 struct Peers
 {
@@ -80,7 +76,7 @@ Peers run_peers(const Mesh& noisy, const std::vector<Vector>& reference)
   const Bilateral_normal_filter bilateral(noisy);
   for(double sigma_s : {0.2, 0.35, 0.5, 0.7})
     peer_row(noisy, reference, {1, 2, 3, 5, 8, 12, 20, 30}, false, "bilateral sigma_s " + fmt("%g", sigma_s), p.bilateral,
-             [&](Mesh& m, int, int k) { bilateral.run(m, rings, sigma_s, k); });
+             [&](Mesh& m, int, int k) { bilateral.run(m, rings.border, sigma_s, k); });
   p.seconds = timer.time();
   return p;
 }
@@ -92,12 +88,10 @@ std::string cell(const Best& b, const Distance_to_original& distance)
 
 int main(int argc, char** argv)
 {
-  const std::string dir = argc > 1 && argv[1][0] ? argv[1] : std::string(AF_SOURCE_DIR) + "/../shared/data";
-  const std::string only = argc > 2 ? argv[2] : "";
-  const std::string parts = argc > 3 && argv[3][0] ? argv[3] : "dsp";
-  if(parts.find_first_not_of("dsp") != std::string::npos) { std::fprintf(stderr, "PARTS: letters of d, s, p\n"); return 1; }
-  const bool part_d = parts.find('d') != std::string::npos, part_s = parts.find('s') != std::string::npos,
-             part_p = parts.find('p') != std::string::npos;
+  Case_arguments args;
+  if(!read_case_arguments(argc, argv, "dsp", "dsp", args)) return 1;
+  const std::string &dir = args.dir, &only = args.only, &parts = args.parts;
+  const bool part_d = args.part('d'), part_s = args.part('s'), part_p = args.part('p');
   CGAL::Real_timer wall;
   wall.start();
   std::printf("# bench_peers: %s, cases matching \"%s\", parts %s\n", dir.c_str(), only.c_str(), parts.c_str());

@@ -52,6 +52,7 @@
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
+#include <initializer_list>
 #include <string>
 #include <vector>
 
@@ -102,6 +103,20 @@ bool load(const std::string& dir, const std::string& file, int subdivisions, Nam
   return true;
 }
 
+// A mesh file of DATA_DIR, Loop-subdivided `sub` times.
+struct Input { const char* file; int sub; };
+
+// Loads each input in turn and calls `f` with it; one that cannot be read is reported and skipped.
+template <typename F>
+void for_each_mesh(const std::string& dir, std::initializer_list<Input> inputs, F f)
+{
+  for(const Input& in : inputs)
+  {
+    Named_mesh s;
+    if(load(dir, in.file, in.sub, s)) f(s);
+  }
+}
+
 std::string sizes(const Mesh& m)
 {
   char b[64];
@@ -117,6 +132,15 @@ AF::Fairing_report run(Mesh& m, const NP& np, double& wall)
   AF::Fairing_report r = AF::anisotropic_fairing(m, np);
   wall = t.time();
   return r;
+}
+
+// `steps` steps of relative_time_step(tau_rel) with `solver` and no stopping criterion, on a copy of `input`.
+AF::Fairing_report run_steps(const Mesh& input, double tau_rel, int steps, AF::Linear_solver solver, double& wall)
+{
+  Mesh m = input;
+  return run(m, AF::parameters::relative_time_step(tau_rel).number_of_iterations(steps)
+                  .stopping_criteria(AF::Stopping_criteria::none())
+                  .linear_solver(solver), wall);
 }
 
 const char* element_name(AF::Finite_element e) { return e == AF::Finite_element::LOOP ? "Loop" : "P1"; }
@@ -185,11 +209,8 @@ void part_step(const std::string& dir, int runs)
               " the stepper's sparsity patterns, the statistics-only assembly at X_1, the limit evaluation and the write-back.\n\n");
   std::printf("| mesh | method | tau/h^2 | CG its | whole call | set-up | assemble | solve | rest |\n"
               "|---|---|---:|---:|---:|---:|---:|---:|---:|\n");
-  struct Input { const char* file; int sub; };
-  for(const Input& in : {Input{"fertility.off", 2}, Input{"bunny-closed.off", 1}})
+  for_each_mesh(dir, {{"fertility.off", 2}, {"bunny-closed.off", 1}}, [&](const Named_mesh& s)
   {
-    Named_mesh s;
-    if(!load(dir, in.file, in.sub, s)) continue;
     const double h = mean_edge_length(s.mesh);
     const std::string label = s.name + " (" + sizes(s.mesh) + ")";
     double tau = 0;
@@ -238,7 +259,7 @@ void part_step(const std::string& dir, int runs)
     std::printf("| %s | CHOLESKY | | | not run (%zu vertices; above ~30k the factorisation is too slow) | | | | |\n",
                 label.c_str(), std::size_t(num_vertices(s.mesh)));
     std::fflush(stdout);
-  }
+  });
 }
 
 // ---------------------------------------------------------------------------------------------
@@ -262,11 +283,8 @@ void part_iterations(const std::string& dir)
 {
   std::printf("\n## (b) Conjugate-gradient iterations per step, Loop vs P1: time_step(ratio h^2), 4 steps, stopping none, solver_tolerance(1e-8) (relative residual, as in doc/Anisotropic_fairing/design/loop-fem.md section 9), warm start\n\n");
   std::printf("| mesh | tau/h^2 | tau_rel | CG its Loop | CG its P1 | solve s/step Loop | solve s/step P1 |\n|---|---:|---:|---|---|---:|---:|\n");
-  struct Input { const char* file; int sub; };
-  for(const Input& in : {Input{"bumpy.off", 0}, Input{"bunny.off", 0}, Input{"fertility.off", 2}})
+  for_each_mesh(dir, {{"bumpy.off", 0}, {"bunny.off", 0}, {"fertility.off", 2}}, [&](const Named_mesh& s)
   {
-    Named_mesh s;
-    if(!load(dir, in.file, in.sub, s)) continue;
     const double h = mean_edge_length(s.mesh);
     for(double ratio : {0.1, 1.0, 3.0})
     {
@@ -289,7 +307,7 @@ void part_iterations(const std::string& dir)
         if(!rep[k].succeeded()) std::printf("|  | | | %s: %s | | | |\n", k == 0 ? "Loop" : "P1", rep[k].message.c_str());
       std::fflush(stdout);
     }
-  }
+  });
 }
 
 // ---------------------------------------------------------------------------------------------
@@ -305,13 +323,10 @@ void part_solvers(const std::string& dir, int runs)
               steps, steps, AF::automatic_cholesky_trial_iterations, AF::automatic_cholesky_limit);
   std::printf("| mesh | V | tau_rel | tau/h^2 | CG its/step | CG solve/step | CHOL solve step 1 | CHOL solve later steps | CHOL/CG per step | whole CG | whole CHOL | whole AUTOMATIC (steps) |\n"
               "|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---|\n");
-  struct Input { const char* file; int sub; };
-  for(const Input& in : {Input{"bumpy.off", 0}, Input{"bunny.off", 0}, Input{"fertility.off", 0}, Input{"bumpy.off", 1},
-                         Input{"fandisk.off", 0}, Input{"bunny.off", 1}, Input{"fertility.off", 1}, Input{"bumpy.off", 2},
-                         Input{"bunny-closed.off", 0}})
+  for_each_mesh(dir, {{"bumpy.off", 0}, {"bunny.off", 0}, {"fertility.off", 0}, {"bumpy.off", 1},
+                      {"fandisk.off", 0}, {"bunny.off", 1}, {"fertility.off", 1}, {"bumpy.off", 2},
+                      {"bunny-closed.off", 0}}, [&](const Named_mesh& s)
   {
-    Named_mesh s;
-    if(!load(dir, in.file, in.sub, s)) continue;
     const std::size_t nv = num_vertices(s.mesh);
     const int r_count = nv < 20000 ? runs : 1;
     const double h = mean_edge_length(s.mesh);
@@ -320,11 +335,8 @@ void part_solvers(const std::string& dir, int runs)
     std::string chol_failure;
     for(int r = 0; r < r_count; ++r)
     {
-      Mesh m = s.mesh;
       double wall = 0;
-      const AF::Fairing_report rep = run(m, AF::parameters::relative_time_step(1e-3).number_of_iterations(steps)
-                                                .stopping_criteria(AF::Stopping_criteria::none())
-                                                .linear_solver(AF::Linear_solver::CHOLESKY), wall);
+      const AF::Fairing_report rep = run_steps(s.mesh, 1e-3, steps, AF::Linear_solver::CHOLESKY, wall);
       if(!rep.succeeded()) { chol_failure = rep.message; break; }
       ch1.push_back(rep.steps[0].solve_seconds);
       std::vector<double> later;
@@ -339,11 +351,8 @@ void part_solvers(const std::string& dir, int runs)
       double tau = 0;
       for(int r = 0; r < r_count; ++r)
       {
-        Mesh m = s.mesh;
         double wall = 0;
-        const AF::Fairing_report rep = run(m, AF::parameters::relative_time_step(tr).number_of_iterations(steps)
-                                                  .stopping_criteria(AF::Stopping_criteria::none())
-                                                  .linear_solver(AF::Linear_solver::CONJUGATE_GRADIENT), wall);
+        const AF::Fairing_report rep = run_steps(s.mesh, tr, steps, AF::Linear_solver::CONJUGATE_GRADIENT, wall);
         if(!rep.succeeded()) { failure = rep.message; break; }
         tau = rep.time_step;
         cg.push_back(solve_per_step(rep));
@@ -357,11 +366,8 @@ void part_solvers(const std::string& dir, int runs)
       std::string auto_steps;
       for(int r = 0; r < r_count; ++r)
       {
-        Mesh m = s.mesh;
         double wall = 0;
-        const AF::Fairing_report rep = run(m, AF::parameters::relative_time_step(tr).number_of_iterations(steps)
-                                                  .stopping_criteria(AF::Stopping_criteria::none())
-                                                  .linear_solver(AF::Linear_solver::AUTOMATIC), wall);
+        const AF::Fairing_report rep = run_steps(s.mesh, tr, steps, AF::Linear_solver::AUTOMATIC, wall);
         autow.push_back(wall);
         auto_steps.clear();
         for(const AF::Fairing_step& st : rep.steps) auto_steps += st.direct_solve ? 'D' : 'C';
@@ -381,7 +387,7 @@ void part_solvers(const std::string& dir, int runs)
                     median(its), median(cg), median(chl) / median(cg), median(cgw), auto_cell);
       std::fflush(stdout);
     }
-  }
+  });
 }
 
 // ---------------------------------------------------------------------------------------------
@@ -472,11 +478,8 @@ void part_tensor(const std::string& dir, int runs)
               " solve: per step, mean solve_seconds; CG its: the steps' iterations.\n\n", runs);
   std::printf("| mesh | tensor | whole call | assemble / step | solve / step | CG its | whole / isotropic |\n"
               "|---|---|---:|---:|---:|---|---:|\n");
-  struct Input { const char* file; int sub; };
-  for(const Input& in : { Input{ "denoising/Fandisk0.3/Noisy.obj", 0 }, Input{ "fertility.off", 2 } })
+  for_each_mesh(dir, {{"denoising/Fandisk0.3/Noisy.obj", 0}, {"fertility.off", 2}}, [&](const Named_mesh& s)
   {
-    Named_mesh s;
-    if(!load(dir, in.file, in.sub, s)) continue;
     const std::string label = s.name + " (" + sizes(s.mesh) + ")";
     struct Variant { const char* name; AF::Anisotropic_diffusion_tensor tensor; bool isotropic; };
     const Variant variants[] = { { "isotropic", AF::Anisotropic_diffusion_tensor(), true },
@@ -515,7 +518,7 @@ void part_tensor(const std::string& dir, int runs)
                   median(solve), its.c_str(), median(whole) / isotropic_whole);
       std::fflush(stdout);
     }
-  }
+  });
 }
 
 int main(int argc, char** argv)

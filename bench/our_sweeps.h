@@ -15,17 +15,11 @@
 #include <CGAL/Anisotropic_fairing/anisotropic_fairing.h>
 
 #include "bench_cases.h"
+#include "loop_limit.h"
 
 #include <exception>
 
 namespace AF = CGAL::Anisotropic_fairing;
-
-Mesh limit_mesh(const Mesh& control)
-{
-  Mesh e = control;
-  AF::Loop_limit_surface<Mesh>(control).limit_positions(e.points());
-  return e;
-}
 
 struct Default_run
 {

@@ -11,8 +11,10 @@
 #include <cmath>
 #include <cstdlib>
 #include <filesystem>
+#include <initializer_list>
 #include <limits>
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace af_tool {
@@ -65,6 +67,36 @@ unsigned int parse_unsigned(const std::string& flag, const std::string& text)
   return static_cast<unsigned int>(v);
 }
 
+// A number option: `value` read from `text` and checked (> 0, or >= 0 with `zero_allowed`); `given` is set
+// after the check, or, with `given_if_invalid`, before it (a usage error's report then shows the value).
+void set_number(double& value, bool& given, const std::string& flag, const std::string& text, bool zero_allowed,
+                bool given_if_invalid = false)
+{
+  value = parse_double(flag, text);
+  if(given_if_invalid) given = true;
+  if(zero_allowed ? !(value >= 0) : !(value > 0)) usage_error(flag + (zero_allowed ? " must be >= 0" : " must be positive"));
+  given = true;
+}
+
+// The index of `text` among `names`; for any other text a usage error that lists them ("a, b or c").
+std::size_t choice_index(const std::string& flag, const std::string& text, const std::vector<const char*>& names)
+{
+  for(std::size_t i = 0; i < names.size(); ++i)
+    if(text == names[i]) return i;
+  std::string list;
+  for(std::size_t i = 0; i < names.size(); ++i) list += std::string(i == 0 ? "" : i + 1 == names.size() ? " or " : ", ") + names[i];
+  usage_error(flag + " expects " + list + ", not '" + text + "'");
+}
+
+// The value that `text` names among `choices` (name, value); for any other text that usage error.
+template <typename T>
+T choice(const std::string& flag, const std::string& text, std::initializer_list<std::pair<const char*, T> > choices)
+{
+  std::vector<const char*> names;
+  for(const auto& c : choices) names.push_back(c.first);
+  return (choices.begin() + choice_index(flag, text, names))->second;
+}
+
 // Whether two paths name one file: the same file if both exist (links included), else the same path.
 bool same_file(const std::string& a, const std::string& b)
 {
@@ -91,27 +123,20 @@ struct Option_spec
 
 const Option_spec option_table[] = {
   {"--time-step", nullptr, "T", "time step tau in model units (length^2), as in the paper",
-   [](Options& o, const std::string& flag, const std::string& v) {
-     o.time_step = parse_double(flag, v);
-     if(!(o.time_step > 0)) usage_error("--time-step must be positive");
-     o.has_time_step = true;
-   }},
+   [](Options& o, const std::string& flag, const std::string& v) { set_number(o.time_step, o.has_time_step, flag, v, false); }},
   {"--relative-time-step", nullptr, "R",
    "time step in units of l^2, l = sqrt(area/4pi) of the input (per connected\n"
    "component); give at most one of the two (neither: automatic parameters)",
    [](Options& o, const std::string& flag, const std::string& v) {
-     o.relative_time_step = parse_double(flag, v);
-     if(!(o.relative_time_step > 0)) usage_error("--relative-time-step must be positive");
-     o.has_relative_time_step = true;
+     set_number(o.relative_time_step, o.has_relative_time_step, flag, v, false);
    }},
   {"--order", nullptr, "2|4",
    "the flow's order: 2 (default: diffusion, as in the paper) or 4 (dX/dt = -(M^-1 L)^2 X,\n"
    "which removes noise while rounding the shape less; the time step is then in length^4,\n"
    "--relative-time-step in l^4; automatic: 0.1 h^4). The automatic default run uses the\n"
    "fourth-order flow itself for its uniform candidate (the report's choices say so)",
-   [](Options& o, const std::string&, const std::string& v) {
-     if(v != "2" && v != "4") usage_error("--order expects 2 or 4, not '" + v + "'");
-     o.order = v == "4" ? 4 : 2;
+   [](Options& o, const std::string& flag, const std::string& v) {
+     o.order = choice<int>(flag, v, {{"2", 2}, {"4", 4}});
      o.has_order = true;
    }},
   {"--steps", nullptr, "N", "the most time steps to run (default 10; with automatic parameters 200)",
@@ -123,36 +148,26 @@ const Option_spec option_table[] = {
    "paper: the criteria (27)-(29) and a steady-state test; off: exactly\n"
    "N steps. A step that would fold the surface is retried with a smaller\n"
    "time step, and the run ends on the last sound surface if that fails",
-   [](Options& o, const std::string&, const std::string& v) {
-     o.stop = v;
-     if(o.stop != "auto" && o.stop != "noise" && o.stop != "paper" && o.stop != "off")
-       usage_error("--stop expects auto, noise, paper or off, not '" + o.stop + "'");
+   [](Options& o, const std::string& flag, const std::string& v) {
+     o.stop = v;   // set before the check: a usage error's report shows what was asked
+     choice_index(flag, v, {"auto", "noise", "paper", "off"});
    }},
   {"--fidelity", nullptr, "W", "fidelity weight omega in model units (1/time), as in the paper (default 0)",
-   [](Options& o, const std::string& flag, const std::string& v) {
-     o.fidelity = parse_double(flag, v);
-     if(!(o.fidelity >= 0)) usage_error("--fidelity must be >= 0");
-     o.has_fidelity = true;
-   }},
+   [](Options& o, const std::string& flag, const std::string& v) { set_number(o.fidelity, o.has_fidelity, flag, v, true); }},
   {"--relative-fidelity", nullptr, "W", "fidelity weight in units of 1/l^2; give at most one of the two",
    [](Options& o, const std::string& flag, const std::string& v) {
-     o.relative_fidelity = parse_double(flag, v);
-     if(!(o.relative_fidelity >= 0)) usage_error("--relative-fidelity must be >= 0");
-     o.has_relative_fidelity = true;
+     set_number(o.relative_fidelity, o.has_relative_fidelity, flag, v, true);
    }},
   {"--element", nullptr, "loop|linear", "Loop limit-surface elements (default) or linear (P1) elements",
-   [](Options& o, const std::string&, const std::string& v) {
-     if(v == "loop") o.element = AF::Finite_element::LOOP;
-     else if(v == "linear") o.element = AF::Finite_element::LINEAR;
-     else usage_error("--element expects loop or linear, not '" + v + "'");
+   [](Options& o, const std::string& flag, const std::string& v) {
+     o.element = choice<AF::Finite_element>(flag, v, {{"loop", AF::Finite_element::LOOP}, {"linear", AF::Finite_element::LINEAR}});
    }},
   {"--output", nullptr, "limit|control",
    "write the points of the faired limit surface (default) or the faired\n"
    "control points (the mesh whose Loop limit surface is the faired surface)",
-   [](Options& o, const std::string&, const std::string& v) {
-     if(v == "limit") o.output_positions = AF::Output_positions::LIMIT_SURFACE;
-     else if(v == "control") o.output_positions = AF::Output_positions::CONTROL_POINTS;
-     else usage_error("--output expects limit or control, not '" + v + "'");
+   [](Options& o, const std::string& flag, const std::string& v) {
+     o.output_positions = choice<AF::Output_positions>(flag, v, {{"limit", AF::Output_positions::LIMIT_SURFACE},
+                                                                  {"control", AF::Output_positions::CONTROL_POINTS}});
    }},
   {"--tensor", nullptr, "isotropic|anisotropic|uniform",
    "the diffusion tensor: isotropic (mean-curvature flow; the\n"
@@ -163,60 +178,46 @@ const Option_spec option_table[] = {
    "less at the noise level: the report's tensor and choices say which) or uniform (the\n"
    "uniform Laplacian's weights, Uniform_diffusion_tensor: for noisy scans with a\n"
    "graded triangulation; it rounds creases like the isotropic tensor)",
-   [](Options& o, const std::string&, const std::string& v) {
+   [](Options& o, const std::string& flag, const std::string& v) {
      o.has_tensor = true;   // set before the check: a usage error's report shows what was asked
      o.anisotropic = v == "anisotropic";
      o.uniform = v == "uniform";
-     if(v != "anisotropic" && v != "isotropic" && v != "uniform")
-       usage_error("--tensor expects isotropic, anisotropic or uniform, not '" + v + "'");
+     choice_index(flag, v, {"isotropic", "anisotropic", "uniform"});
    }},
   {"--lambda", nullptr, "L",
    "the anisotropic tensor's feature threshold, a curvature in units of 1/l\n"
    "(default 2): principal curvatures above it are diffused less",
-   [](Options& o, const std::string& flag, const std::string& v) {
-     o.lambda = parse_double(flag, v);
-     o.has_lambda = true;
-     if(!(o.lambda > 0)) usage_error("--lambda must be positive");
-   }},
+   [](Options& o, const std::string& flag, const std::string& v) { set_number(o.lambda, o.has_lambda, flag, v, false, true); }},
   {"--epsilon", nullptr, "E",
    "the anisotropic tensor reads curvature on the surface after an isotropic\n"
    "step of E (units of l^2; the paper's prefiltered M_eps); default 1e-3;\n"
    "0: on the current surface",
-   [](Options& o, const std::string& flag, const std::string& v) {
-     o.epsilon = parse_double(flag, v);
-     o.has_epsilon = true;
-     if(!(o.epsilon >= 0)) usage_error("--epsilon must be >= 0");
-   }},
+   [](Options& o, const std::string& flag, const std::string& v) { set_number(o.epsilon, o.has_epsilon, flag, v, true, true); }},
   {"--tangential-motion", nullptr, "remove|keep",
    "the anisotropic flow moves control points along the surface's\n"
    "normal only (remove, the default: the tangential part of div(D grad x)\n"
    "folds noisy meshes) or also within it, as the paper does (keep)",
-   [](Options& o, const std::string&, const std::string& v) {
-     if(v == "remove") o.normal_motion_only = true;
-     else if(v == "keep") o.normal_motion_only = false;
-     else usage_error("--tangential-motion expects remove or keep, not '" + v + "'");
+   [](Options& o, const std::string& flag, const std::string& v) {
+     o.normal_motion_only = choice<bool>(flag, v, {{"remove", true}, {"keep", false}});
      o.has_tangential_motion = true;
    }},
   {"--solver", nullptr, "auto|cg|cholesky", "linear solver: automatic (default), conjugate gradients, sparse LDL^T",
-   [](Options& o, const std::string&, const std::string& v) {
-     if(v == "auto") o.solver = AF::Linear_solver::AUTOMATIC;
-     else if(v == "cg") o.solver = AF::Linear_solver::CONJUGATE_GRADIENT;
-     else if(v == "cholesky") o.solver = AF::Linear_solver::CHOLESKY;
-     else usage_error("--solver expects auto, cg or cholesky, not '" + v + "'");
+   [](Options& o, const std::string& flag, const std::string& v) {
+     o.solver = choice<AF::Linear_solver>(flag, v, {{"auto", AF::Linear_solver::AUTOMATIC},
+                                                    {"cg", AF::Linear_solver::CONJUGATE_GRADIENT},
+                                                    {"cholesky", AF::Linear_solver::CHOLESKY}});
    }},
   {"--boundary", nullptr, "curve|vertices",
    "on a mesh with borders, hold the limit boundary curve (default: the\n"
    "boundary vertices and the interior vertices that shape the curve) or only\n"
    "the boundary vertices (the paper's choice; the border may slide)",
-   [](Options& o, const std::string&, const std::string& v) {
-     if(v == "curve") o.boundary = AF::Boundary_handling::HOLD_BOUNDARY_CURVE;
-     else if(v == "vertices") o.boundary = AF::Boundary_handling::HOLD_BOUNDARY_VERTICES;
-     else usage_error("--boundary expects curve or vertices, not '" + v + "'");
+   [](Options& o, const std::string& flag, const std::string& v) {
+     o.boundary = choice<AF::Boundary_handling>(flag, v, {{"curve", AF::Boundary_handling::HOLD_BOUNDARY_CURVE},
+                                                          {"vertices", AF::Boundary_handling::HOLD_BOUNDARY_VERTICES}});
    }},
   {"--quadrature-degree", nullptr, "4|6|8", "Gauss rule per face for the Loop element (default 8)",
-   [](Options& o, const std::string&, const std::string& v) {
-     if(v == "4" || v == "6" || v == "8") o.quadrature_degree = std::atoi(v.c_str());
-     else usage_error("--quadrature-degree expects 4, 6 or 8, not '" + v + "'");
+   [](Options& o, const std::string& flag, const std::string& v) {
+     o.quadrature_degree = choice<int>(flag, v, {{"4", 4}, {"6", 6}, {"8", 8}});
    }},
   {"--attributes", nullptr, "NAME,...",
    "the per-vertex attributes to fair, in this order, as one vector per\n"
@@ -233,19 +234,16 @@ const Option_spec option_table[] = {
    "written) and only the attributes diffuse on it; geometry (the default\n"
    "without --attributes): the attributes are not faired. coupled and\n"
    "attributes need --attributes",
-   [](Options& o, const std::string&, const std::string& v) {
-     if(v == "separate") o.mode = AF::Attribute_mode::SEPARATE;
-     else if(v == "coupled") o.mode = AF::Attribute_mode::COUPLED;
-     else if(v == "attributes") o.mode = AF::Attribute_mode::ATTRIBUTES_ONLY;
-     else if(v == "geometry") o.mode = AF::Attribute_mode::GEOMETRY_ONLY;
-     else usage_error("--mode expects separate, coupled, attributes or geometry, not '" + v + "'");
+   [](Options& o, const std::string& flag, const std::string& v) {
+     o.mode = choice<AF::Attribute_mode>(flag, v, {{"separate", AF::Attribute_mode::SEPARATE},
+                                                   {"coupled", AF::Attribute_mode::COUPLED},
+                                                   {"attributes", AF::Attribute_mode::ATTRIBUTES_ONLY},
+                                                   {"geometry", AF::Attribute_mode::GEOMETRY_ONLY}});
      o.has_mode = true;
    }},
   {"--attribute-weight", nullptr, "W", "coupled: the length that one attribute unit counts for (> 0, default 1)",
    [](Options& o, const std::string& flag, const std::string& v) {
-     o.attribute_weight = parse_double(flag, v);
-     if(!(o.attribute_weight > 0)) usage_error("--attribute-weight must be positive");
-     o.has_attribute_weight = true;
+     set_number(o.attribute_weight, o.has_attribute_weight, flag, v, false);
    }},
   {"--curvature", nullptr, nullptr,
    "also write the curvature of the faired Loop limit surface at each vertex\n"
