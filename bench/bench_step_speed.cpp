@@ -281,7 +281,7 @@ double solve_per_step(const AF::Fairing_report& r)
 
 void part_iterations(const std::string& dir)
 {
-  std::printf("\n## (b) Conjugate-gradient iterations per step, Loop vs P1: time_step(ratio h^2), 4 steps, stopping none, solver_tolerance(1e-8) (relative residual, as in doc/Anisotropic_fairing/design/loop-fem.md section 9), warm start\n\n");
+  std::printf("\n## (b) Conjugate-gradient iterations per step, Loop vs P1: time_step(ratio h^2), 4 steps, stopping none, solver_tolerance(1e-8) (relative residual, as in doc/Anisotropic_fairing/design/loop-fem-flow.md section 9), warm start\n\n");
   std::printf("| mesh | tau/h^2 | tau_rel | CG its Loop | CG its P1 | solve s/step Loop | solve s/step P1 |\n|---|---:|---:|---|---|---:|---:|\n");
   for_each_mesh(dir, {{"bumpy.off", 0}, {"bunny.off", 0}, {"fertility.off", 2}}, [&](const Named_mesh& s)
   {

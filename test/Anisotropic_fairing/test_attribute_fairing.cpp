@@ -1,4 +1,4 @@
-// Functions on surfaces (Bajaj & Xu's cases a-d; doc/Anisotropic_fairing/design/loop-fem.md sections 7-8 and 11b-d):
+// Functions on surfaces (Bajaj & Xu's cases a-d; doc/Anisotropic_fairing/design/loop-fem.md section 7, loop-fem-flow.md sections 8 and 11b-d):
 //  - the Laplace-Beltrami spectrum of the fixed interpolating icosphere (642 vertices): the generalised
 //    eigenvalues of (L, M) are l(l+1), multiplicity 2l+1, for l = 1..4;
 //  - attributes-only time stepping of Y_l (l = 1, 2, 3) to t = 0.1 with tau = 1e-3: the M-norm ratio is
@@ -98,7 +98,7 @@ void spectrum(const Sphere_operators& op)
 
 double m_norm(const Eigen::MatrixXd& M, const Eigen::VectorXd& a) { return std::sqrt(a.dot(M * a)); }
 
-// The control values of Y_l: f0 = Lambda^-1 Y_l(limit points), the limit points being Lambda X (loop-fem.md 11b)
+// The control values of Y_l: f0 = Lambda^-1 Y_l(limit points), the limit points being Lambda X (loop-fem-flow.md 11b)
 Eigen::VectorXd harmonic_control_values(const Mesh& sphere, int l)
 {
   const Eigen::SparseMatrix<double> Lambda = AF_test::limit_mask_matrix(sphere);

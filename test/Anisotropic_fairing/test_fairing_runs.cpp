@@ -1,5 +1,5 @@
 // anisotropic_fairing() as a user calls it: the fidelity steady state and collapse of the sphere
-// (doc/Anisotropic_fairing/design/loop-fem.md section 11c), constrained vertices, Surface_mesh = Polyhedron_3, failures that leave
+// (doc/Anisotropic_fairing/design/loop-fem-flow.md section 11c), constrained vertices, Surface_mesh = Polyhedron_3, failures that leave
 // the mesh byte-identical, relative units (a model scaled by 10 is faired identically), the stopping
 // criteria (27)-(29) against the report's own numbers, the callback, and the P1 variant's shrink
 // rate on the sphere against its discretisation error.
@@ -37,7 +37,7 @@ using AF_test::max_abs_difference;
 
 void fidelity_steady_state()
 {
-  // r* = (r0 + sqrt(r0^2 - 8/w))/2 for w >= 8/r0^2 (loop-fem.md 11c), reached by time stepping
+  // r* = (r0 + sqrt(r0^2 - 8/w))/2 for w >= 8/r0^2 (loop-fem-flow.md 11c), reached by time stepping
   for(double w : { 10.0, 20.0 })
   {
     Mesh sphere;

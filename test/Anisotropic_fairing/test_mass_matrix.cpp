@@ -91,8 +91,8 @@ int main(int argc, char** argv)
     AF_CHECK_REL(Mm.sum(), s.area(), 1e-13, "sum of M = area on the torus");
   }
 
-  // limit surface interpolating the unit sphere at 642 vertices (doc/Anisotropic_fairing/design/loop-fem.md section 11). With the
-  // prototype's rule (point, degree 6) the area is 4 pi to 1e-5, as loop-fem.md reports (1.000000).
+  // limit surface interpolating the unit sphere at 642 vertices (doc/Anisotropic_fairing/design/loop-fem-flow.md section 11). With the
+  // prototype's rule (point, degree 6) the area is 4 pi to 1e-5, as loop-fem-flow.md reports (1.000000).
   // The converged area is 1.7e-5 smaller: the surface interpolates the sphere at the vertices only
   // (radius 0.99943..1.00040 in between), and the degree-6 point rule's error happens to cancel that.
   // A closed surface enclosing the ball of radius r_min has area at least 4 pi r_min^2.

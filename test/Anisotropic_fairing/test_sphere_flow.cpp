@@ -1,4 +1,4 @@
-// Mean-curvature flow of the sphere against its analytic solutions (doc/Anisotropic_fairing/design/loop-fem.md section 11a, 11c):
+// Mean-curvature flow of the sphere against its analytic solutions (doc/Anisotropic_fairing/design/loop-fem-flow.md section 11a, 11c):
 // on the limit surface interpolating the unit sphere, A/4pi follows the scheme's exact time-discrete
 // prediction r_{n+1} = r_n / (1 + 2 tau / r_n^2) and the exact r^2 = 1 - 4t; with a fidelity weight
 // the sphere settles at r* = (r0 + sqrt(r0^2 - 8/w))/2, or collapses (and the mesh is left as it was).

@@ -1,6 +1,6 @@
 // The stiffness matrix L_ij = (grad phi_i, grad phi_j) assembled with the mass matrix in one pass:
 // symmetric, L 1 = 0, positive semi-definite with the constants as kernel, the energy identity
-// trace(X^T L X) = 2 Area for D = I in any dimension kappa (doc/Anisotropic_fairing/design/loop-fem.md section 11d), the same M as
+// trace(X^T L X) = 2 Area for D = I in any dimension kappa (doc/Anisotropic_fairing/design/loop-fem-flow.md section 11d), the same M as
 // the mass-only assembly; and the linear (P1) element against the closed forms of Clarenz et al.:
 // consistent mass area/12 (1 + delta_ij) and cotangent stiffness, computed here independently.
 // The uniform tensor: with P1 the graph Laplacian (valence, -1 per edge) over sqrt(3), with Loop a

@@ -1,4 +1,4 @@
-// The interpolating icosphere of doc/Anisotropic_fairing/design/loop-fem.md section 11: control points X = Lambda^-1 P whose Loop
+// The interpolating icosphere of doc/Anisotropic_fairing/design/loop-fem-flow.md section 11: control points X = Lambda^-1 P whose Loop
 // limit surface passes through the unit-sphere vertices P (Lambda is the limit-mask matrix, built
 // here from the test's own Loop weights, independently of the package).
 

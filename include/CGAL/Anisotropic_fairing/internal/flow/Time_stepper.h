@@ -2,7 +2,7 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 //
 // The semi-implicit step ((1 + tau w) M + tau L(D)) X_{n+1} = M (X_n + tau w X_0) of Bajaj & Xu
-// (eq. 26 with the fidelity term written consistently, doc/Anisotropic_fairing/design/loop-fem.md section 8), repeated until a
+// (eq. 26 with the fidelity term written consistently, doc/Anisotropic_fairing/design/loop-fem-flow.md section 8), repeated until a
 // stopping criterion holds, controlled as an ODE integrator would be: a step that leaves an unsound
 // surface (Step_safety.h) is rejected and retried with a quarter of the time step; when even
 // 1/1024 of it fails, the run ends on the last sound surface. It knows nothing of the element: any
