@@ -2,7 +2,7 @@
 """Runs one group of the table cli_cases.json against the program anisotropic_fairing (CTest: cli_<group>).
 
     cli_test.py --tool BIN --cases cli_cases.json --group NAME --example-data DIR --work DIR
-    cli_test.py --tool BIN --docs README.md MANUAL.txt      (the test cli_option_docs)
+    cli_test.py --tool BIN --docs README.md PROGRAM_PAGE.txt   (the test cli_option_docs)
 
 Each run of a group lists the arguments and what must hold afterwards; the checks are the functions
 named check_<key> below, one per key of a run (see the comment at the top of cli_cases.json).
@@ -240,11 +240,10 @@ def check_docs(tool, readme, manual):
     table_text = text[text.index('| option |'):]
     table_text = table_text[:table_text.index('\n\n')]
     readme_flags = re.findall(r'^\| `(--[a-z][a-z-]*)', table_text, re.M)
-    # manual: the items of the option list of the section on the program, "- `--flag ...`"
+    # manual: the items of the option list of its page on the program, "- `--flag ...`"
     text = open(manual, encoding='utf-8').read()
-    section = text[text.index('\\section sec_AF_tool'):]
-    section = section[:section.index('\\section', 1)] if '\\section' in section[1:] else section
-    manual_flags = re.findall(r'^- `(--[a-z][a-z-]*)', section, re.M)
+    check('\\page af_tool_page' in text, 'the manual page on the program is %s' % manual)
+    manual_flags = re.findall(r'^- `(--[a-z][a-z-]*)', text, re.M)
     for name, flags in (('README', readme_flags), ('manual', manual_flags)):
         check(flags == tool_flags, '%s lists the flags of --help in its order:\n  %s\n  --help: %s' % (name, flags, tool_flags))
 
