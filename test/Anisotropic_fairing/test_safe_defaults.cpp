@@ -82,7 +82,11 @@ void check_sound(const char* name, const Mesh& input, const Mesh& output, const 
   {
     AF_CHECK(finite, std::string(name) + ": a success is finite");
     AF_CHECK(after <= before, std::string(name) + ": a success has no more folded edges than the input");
-    if(r.stop_reason == AF::Stop_reason::STEP_REJECTED) AF_CHECK(!r.message.empty(), std::string(name) + ": an early end says why");
+    if(r.stop_reason == AF::Stop_reason::STEP_REJECTED)
+    {
+      AF_CHECK(!r.message.empty(), std::string(name) + ": an early end says why");
+      AF_CHECK(!r.steps.empty(), std::string(name) + ": a run that kept no step (an unmoved surface) is no success");
+    }
   }
   else
   {

@@ -23,7 +23,7 @@ enum class Fairing_status {
   NON_FINITE_VALUE,   ///< a NaN or infinite value appeared in the solution
   DEGENERATE_METRIC,  ///< the surface pinched: \f$\sqrt{\det G} \le 0\f$ (or not finite) at a quadrature point
   COLLAPSED,          ///< a connected component of the surface shrank to (almost) nothing: area below 1% of its initial one
-  FOLDED              ///< the first step folded the surface (or made \f$\int|H|^2\f$ explode) even when retried with 1/1024 of the time step
+  FOLDED              ///< the first step folded the surface (or made \f$\int|H|^2\f$ explode) even when retried with 1/1024 of the time step, or every step taken left more folded edges than the input had
 };
 
 /// \ingroup PkgAnisotropicFairingFunctions

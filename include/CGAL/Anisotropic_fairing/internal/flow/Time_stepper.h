@@ -343,6 +343,10 @@ private:
     const std::size_t folds = last.folded_edges;
     if(folds > allowed_folds && report.succeeded())
     {
+      // every accepted step folded the surface: nothing sound was gained, and an unmoved result is no success
+      if(unfolded_steps == 0)
+        return fail(report, Fairing_status::FOLDED, "the surface folded at " + std::to_string(folds) + " edges (the input at " +
+                    std::to_string(allowed_folds) + ") from the first step on, even with smaller time steps", total);
       Z = Z_unfolded;
       report.steps.resize(unfolded_steps);
       report.stop_reason = Stop_reason::STEP_REJECTED;
