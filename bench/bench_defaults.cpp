@@ -1,7 +1,7 @@
 // Safe automatic defaults: how close the library's default run, anisotropic_fairing(mesh) with no
 // named parameters, gets to the best explicit settings, and whether it ever folds the surface.
 //
-// Cases: those of bench_cases.h with 10-bit quantisation, and noise-free default runs on armadillo.obj
+// Cases: those of bench_cases.h with 10-bit quantisation, the held-out ones ("other ..."), and noise-free default runs on armadillo.obj
 // and camelhead.off (how much a clean mesh is changed).
 // Per case: the default run (mean face-normal angle error to the original, status, stop reason, steps,
 // seconds, folded edges = interior edges whose two faces' normals make an angle > 120 deg), the best of
@@ -12,7 +12,8 @@
 // usage: bench_defaults [DATA_DIR=<repo>/../shared/data] [CASE_SUBSTRING] [PARTS=dsn]
 //   PARTS: d = default run, s = sweeps (ours and smooth_shape), n = noise-free default runs, u = the automatic
 //          run with the uniform tensor (diffusion_tensor(Uniform_diffusion_tensor()) alone), printed per case
-//   case names: the pair directories (Fandisk0.3, ...), "<model> gauss0.2", "<model> gauss0.5", "<model> quant10", "<model> clean"
+//   case names: the pair directories (Fandisk0.3, ...), "<model> gauss0.2", "<model> gauss0.5", "<model> quant10", "<model> clean",
+//   "other <model> gauss0.3", "other <model> every-direction0.3"
 
 #include "our_sweeps.h"
 
@@ -32,6 +33,7 @@ int main(int argc, char** argv)
 
   // noisy cases: the denoising pairs, then the generated ones
   std::vector<Case> cases = noisy_cases(dir, {10});
+  for(Case& c : held_out_cases(dir)) cases.push_back(std::move(c));
 
   std::printf("# bench_defaults: %s, cases matching \"%s\", parts %s\n", dir.c_str(), only.c_str(), parts.c_str());
   if(part_s)

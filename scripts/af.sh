@@ -19,7 +19,7 @@ cd "$ROOT"
 
 BUILD_DIR="build"
 JOBS=2
-DEB_PACKAGES=(libcgal-dev libeigen3-dev libboost-dev libtbb-dev cmake g++ python3)   # python3: the cli_* tests
+DEB_PACKAGES=(libcgal-dev libeigen3-dev libboost-dev libtbb-dev nlohmann-json3-dev cmake g++ python3)   # nlohmann-json: the program's report; python3: the cli_* tests
 
 # The main program: the one place to change what `af.sh main` runs.
 # The default run, no tuning flag: fairs the noisy fandisk of the denoising benchmark (6475 vertices,

@@ -1,6 +1,7 @@
 // The JSON report of anisotropic_fairing (--report): what was asked, what the run chose and did,
 // and the statistics of every step; written on success and on failure (with status and message).
-// Numbers have 17 significant digits; unknown or non-finite values are null. The keys and their
+// Numbers are written in the shortest form that reads back to the same double; unknown or non-finite
+// values are null. The keys and their
 // meaning are a public interface (README, JSON report table): change them only with the README.
 #ifndef AF_TOOL_JSON_REPORT_H
 #define AF_TOOL_JSON_REPORT_H
