@@ -204,7 +204,7 @@ void test_extraordinary_corners(const M& mesh, const std::string& name)
       root.stencil(u, v, s);
       double t1[3], t2[3];
       apply(s, AFi::D1, t1); apply(s, AFi::D2, t2);
-      AFi::cross3(t1, t2, n); AFi::normalize3(n);
+      AFi::unit_cross(t1, t2, n);
     };
     for(int k = 0; k < 3; ++k)
     {

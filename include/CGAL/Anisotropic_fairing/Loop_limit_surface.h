@@ -16,6 +16,7 @@
 #include <CGAL/Anisotropic_fairing/internal/element/Quadrature_parameters.h>
 #include <CGAL/Anisotropic_fairing/internal/surface/Vertex_curvature.h>
 #include <CGAL/Anisotropic_fairing/internal/loop/Vertex_limit_masks.h>
+#include <CGAL/Anisotropic_fairing/internal/types/Vector3.h>
 
 #include <CGAL/Kernel_traits.h>
 #include <CGAL/boost/graph/Euler_operations.h>
@@ -220,8 +221,7 @@ public:
     double v[6][3];
     jet(fi, s, v);
     double n[3];
-    internal::cross3(v[1], v[2], n);
-    internal::normalize3(n);
+    internal::unit_cross(v[1], v[2], n);
     Limit_point p;
     p.position = Point_3(v[0][0], v[0][1], v[0][2]);
     p.d1 = Vector_3(v[1][0], v[1][1], v[1][2]);

@@ -12,6 +12,7 @@
 
 #include <CGAL/Anisotropic_fairing/Quadrature_point_geometry.h>
 #include <CGAL/Anisotropic_fairing/internal/types/Symmetric_2x2_eigen.h>
+#include <CGAL/Anisotropic_fairing/internal/types/Vector3.h>
 
 #include <array>
 #include <cmath>
@@ -70,9 +71,7 @@ inline Principal_curvatures principal_curvatures(const Quadrature_point_geometry
   std::vector<double> nu(std::size_t(k), 0.0);
   if(k == 3)
   {
-    nu[0] = q.t1[1] * q.t2[2] - q.t1[2] * q.t2[1];
-    nu[1] = q.t1[2] * q.t2[0] - q.t1[0] * q.t2[2];
-    nu[2] = q.t1[0] * q.t2[1] - q.t1[1] * q.t2[0];
+    internal::vec3(nu.data()) = internal::vec3(q.t1).cross(internal::vec3(q.t2));
   }
   else mean_curvature_vector(q, nu.data());
   double norm = 0;

@@ -14,6 +14,7 @@
 #include <CGAL/Anisotropic_fairing/Surface_curvature.h>
 #include <CGAL/Anisotropic_fairing/internal/types/Control_matrix.h>
 #include <CGAL/Anisotropic_fairing/internal/types/Stencil_row.h>
+#include <CGAL/Anisotropic_fairing/internal/types/Vector3.h>
 #include <CGAL/Anisotropic_fairing/internal/assembly/Sparse_pattern.h>
 #include <CGAL/Anisotropic_fairing/internal/loop/Vertex_limit_masks.h>
 
@@ -296,8 +297,8 @@ private:
       {
         // a fold inside the face: the normal (of the geometry's 3 coordinates) turns by more than 120
         // degrees between the first point and this one
-        double nq[3] = { t1[1] * t2[2] - t1[2] * t2[1], t1[2] * t2[0] - t1[0] * t2[2], t1[0] * t2[1] - t1[1] * t2[0] };
-        normalize3(nq);
+        double nq[3];
+        unit_cross(t1, t2, nq);
         if(first_normal[0] == 0 && first_normal[1] == 0 && first_normal[2] == 0) { first_normal[0] = nq[0]; first_normal[1] = nq[1]; first_normal[2] = nq[2]; }
         else lowest_dot = std::min(lowest_dot, nq[0] * first_normal[0] + nq[1] * first_normal[1] + nq[2] * first_normal[2]);
       }

@@ -18,6 +18,7 @@
 #define CGAL_ANISOTROPIC_FAIRING_INTERNAL_FLOW_NOISE_ESTIMATE_H
 
 #include <CGAL/Anisotropic_fairing/internal/types/Control_matrix.h>
+#include <CGAL/Anisotropic_fairing/internal/types/Vector3.h>
 #include <CGAL/Anisotropic_fairing/internal/mesh/Triangle_topology.h>
 
 #include <algorithm>
@@ -65,12 +66,10 @@ public:
         const int p = ring[k], q = ring[(k + 1) % ring.size()];
         const double u[3] = { X(p, 0) - c[0], X(p, 1) - c[1], X(p, 2) - c[2] };
         const double w[3] = { X(q, 0) - c[0], X(q, 1) - c[1], X(q, 2) - c[2] };
-        nrm[0] += u[1] * w[2] - u[2] * w[1];
-        nrm[1] += u[2] * w[0] - u[0] * w[2];
-        nrm[2] += u[0] * w[1] - u[1] * w[0];
+        vec3(nrm) += vec3(u).cross(vec3(w));
         h += (X.row(p).head(3) - X.row(Eigen::Index(i)).head(3)).norm();
       }
-      const double len = std::sqrt(nrm[0] * nrm[0] + nrm[1] * nrm[1] + nrm[2] * nrm[2]);
+      const double len = vec3(nrm).norm();
       h /= double(ring.size());
       if(!(len > 0) || !(h > 0) || !std::isfinite(len)) continue;
       for(int a = 0; a < 3; ++a) normal_[3 * i + std::size_t(a)] = nrm[a] / len;

@@ -17,6 +17,7 @@
 #define CGAL_ANISOTROPIC_FAIRING_INTERNAL_FLOW_STEP_SAFETY_H
 
 #include <CGAL/Anisotropic_fairing/internal/types/Control_matrix.h>
+#include <CGAL/Anisotropic_fairing/internal/types/Vector3.h>
 #include <CGAL/Anisotropic_fairing/internal/assembly/Fem_assembly.h>
 #include <CGAL/Anisotropic_fairing/internal/mesh/Ghost_layer.h>
 #include <CGAL/Anisotropic_fairing/internal/mesh/Triangle_topology.h>
@@ -43,8 +44,8 @@ inline double face_cross_product(const Triangle_topology& topo, std::size_t f, c
   const auto& t = topo.face(f);
   double u[3], v[3];
   for(int a = 0; a < 3; ++a) { u[a] = Y(t[1], a) - Y(t[0], a); v[a] = Y(t[2], a) - Y(t[0], a); }
-  n[0] = u[1] * v[2] - u[2] * v[1]; n[1] = u[2] * v[0] - u[0] * v[2]; n[2] = u[0] * v[1] - u[1] * v[0];
-  return std::sqrt(n[0] * n[0] + n[1] * n[1] + n[2] * n[2]);
+  vec3(n) = vec3(u).cross(vec3(v));
+  return vec3(n).norm();
 }
 
 inline std::size_t count_folded_edges(const Triangle_topology& topo, std::size_t real_faces, const Control_matrix& Y,

@@ -7,6 +7,7 @@
 #define CGAL_ANISOTROPIC_FAIRING_INTERNAL_LOOP_VERTEX_LIMIT_MASKS_H
 
 #include <CGAL/Anisotropic_fairing/internal/types/Control_matrix.h>
+#include <CGAL/Anisotropic_fairing/internal/types/Vector3.h>
 #include <CGAL/Anisotropic_fairing/internal/loop/Loop_rules.h>
 #include <CGAL/Anisotropic_fairing/internal/mesh/Triangle_topology.h>
 
@@ -16,19 +17,6 @@
 namespace CGAL {
 namespace Anisotropic_fairing {
 namespace internal {
-
-inline void cross3(const double* a, const double* b, double* c)
-{
-  c[0] = a[1] * b[2] - a[2] * b[1];
-  c[1] = a[2] * b[0] - a[0] * b[2];
-  c[2] = a[0] * b[1] - a[1] * b[0];
-}
-
-inline void normalize3(double* n)
-{
-  const double l = std::sqrt(n[0] * n[0] + n[1] * n[1] + n[2] * n[2]);
-  if(l > 0) { n[0] /= l; n[1] /= l; n[2] /= l; }
-}
 
 /// out = limit position of vertex v: (1 - n chi) x_v + chi sum of the neighbours (kappa values).
 /// A vertex on no face (accepted by some callers) is on no surface: its "limit" is itself.
@@ -77,8 +65,7 @@ inline void vertex_limit_normal(const Triangle_topology& topo, const Control_mat
 {
   double tu[3], tv[3];
   vertex_limit_tangents(topo, X, v, tu, tv);
-  cross3(tu, tv, n);
-  normalize3(n);
+  unit_cross(tu, tv, n);
 }
 
 } // namespace internal

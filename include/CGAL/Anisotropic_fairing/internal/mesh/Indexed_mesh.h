@@ -171,6 +171,9 @@ public:
 private:
   std::vector<vertex_descriptor> vertices_;
   std::vector<face_descriptor> faces_;
+  // hash maps rather than CGAL's dynamic property maps: on a const Surface_mesh those (CGAL 5.5) are a
+  // vector of num_vertices() entries indexed by idx(), out of range on a mesh with removed elements, and
+  // on a mutable one they add a property to the user's mesh for as long as a Loop_limit_surface lives
   std::unordered_map<vertex_descriptor, std::size_t> vertex_index_;
   std::unordered_map<face_descriptor, std::size_t> face_index_;
   Ghost_layer ghost_layer_;

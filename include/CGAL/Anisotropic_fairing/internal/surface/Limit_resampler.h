@@ -11,6 +11,7 @@
 #define CGAL_ANISOTROPIC_FAIRING_INTERNAL_SURFACE_LIMIT_RESAMPLER_H
 
 #include <CGAL/Anisotropic_fairing/internal/types/Control_matrix.h>
+#include <CGAL/Anisotropic_fairing/internal/types/Vector3.h>
 #include <CGAL/Anisotropic_fairing/internal/element/Patch_cache.h>
 #include <CGAL/Anisotropic_fairing/internal/loop/Vertex_limit_masks.h>
 
@@ -155,8 +156,7 @@ inline Resampled_surface resample_limit_surface(const Triangle_topology& topo, c
             t2[c] += s.row(D2)[k] * x;
           }
         double n[3];
-        cross3(t1, t2, n);
-        normalize3(n);
+        unit_cross(t1, t2, n);
         for(int c = 0; c < 3; ++c) { out.positions(Eigen::Index(o), c) = p[c]; out.normals(Eigen::Index(o), c) = n[c]; }
         if(A)
           for(Eigen::Index c = 0; c < d; ++c)

@@ -17,6 +17,7 @@
 #include <CGAL/Anisotropic_fairing/Surface_curvature.h>
 #include <CGAL/Anisotropic_fairing/internal/types/Control_matrix.h>
 #include <CGAL/Anisotropic_fairing/internal/types/Symmetric_2x2_eigen.h>
+#include <CGAL/Anisotropic_fairing/internal/types/Vector3.h>
 #include <CGAL/Anisotropic_fairing/internal/element/Patch_cache.h>
 #include <CGAL/Anisotropic_fairing/internal/mesh/Triangle_topology.h>
 #include <CGAL/Anisotropic_fairing/internal/loop/Vertex_limit_masks.h>
@@ -56,8 +57,8 @@ struct Vertex_curvature_value
 inline std::vector<Vertex_curvature_value>
 averaged_vertex_curvatures(const Triangle_topology& topo, const Patch_cache& cache, std::size_t vertices, const Control_matrix& X)
 {
-  std::vector<std::array<double, 6>> S(vertices, std::array<double, 6>{ { 0, 0, 0, 0, 0, 0 } });   // xx xy xz yy yz zz
-  std::vector<double> W(vertices, 0.0);
+  std::vector<Eigen::Matrix3d> S(vertices, Eigen::Matrix3d::Zero());   // int xi_v S dA
+  std::vector<double> W(vertices, 0.0);                              // int xi_v dA
   for(std::size_t f = 0; f < cache.number_of_faces(); ++f)
   {
     const int cat = cache.category(f), m = cache.ring_size(f);
@@ -76,19 +77,10 @@ averaged_vertex_curvatures(const Triangle_topology& topo, const Patch_cache& cac
       const Quadrature_point_geometry g = point_geometry_3(t, f, int(q));
       if(!(g.det > 0) || !std::isfinite(g.det)) continue;
       const Principal_curvatures pc = principal_curvatures(g);
-      double e[2][3];
-      for(int c = 0; c < 3; ++c)
-      {
-        e[0][c] = pc.c1[0] * t[0][c] + pc.c1[1] * t[1][c];
-        e[1][c] = pc.c2[0] * t[0][c] + pc.c2[1] * t[1][c];
-      }
-      const double k[2] = { pc.k1, pc.k2 };
-      std::array<double, 6> s{ { 0, 0, 0, 0, 0, 0 } };
-      for(int a = 0; a < 2; ++a)
-      {
-        s[0] += k[a] * e[a][0] * e[a][0]; s[1] += k[a] * e[a][0] * e[a][1]; s[2] += k[a] * e[a][0] * e[a][2];
-        s[3] += k[a] * e[a][1] * e[a][1]; s[4] += k[a] * e[a][1] * e[a][2]; s[5] += k[a] * e[a][2] * e[a][2];
-      }
+      const Eigen::Vector3d e1 = pc.c1[0] * vec3(t[0]) + pc.c1[1] * vec3(t[1]);
+      const Eigen::Vector3d e2 = pc.c2[0] * vec3(t[0]) + pc.c2[1] * vec3(t[1]);
+      Eigen::Matrix3d s = pc.k1 * e1 * e1.transpose() + pc.k2 * e2 * e2.transpose();
+      s.triangularView<Eigen::StrictlyLower>() = s.transpose();   // exactly symmetric
       const double area = qp.weight * std::sqrt(g.det);
       const double hat[3] = { 1 - qp.xi1 - qp.xi2, qp.xi1, qp.xi2 };   // ring starts with the face's corners
       for(int corner = 0; corner < 3; ++corner)
@@ -97,7 +89,7 @@ averaged_vertex_curvatures(const Triangle_topology& topo, const Patch_cache& cac
         if(v >= vertices) continue;
         const double w = area * hat[corner];
         W[v] += w;
-        for(int i = 0; i < 6; ++i) S[v][std::size_t(i)] += w * s[std::size_t(i)];
+        S[v] += w * s;
       }
     }
   }
@@ -106,37 +98,20 @@ averaged_vertex_curvatures(const Triangle_topology& topo, const Patch_cache& cac
   for(std::size_t v = 0; v < vertices; ++v)
   {
     if(!(W[v] > 0)) continue;
-    double n[3];
-    vertex_limit_normal(topo, X, int(v), n);
+    Eigen::Vector3d n;
+    vertex_limit_normal(topo, X, int(v), n.data());
     // a tangent basis u1, u2 of the limit tangent plane
-    const double a[3] = { std::abs(n[0]) < 0.9 ? 1.0 : 0.0, std::abs(n[0]) < 0.9 ? 0.0 : 1.0, 0.0 };
-    double u1[3], u2[3];
-    cross3(n, a, u1);
-    normalize3(u1);
-    cross3(n, u1, u2);
-    const std::array<double, 6>& s = S[v];
-    auto apply = [&](const double* x, double* y) {
-      y[0] = (s[0] * x[0] + s[1] * x[1] + s[2] * x[2]) / W[v];
-      y[1] = (s[1] * x[0] + s[3] * x[1] + s[4] * x[2]) / W[v];
-      y[2] = (s[2] * x[0] + s[4] * x[1] + s[5] * x[2]) / W[v];
-    };
-    double y1[3], y2[3];
-    apply(u1, y1);
-    apply(u2, y2);
-    const double s11 = u1[0] * y1[0] + u1[1] * y1[1] + u1[2] * y1[2];
-    const double s12 = 0.5 * (u2[0] * y1[0] + u2[1] * y1[1] + u2[2] * y1[2] + u1[0] * y2[0] + u1[1] * y2[1] + u1[2] * y2[2]);
-    const double s22 = u2[0] * y2[0] + u2[1] * y2[1] + u2[2] * y2[2];
-    const Symmetric_2x2_eigen e = symmetric_2x2_eigen(s11, s12, s22);
+    const Eigen::Vector3d a = std::abs(n[0]) < 0.9 ? Eigen::Vector3d::UnitX() : Eigen::Vector3d::UnitY();
+    const Eigen::Vector3d u1 = n.cross(a).normalized(), u2 = n.cross(u1);
+    const Eigen::Vector3d y1 = S[v] * u1 / W[v], y2 = S[v] * u2 / W[v];
+    const Symmetric_2x2_eigen e = symmetric_2x2_eigen(u1.dot(y1), 0.5 * (u2.dot(y1) + u1.dot(y2)), u2.dot(y2));
     Vertex_curvature_value& r = out[v];
     r.k1 = e.k1;
     r.k2 = e.k2;
-    const double c1x = e.x, c1y = e.y;   // the eigenvector of k1 in (u1, u2)
-    for(int c = 0; c < 3; ++c)
-    {
-      r.H[std::size_t(c)] = e.mean * n[c];
-      r.d1[std::size_t(c)] = c1x * u1[c] + c1y * u2[c];
-      r.d2[std::size_t(c)] = -c1y * u1[c] + c1x * u2[c];
-    }
+    // the eigenvector of k1 is (x, y) in (u1, u2)
+    vec3(r.H.data()) = e.mean * n;
+    vec3(r.d1.data()) = e.x * u1 + e.y * u2;
+    vec3(r.d2.data()) = -e.y * u1 + e.x * u2;
   }
   return out;
 }
