@@ -259,8 +259,8 @@ void denoising_pair()
   check_sound("Fandisk0.3 default", noisy, m, r);
   AF_CHECK(r.stop_reason == AF::Stop_reason::NOISE_LEVEL, "the default run stops at the noise level");
   AF_CHECK(error < 4.0, "the default run denoises Fandisk0.3 below 4 degrees");
-  // of the anisotropic and the isotropic result, the one with the smaller total variation of its normals is
-  // kept (Tensor_selection.h): on a CAD part the anisotropic one, which is the better against the truth
+  // of the candidates, the one with the lowest estimated error (Tensor_selection.h) is kept: on a CAD part
+  // the anisotropic one, which is the better against the truth
   AF::anisotropic_fairing(isotropic, AF::parameters::diffusion_tensor(AF::Isotropic_diffusion_tensor()));
   std::printf("  the isotropic run: %.2f degrees\n", normal_error(isotropic, original));
   AF_CHECK(r.selected_tensor == "anisotropic", "the anisotropic result is kept on Fandisk0.3");
@@ -283,9 +283,9 @@ void noisy_camel_head(double sigma_h, unsigned seed, Mesh& clean, Mesh& noisy)
 
 void tensor_selection()
 {
-  // on a graded organic scan with strong noise (the CAD case: denoising_pair), an isotropic result is
-  // kept, and of the two isotropic flows the uniform tensor's fourth-order flow, whose normals vary less:
-  // it is that run's own, and closer to the truth than the cotangent flow's and the uniform second-order one's
+  // on a graded organic scan with strong noise (the CAD case: denoising_pair), the uniform tensor's
+  // fourth-order result has the lowest estimated error and is kept: it is that run's own, and closer to
+  // the truth than the cotangent flow's and the uniform second-order one's
   Mesh clean, noisy;
   noisy_camel_head(0.5, 11, clean, noisy);
   Mesh kept = noisy, isotropic = noisy, uniform = noisy, uniform2 = noisy;

@@ -174,8 +174,8 @@ const Option_spec option_table[] = {
    "default with a time step), anisotropic (curvature-driven, feature-preserving:\n"
    "Anisotropic_diffusion_tensor; the default with automatic parameters, its\n"
    "threshold and prefilter then chosen from the mesh unless given, and the\n"
-   "isotropic (or uniform) result kept instead when its normals vary clearly\n"
-   "less at the noise level: the report's tensor and choices say which) or uniform (the\n"
+   "isotropic (or uniform) result kept instead when its estimated error at the\n"
+   "noise level is lower: the report's tensor and choices say which) or uniform (the\n"
    "uniform Laplacian's weights, Uniform_diffusion_tensor: for noisy scans with a\n"
    "graded triangulation; it rounds creases like the isotropic tensor)",
    [](Options& o, const std::string& flag, const std::string& v) {
@@ -298,9 +298,9 @@ const char* const help_before_options =
 "Without --time-step and --relative-time-step the parameters are automatic: the program estimates\n"
 "the noise of the mesh itself, fairs with the anisotropic tensor (unless --tensor says otherwise) in\n"
 "steps of 0.3 h^2 (h: the mean edge length) and stops when the surface has moved off the input by\n"
-"the noise (a noise-free mesh is left nearly as it is). When the isotropic result's normals vary\n"
-"clearly less than the anisotropic one's, the uniform tensor's fourth-order flow is run too and kept\n"
-"if its normals vary less still; the report's choices say what was chosen.\n"
+"the noise (a noise-free mesh is left nearly as it is). The isotropic and the uniform tensor's\n"
+"fourth-order flow are run too, and the result with the lowest estimated error (Stein's unbiased\n"
+"risk estimate) is kept; the report's choices say what was chosen.\n"
 "\n"
 "options:\n";
 

@@ -131,47 +131,76 @@ inline Stepper_settings with_order(Stepper_settings s, int order)
   return s;
 }
 
-/// Runs the isotropic flow too (`run(tensor, Y, order)` runs from the input and writes Y) and keeps, in X
-/// and `report`, whichever result's normals vary less at the noise level (Tensor_selection.h), or the one
-/// that succeeded; when the isotropic one is kept, the uniform tensor's fourth-order flow's result replaces
-/// it if its normals vary less still. Says which in `choices`. (The user's callback sees every run.)
-template <typename Run>
-void select_smoother(Run& run, const Ghost_layer& layer, Control_matrix& X, Fairing_report& report, std::string& choices)
+/// Runs the isotropic and the uniform fourth-order flow too (`run(tensor, Y, order, start)` runs from
+/// `start` and writes Y) and keeps, in X and `report`, the result at the noise level whose estimated
+/// error is lowest (Tensor_selection.h: each candidate runs once more on the probed input), or the first
+/// that succeeded. `sigma`: the noise's deviation at each vertex (0 where there is none to estimate).
+/// Says which in `choices`. (The user's callback sees every run.)
+template <typename Run, typename Tensor>
+void select_smoother(Run& run, const Tensor& tensor, const Ghost_layer& layer, const Control_matrix& input,
+                     const std::vector<double>& sigma, Control_matrix& X, Fairing_report& report, std::string& choices)
 {
   report.selected_tensor = "anisotropic";
   if(report.succeeded() && report.stop_reason != Stop_reason::NOISE_LEVEL)
   {
-    choices += "; kept the anisotropic result (it did not end at the noise level, where the two are compared)";
+    choices += "; kept the anisotropic result (it did not end at the noise level, where the results are compared)";
     return;
   }
-  Control_matrix Y;
-  Fairing_report isotropic = run(Isotropic_diffusion_tensor(), Y, 2);
-  const double va = report.succeeded() ? normal_variation(*layer.topology, layer.real_faces, X) : 0.0;
-  const double vi = isotropic.succeeded() ? normal_variation(*layer.topology, layer.real_faces, Y) : 0.0;
-  const bool at_noise_level = report.stop_reason == Stop_reason::NOISE_LEVEL && isotropic.stop_reason == Stop_reason::NOISE_LEVEL;
-  const bool keep_isotropic = isotropic.succeeded() && (!report.succeeded() || (at_noise_level && vi < (1 - isotropic_margin) * va));
-  char text[200];
-  std::snprintf(text, sizeof text, "; kept the %s result (total variation of the normals %.4g, %.4g for the other tensor's)",
-                keep_isotropic ? "isotropic" : "anisotropic", keep_isotropic ? vi : va, keep_isotropic ? va : vi);
-  choices += text;
-  if(!keep_isotropic) return;
-  X.swap(Y);
-  report = isotropic;
-  report.selected_tensor = "isotropic";
-  if(isotropic.stop_reason != Stop_reason::NOISE_LEVEL) return;
-  Fairing_report uniform = run(Uniform_diffusion_tensor(), Y, 4);
-  const bool uniform_at_noise_level = uniform.succeeded() && (uniform.stop_reason == Stop_reason::NOISE_LEVEL ||
-                                                              uniform.stop_reason == Stop_reason::NOISE_REMOVED);
-  const double vu = uniform_at_noise_level ? normal_variation(*layer.topology, layer.real_faces, Y) : 0.0;
-  const bool keep_uniform = uniform_at_noise_level && vu < vi;
-  if(uniform_at_noise_level)
-    std::snprintf(text, sizeof text, "; then the %s among the isotropic results (total variation of the uniform "
-                  "fourth-order flow's normals %.4g)", keep_uniform ? "uniform fourth-order flow's" : "cotangent flow's", vu);
-  choices += uniform_at_noise_level ? text : "; the uniform fourth-order flow did not end at the noise level: kept the cotangent one";
-  if(!keep_uniform) return;
-  X.swap(Y);
-  report = uniform;
-  report.selected_tensor = "uniform";
+  struct Candidate { const char* name; Fairing_report report; Control_matrix Y; double risk; };
+  std::vector<Candidate> c(3);
+  c[0].name = "anisotropic"; c[0].report = report; c[0].Y = X;
+  c[1].name = "isotropic"; c[1].report = run(Isotropic_diffusion_tensor(), c[1].Y, 2, input);
+  c[2].name = "uniform"; c[2].report = run(Uniform_diffusion_tensor(), c[2].Y, 4, input);
+  auto at_noise_level = [](const Fairing_report& r) {
+    return r.succeeded() && (r.stop_reason == Stop_reason::NOISE_LEVEL || r.stop_reason == Stop_reason::NOISE_REMOVED);
+  };
+  // the normals of the risk: the isotropic result's, or the first sound one's
+  const Candidate* base = &c[1];
+  for(std::size_t k : { 1, 0, 2 })
+    if(c[k].report.succeeded()) { base = &c[k]; break; }
+  std::size_t kept = 3;   // none yet
+  bool any_risk = false;
+  if(base->report.succeeded())
+  {
+    const Control_matrix N = vertex_normals(*layer.topology, layer.real_faces, base->Y);
+    const std::vector<double> b = risk_probe_values(std::size_t(input.rows()));
+    const Control_matrix probed = probed_input(input, N, sigma, b);
+    for(std::size_t k = 0; k < c.size(); ++k)
+    {
+      if(!at_noise_level(c[k].report)) continue;
+      Control_matrix Yp;
+      const Fairing_report rp = k == 0 ? run(tensor, Yp, c[0].report.flow_order, probed)
+                              : k == 1 ? run(Isotropic_diffusion_tensor(), Yp, 2, probed)
+                                       : run(Uniform_diffusion_tensor(), Yp, 4, probed);
+      if(!rp.succeeded()) continue;
+      c[k].risk = risk_estimate(input, c[k].Y, Yp, N, sigma, b);
+      if(!std::isfinite(c[k].risk)) continue;
+      any_risk = true;
+      if(kept == 3 || c[k].risk < c[kept].risk) kept = k;
+    }
+  }
+  char text[300];
+  if(any_risk)
+  {
+    std::snprintf(text, sizeof text, "; kept the %s result, whose estimated error is the lowest (Stein's unbiased risk estimate "
+                  "per vertex, in units of the noise: anisotropic %.4g, isotropic %.4g, uniform fourth-order %.4g)", c[kept].name,
+                  at_noise_level(c[0].report) ? c[0].risk / double(input.rows()) - 1 : std::nan(""),
+                  at_noise_level(c[1].report) ? c[1].risk / double(input.rows()) - 1 : std::nan(""),
+                  at_noise_level(c[2].report) ? c[2].risk / double(input.rows()) - 1 : std::nan(""));
+    choices += text;
+  }
+  else
+  {
+    // nothing to compare: the first result that succeeded
+    for(std::size_t k = 0; k < c.size() && kept == 3; ++k)
+      if(c[k].report.succeeded()) kept = k;
+    if(kept == 3) return;   // all failed: the anisotropic report says why
+    choices += std::string("; kept the ") + c[kept].name + " result (no other could be compared at the noise level)";
+  }
+  if(kept == 0) return;
+  X.swap(c[kept].Y);
+  report = c[kept].report;
+  report.selected_tensor = c[kept].name;
 }
 
 template <typename TriangleMesh, typename VertexPointMap, typename AttributeMap, typename NamedParameters>
@@ -261,6 +290,9 @@ Fairing_report fair(TriangleMesh& tm, VertexPointMap vpm, AttributeMap attribute
   for(std::size_t i = 0; i < n; ++i) sampled[i] = !constrained[i] && !border[i];
   const Noise_estimate noise(*layer.topology, X, sampled);
   s.noise = &noise;
+  std::vector<double> noise_sigma(n, 0.0);   // the noise's deviation at each vertex, in model units
+  for(std::size_t i = 0; i < n; ++i)
+    if(components.of_vertex[i] >= 0) noise_sigma[i] = noise.relative_sigma() * component_edge[std::size_t(components.of_vertex[i])];
   // the noise stop measures the limit surface, the surface faired, whichever positions are written: a
   // run that writes control points (the tool does, to give exact limit normals) then stops where the
   // limit-surface run stops, and `limit_weight` says how far toward the limit points the latter writes
@@ -305,8 +337,8 @@ Fairing_report fair(TriangleMesh& tm, VertexPointMap vpm, AttributeMap attribute
     Ghosted_patch_cache cache(layer, spec);
     boundary_held = hold(boundary_constrained_vertices(layer, cache, boundary == Boundary_handling::HOLD_BOUNDARY_CURVE));
     setup_seconds = setup.time();
-    auto run = [&](const auto& t, Control_matrix& Y, int order) {
-      Y = input;
+    auto run = [&](const auto& t, Control_matrix& Y, int order, const Control_matrix& start) {
+      Y = start;
       double limit_weight = 1;
       Fairing_report r = run_stepper(cache, ordering, components, component_edge, mean_edge, Y, mode, constrained, border, t, with_order(s, order),
                                      callback, setup_seconds, limit_weight);
@@ -316,26 +348,26 @@ Fairing_report fair(TriangleMesh& tm, VertexPointMap vpm, AttributeMap attribute
         const Control_matrix extended = layer.extend(Y);
         for(std::size_t i = 0; i < n; ++i)
           if(!isolated[i]) vertex_limit_value(*layer.topology, extended, int(i), Y.row(Eigen::Index(i)).data());
-        if(limit_weight < 1) Y.leftCols(3) = input.leftCols(3) + limit_weight * (Y.leftCols(3) - input.leftCols(3));
+        if(limit_weight < 1) Y.leftCols(3) = start.leftCols(3) + limit_weight * (Y.leftCols(3) - start.leftCols(3));
       }
       return r;
     };
-    report = run(tensor, X, s.order);
-    if(select_tensor) select_smoother(run, layer, X, report, choices);
+    report = run(tensor, X, s.order, input);
+    if(select_tensor) select_smoother(run, tensor, layer, input, noise_sigma, X, report, choices);
   }
   else
   {
     Linear_element_cache cache(*layer.topology, layer.real_faces);
     boundary_held = hold(border);
     setup_seconds = setup.time();
-    auto run = [&](const auto& t, Control_matrix& Y, int order) {
-      Y = input;
+    auto run = [&](const auto& t, Control_matrix& Y, int order, const Control_matrix& start) {
+      Y = start;
       double limit_weight = 1;   // the linear element writes its control points: no limit surface to approach
       return run_stepper(cache, ordering, components, component_edge, mean_edge, Y, mode, constrained, border, t, with_order(s, order),
                          callback, setup_seconds, limit_weight);
     };
-    report = run(tensor, X, s.order);
-    if(select_tensor) select_smoother(run, layer, X, report, choices);
+    report = run(tensor, X, s.order, input);
+    if(select_tensor) select_smoother(run, tensor, layer, input, noise_sigma, X, report, choices);
   }
   if(mode == Attribute_mode::COUPLED && A.cols() > 0) X.rightCols(A.cols()) /= attribute_weight;
   report.faces = im.number_of_faces();
