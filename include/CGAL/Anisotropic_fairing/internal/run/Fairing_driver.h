@@ -146,7 +146,7 @@ void select_smoother(Run& run, const Tensor& tensor, const Ghost_layer& layer, c
     choices += "; kept the anisotropic result (it did not end at the noise level, where the results are compared)";
     return;
   }
-  struct Candidate { const char* name; Fairing_report report; Control_matrix Y; double risk; };
+  struct Candidate { const char* name; Fairing_report report; Control_matrix Y; double risk = std::nan(""); };
   std::vector<Candidate> c(3);
   c[0].name = "anisotropic"; c[0].report = report; c[0].Y = X;
   c[1].name = "isotropic"; c[1].report = run(Isotropic_diffusion_tensor(), c[1].Y, 2, input);
