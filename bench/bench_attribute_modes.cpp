@@ -21,16 +21,12 @@
 #include <string>
 #include <vector>
 
+#include "bench_median.h"
+
 typedef CGAL::Exact_predicates_inexact_constructions_kernel K;
 typedef CGAL::Surface_mesh<K::Point_3> Mesh;
 typedef Mesh::Vertex_index Vertex;
 namespace AF = CGAL::Anisotropic_fairing;
-
-double median(std::vector<double> v)
-{
-  std::sort(v.begin(), v.end());
-  return v.empty() ? 0.0 : v[v.size() / 2];
-}
 
 int main(int argc, char** argv)
 {

@@ -22,15 +22,11 @@
 #include <string>
 #include <vector>
 
+#include "bench_median.h"
+
 typedef CGAL::Exact_predicates_inexact_constructions_kernel K;
 typedef CGAL::Surface_mesh<K::Point_3> Mesh;
 namespace AFi = CGAL::Anisotropic_fairing::internal;
-
-double median(std::vector<double> v)
-{
-  std::sort(v.begin(), v.end());
-  return v[v.size() / 2];
-}
 
 int main(int argc, char** argv)
 {

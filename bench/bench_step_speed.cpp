@@ -35,6 +35,7 @@
 
 #include <CGAL/Anisotropic_fairing/anisotropic_fairing.h>
 
+#include "bench_median.h"
 #include "bench_mesh_measures.h"
 #include <CGAL/Anisotropic_fairing/internal/assembly/Fem_assembly.h>
 #include <CGAL/Anisotropic_fairing/internal/element/Ghosted_patch_cache.h>
@@ -67,13 +68,6 @@ namespace AF = CGAL::Anisotropic_fairing;
 namespace PMP = CGAL::Polygon_mesh_processing;
 
 static const double pi = 3.14159265358979323846;
-
-double median(std::vector<double> v)
-{
-  if(v.empty()) return std::nan("");
-  std::sort(v.begin(), v.end());
-  return v.size() % 2 ? v[v.size() / 2] : 0.5 * (v[v.size() / 2 - 1] + v[v.size() / 2]);
-}
 
 double mean(const std::vector<double>& v)
 {

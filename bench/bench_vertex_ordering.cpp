@@ -32,6 +32,8 @@
 #include <string>
 #include <vector>
 
+#include "bench_median.h"
+
 #ifndef AF_SOURCE_DIR
 #define AF_SOURCE_DIR "."
 #endif
@@ -40,12 +42,6 @@ typedef CGAL::Exact_predicates_inexact_constructions_kernel K;
 typedef CGAL::Surface_mesh<K::Point_3> Mesh;
 namespace AF = CGAL::Anisotropic_fairing;
 namespace AFi = CGAL::Anisotropic_fairing::internal;
-
-static double median(std::vector<double> v)
-{
-  std::sort(v.begin(), v.end());
-  return v.empty() ? std::nan("") : v.size() % 2 ? v[v.size() / 2] : 0.5 * (v[v.size() / 2 - 1] + v[v.size() / 2]);
-}
 
 // the user's order: the identity
 static AFi::Locality_ordering identity_ordering(const AFi::Ghost_layer& gl)

@@ -34,7 +34,8 @@ struct Prefilter_solver
 };
 
 /// M, L: value arrays over `pattern` (isotropic); A: a matrix of the structure of `block.matrix`, whose
-/// values are overwritten. dX: the displacement of the free rows' first `columns` columns.
+/// values are overwritten. dX: the displacement of the free rows' first `columns` columns; when it has
+/// their size on entry, conjugate gradients start from it (the last step's M_eps is a close guess).
 inline Solve_statistics prefilter_step(const Eigen::SparseMatrix<double>& pattern, const std::vector<double>& M,
                                        const std::vector<double>& L, const std::vector<double>& eps,
                                        const Free_block& block, Eigen::SparseMatrix<double>& A,
@@ -50,7 +51,7 @@ inline Solve_statistics prefilter_step(const Eigen::SparseMatrix<double>& patter
   }
   const Eigen::Index nfree = Eigen::Index(free.size());
   Control_matrix B(nfree, columns);
-  dX = Control_matrix::Zero(nfree, columns);
+  if(dX.rows() != nfree || dX.cols() != columns) dX = Control_matrix::Zero(nfree, columns);
   for(Eigen::Index i = 0; i < nfree; ++i)
   {
     const int row = free[std::size_t(i)];

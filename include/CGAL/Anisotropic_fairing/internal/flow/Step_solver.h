@@ -54,7 +54,7 @@ public:
       if(form)
       {
         fourth_order_->set_operator(M, L, mass_weight);
-        fourth_order_->fill_matrix(u.tau, u.omega, factor, sys, unknown_scale, A4_);
+        fourth_order_->set_coefficients(u.tau, u.omega, factor, sys, unknown_scale);
       }
       fourth_order_->residual(u.tau, u.omega, X, X0, factor / sys, R_);
     }
@@ -69,7 +69,11 @@ public:
       for(Eigen::Index i = 0; i < B_.rows(); ++i) B_.row(i) /= std::pow(unknown_scale[std::size_t(block_.free[std::size_t(i)])], 3);
     CGAL::Real_timer clock;
     clock.start();
-    const Solve_statistics sol = choice_.solve(fourth_order_ ? A4_ : A_, B_, dX_, cg_, direct);   // CG warm-started from the last dX
+    // CG warm-started from the last dX
+    Fourth_order_system* q = fourth_order_.get();
+    const Solve_statistics sol = !q ? choice_.solve(A_, B_, dX_, cg_, direct)
+      : choice_.solve([q](const Control_matrix& P, Control_matrix& AP) { q->product(P, AP); }, q->diagonal(),
+                      [q]() -> const Eigen::SparseMatrix<double>& { return q->matrix(); }, B_, dX_, cg_, direct);
     solve_seconds_ = clock.time();
     choice_.record(direct, sol, solve_seconds_);
     scaled_ = !unknown_scale.empty();
@@ -89,7 +93,7 @@ public:
 private:
   const Eigen::SparseMatrix<double>& pattern_;
   const Free_block& block_;
-  Eigen::SparseMatrix<double> A_, A4_;   // the system of a second-, a fourth-order step
+  Eigen::SparseMatrix<double> A_;   // the system of a second-order step
   std::unique_ptr<Fourth_order_system> fourth_order_;
   Block_conjugate_gradient cg_;
   Solver_choice choice_;

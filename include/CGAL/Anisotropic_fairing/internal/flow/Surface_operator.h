@@ -57,9 +57,10 @@ public:
       std::vector<double> Mi, Li;
       assembler_.assemble(X, metric_columns, Isotropic_diffusion_tensor(), Mi, Li);
       if(prefilter_A_.rows() != block_->matrix.rows()) prefilter_A_ = block_->matrix;
-      Control_matrix dX;
+      Control_matrix& dX = prefilter_dX_;   // warm start: the last M_eps's displacement
       const Solve_statistics sol = prefilter_step(assembler_.pattern(), Mi, Li, eps_, *block_, prefilter_A_, X, metric_columns,
                                                   prefilter_solver_, dX);
+      if(!sol.ok) dX.resize(0, 0);
       if(!sol.ok || !dX.allFinite())
         error_ = "the prefiltered surface M_eps could not be computed: " + (sol.ok ? std::string("not finite") : sol.message);
       else
@@ -103,7 +104,7 @@ private:
   const Free_block* block_ = nullptr;
   Prefilter_solver prefilter_solver_;
   Eigen::SparseMatrix<double> prefilter_A_;
-  Control_matrix prefiltered_X_, saved_prefiltered_X_;
+  Control_matrix prefiltered_X_, saved_prefiltered_X_, prefilter_dX_;
   bool prefiltered_valid_ = false, saved_prefiltered_valid_ = false;
   std::string error_;
 };

@@ -8,10 +8,14 @@
 // so a run that removes the noise rounds the shape less. Q couples the 6-ring of a vertex (L the 3-ring).
 // The lumped inverse keeps Q sparse; D_i is the integral of the basis function of i (the Loop basis is a
 // partition of unity), positive on a surface. M carries the local time scale as in Step_system.h.
+// Conjugate gradients use the system through its product, M x and L (D^-1 (L x)) on the 3-ring pattern:
+// three sparse products cost less than one with the 6-ring Q, and Q is never formed unless the system is
+// factorised (forming it took 80% of a step).
 
 #ifndef CGAL_ANISOTROPIC_FAIRING_INTERNAL_SOLVE_FOURTH_ORDER_SYSTEM_H
 #define CGAL_ANISOTROPIC_FAIRING_INTERNAL_SOLVE_FOURTH_ORDER_SYSTEM_H
 
+#include <CGAL/Anisotropic_fairing/internal/solve/Spd_solvers.h>
 #include <CGAL/Anisotropic_fairing/internal/types/Control_matrix.h>
 
 #include <Eigen/SparseCore>
@@ -30,7 +34,7 @@ class Fourth_order_system
 public:
   /// `pattern`: the n x n symmetric pattern of M and L; `free`: the unknowns' rows (increasing).
   Fourth_order_system(const Eigen::SparseMatrix<double>& pattern, const std::vector<int>& free)
-    : pattern_(pattern), select_(Eigen::Index(free.size()), pattern.rows()), is_free_(std::size_t(pattern.rows()), false)
+    : pattern_(pattern), select_(Eigen::Index(free.size()), pattern.rows()), is_free_(std::size_t(pattern.rows()), false), free_(free)
   {
     for(int i : free) is_free_[std::size_t(i)] = true;
     std::vector<Eigen::Triplet<double>> t;
@@ -39,7 +43,7 @@ public:
     select_.setFromTriplets(t.begin(), t.end());
   }
 
-  /// Forms M (with the local time scale `mass_weight`, empty: none), Q and D from the pattern's values.
+  /// Forms M (with the local time scale `mass_weight`, empty: none), L and D^-1 from the pattern's values.
   void set_operator(const std::vector<double>& M, const std::vector<double>& L, const std::vector<double>& mass_weight)
   {
     M_ = pattern_;
@@ -60,26 +64,76 @@ public:
     // a vertex on no surface (held, isolated) has no mass and no Laplacian row: any positive D will do
     const double largest = d.size() > 0 ? d.maxCoeff() : 1.0;
     for(Eigen::Index i = 0; i < n; ++i) d[i] = is_free_[std::size_t(i)] ? 1 / std::max(d[i], 1e-12 * largest) : 0.0;
-    Q_ = L_ * d.asDiagonal() * L_;
+    inverse_mass_ = d;
+    // the diagonals of M and of Q: Q_ii = sum_j L_ij^2 / D_j (L symmetric)
+    m_diagonal_ = Eigen::VectorXd::Zero(n);
+    q_diagonal_ = Eigen::VectorXd::Zero(n);
+    for(Eigen::Index j = 0; j < n; ++j)
+      for(int p = outer[j]; p < outer[j + 1]; ++p)
+      {
+        const double l = L_.valuePtr()[p];
+        q_diagonal_[inner[p]] += l * l * d[j];
+        if(inner[p] == j) m_diagonal_[j] = M_.valuePtr()[p];
+      }
+    Q_formed_ = A_formed_ = false;
   }
 
-  /// A (free x free) = (((1 + f tau_i w_i) M + f tau_i Q) restricted to the free rows) / sys, each row and
-  /// column i in units of unknown_scale[i] (empty: none), as fill_step_matrix does for the second order.
-  void fill_matrix(const std::vector<double>& tau, const std::vector<double>& omega, double f, double sys,
-                   const std::vector<double>& unknown_scale, Eigen::SparseMatrix<double>& A) const
+  /// The system's coefficients: A (free x free) = (((1 + f tau_i w_i) M + f tau_i Q) restricted to the free
+  /// rows) / sys, each row and column i in units of unknown_scale[i] (empty: none), as fill_step_matrix does
+  /// for the second order. tau, w and the unit are constant within a component, and M and Q have no entry
+  /// between two, so A is symmetric.
+  void set_coefficients(const std::vector<double>& tau, const std::vector<double>& omega, double f, double sys,
+                        const std::vector<double>& unknown_scale)
   {
     const Eigen::Index n = pattern_.rows();
-    Eigen::VectorXd a(n), b(n);
+    a_.resize(n);
+    b_.resize(n);
     for(Eigen::Index i = 0; i < n; ++i)
     {
       const double t = f * tau[std::size_t(i)];
       const double u = unknown_scale.empty() ? 1.0 : unknown_scale[std::size_t(i)];
-      a[i] = (1 + t * omega[std::size_t(i)]) / (sys * u * u);
-      b[i] = t / (sys * u * u);
+      a_[i] = (1 + t * omega[std::size_t(i)]) / (sys * u * u);
+      b_[i] = t / (sys * u * u);
     }
-    // tau, w and the unit are constant within a component, and M and Q have no entry between two
-    const Eigen::SparseMatrix<double> S = a.asDiagonal() * M_ + b.asDiagonal() * Q_;
-    A = select_ * S * select_.transpose();
+    A_formed_ = false;
+    diagonal_.resize(Eigen::Index(free_.size()));
+    for(std::size_t k = 0; k < free_.size(); ++k)
+    {
+      const int i = free_[k];
+      diagonal_[Eigen::Index(k)] = a_[i] * m_diagonal_[i] + b_[i] * q_diagonal_[i];
+    }
+  }
+
+  /// The diagonal of A, for the preconditioner.
+  const Eigen::VectorXd& diagonal() const { return diagonal_; }
+
+  /// Y = A X over the free rows, without forming Q.
+  void product(const Control_matrix& X, Control_matrix& Y) const
+  {
+    const Eigen::Index n = pattern_.rows(), c = X.cols();
+    full_.setZero(n, c);
+    for(std::size_t k = 0; k < free_.size(); ++k) full_.row(free_[k]) = X.row(Eigen::Index(k));
+    symmetric_product(M_, full_, mass_);
+    symmetric_product(L_, full_, laplace_);
+    for(Eigen::Index i = 0; i < n; ++i) laplace_.row(i) *= inverse_mass_[i];
+    symmetric_product(L_, laplace_, full_);   // full_ now holds Q X
+    Y.resize(Eigen::Index(free_.size()), c);
+    for(std::size_t k = 0; k < free_.size(); ++k)
+    {
+      const int i = free_[k];
+      Y.row(Eigen::Index(k)) = a_[i] * mass_.row(i) + b_[i] * full_.row(i);
+    }
+  }
+
+  /// A formed, for a factorisation (once per operator and coefficients).
+  const Eigen::SparseMatrix<double>& matrix()
+  {
+    if(A_formed_) return A_;
+    if(!Q_formed_) { Q_ = L_ * inverse_mass_.asDiagonal() * L_; Q_formed_ = true; }
+    A_formed_ = true;
+    const Eigen::SparseMatrix<double> S = a_.asDiagonal() * M_ + b_.asDiagonal() * Q_;
+    A_ = select_ * S * select_.transpose();
+    return A_;
   }
 
   /// R = f tau_i (w_i M (X0 - X) - Q X)_i for all rows.
@@ -88,14 +142,23 @@ public:
   {
     Eigen::VectorXd w(X.rows()), t(X.rows());
     for(Eigen::Index i = 0; i < X.rows(); ++i) { w[i] = omega[std::size_t(i)]; t[i] = f * tau[std::size_t(i)]; }
-    R = t.asDiagonal() * (w.asDiagonal() * (M_ * (X0 - X)) - Q_ * X);
+    symmetric_product(L_, X, laplace_);
+    for(Eigen::Index i = 0; i < X.rows(); ++i) laplace_.row(i) *= inverse_mass_[i];
+    symmetric_product(L_, laplace_, full_);   // Q X
+    const Control_matrix D = X0 - X;
+    symmetric_product(M_, D, mass_);
+    R = t.asDiagonal() * (w.asDiagonal() * mass_ - full_);
   }
 
 private:
   const Eigen::SparseMatrix<double>& pattern_;
   Eigen::SparseMatrix<double> select_;
   std::vector<bool> is_free_;
-  Eigen::SparseMatrix<double> M_, L_, Q_;
+  std::vector<int> free_;
+  Eigen::SparseMatrix<double> M_, L_, Q_, A_;
+  bool Q_formed_ = false, A_formed_ = false;
+  Eigen::VectorXd inverse_mass_, m_diagonal_, q_diagonal_, a_, b_, diagonal_;
+  mutable Control_matrix full_, mass_, laplace_;
 };
 
 } // namespace internal

@@ -55,15 +55,31 @@ public:
   Solve_statistics solve(const Eigen::SparseMatrix<double>& A, const Control_matrix& B, Control_matrix& X,
                          Block_conjugate_gradient& cg, bool& direct)
   {
+    Eigen::VectorXd diagonal;
+    if(!factorise_now())
+    {
+      diagonal.resize(A.rows());
+      for(Eigen::Index i = 0; i < A.rows(); ++i) diagonal[i] = A.coeff(i, i);
+    }
+    return solve([&A](const Control_matrix& P, Control_matrix& AP) { symmetric_product(A, P, AP); }, diagonal,
+                 [&A]() -> const Eigen::SparseMatrix<double>& { return A; }, B, X, cg, direct);
+  }
+
+  /// The same for a matrix that conjugate gradients use through its product (`product(P, AP)`: AP = A P)
+  /// and diagonal, and that `matrix()` forms only when it is to be factorised.
+  template <typename Product, typename Matrix>
+  Solve_statistics solve(const Product& product, const Eigen::VectorXd& diagonal, const Matrix& matrix,
+                         const Control_matrix& B, Control_matrix& X, Block_conjugate_gradient& cg, bool& direct)
+  {
     direct = factorise_now();
-    if(direct) return direct_solver().solve(A, B, X);
+    if(direct) return direct_solver().solve(matrix(), B, X);
     start_ = X;
-    Solve_statistics sol = cg.solve(A, B, X);
+    Solve_statistics sol = cg.solve(product, diagonal, B, X);
     if(!sol.ok && may_fall_back())
     {
       X = start_;
       direct = true;
-      sol = direct_solver().solve(A, B, X);
+      sol = direct_solver().solve(matrix(), B, X);
     }
     return sol;
   }

@@ -22,6 +22,7 @@
 
 #include <algorithm>
 #include <chrono>
+#include <cstddef>
 #include <cmath>
 #include <functional>
 #include <memory>
@@ -42,6 +43,26 @@ struct Solve_statistics
   std::string message;
 };
 
+/// Rows [begin, end) of Y = A X (A compressed, stored in full, X and Y row-major with K columns). The
+/// sums stay in registers: the product is the solvers' main cost, and writing through Y's row at every
+/// non-zero (which may alias X as far as the compiler knows) made it about twice as slow.
+template <int K>
+void sparse_rows_product(const int* outer, const int* rows, const double* values, const double* X, double* Y,
+                         Eigen::Index begin, Eigen::Index end)
+{
+  for(Eigen::Index i = begin; i < end; ++i)
+  {
+    double sum[K] = {};
+    for(int p = outer[i]; p < outer[i + 1]; ++p)
+    {
+      const double a = values[p];
+      const double* x = X + std::ptrdiff_t(rows[p]) * K;
+      for(int c = 0; c < K; ++c) sum[c] += a * x[c];
+    }
+    for(int c = 0; c < K; ++c) Y[i * K + c] = sum[c];
+  }
+}
+
 /// Y = A X for a symmetric matrix stored in full (column j = row j), X and Y with one row per unknown.
 inline void symmetric_product(const Eigen::SparseMatrix<double>& A, const Control_matrix& X, Control_matrix& Y)
 {
@@ -51,6 +72,15 @@ inline void symmetric_product(const Eigen::SparseMatrix<double>& A, const Contro
   const double* values = A.valuePtr();
   const Eigen::Index k = X.cols();
   auto range = [&](Eigen::Index begin, Eigen::Index end) {
+    switch(k)
+    {
+    case 1: sparse_rows_product<1>(outer, rows, values, X.data(), Y.data(), begin, end); return;
+    case 2: sparse_rows_product<2>(outer, rows, values, X.data(), Y.data(), begin, end); return;
+    case 3: sparse_rows_product<3>(outer, rows, values, X.data(), Y.data(), begin, end); return;
+    case 4: sparse_rows_product<4>(outer, rows, values, X.data(), Y.data(), begin, end); return;
+    case 6: sparse_rows_product<6>(outer, rows, values, X.data(), Y.data(), begin, end); return;
+    default: break;
+    }
     for(Eigen::Index i = begin; i < end; ++i)
     {
       double* y = Y.row(i).data();
@@ -84,12 +114,21 @@ public:
 
   Solve_statistics solve(const Eigen::SparseMatrix<double>& A, const Control_matrix& B, Control_matrix& X)
   {
+    Eigen::VectorXd diagonal(B.rows());
+    for(Eigen::Index i = 0; i < B.rows(); ++i) diagonal[i] = A.coeff(i, i);
+    return solve([&A](const Control_matrix& P, Control_matrix& AP) { symmetric_product(A, P, AP); }, diagonal, B, X);
+  }
+
+  /// The same for a matrix given by its product, `product(P, AP)` setting AP = A P, and its diagonal.
+  template <typename Product>
+  Solve_statistics solve(const Product& product, const Eigen::VectorXd& diagonal, const Control_matrix& B, Control_matrix& X)
+  {
     Solve_statistics st;
     const Eigen::Index n = B.rows(), k = B.cols();
     Eigen::VectorXd inv_diag(n);
     for(Eigen::Index i = 0; i < n; ++i)
     {
-      const double d = A.coeff(i, i);
+      const double d = diagonal[i];
       if(!(d > 0))
       {
         st.ok = false;
@@ -98,17 +137,18 @@ public:
       }
       inv_diag[i] = 1.0 / d;
     }
-    symmetric_product(A, X, AP_);
+    product(X, AP_);
     R_ = B - AP_;
-    Z_ = inv_diag.asDiagonal() * R_;
-    P_ = Z_;
+    P_ = inv_diag.asDiagonal() * R_;
     const std::size_t kk = std::size_t(k);
     std::vector<double> bnorm(kk), rz(kk), rnorm(kk);
-    std::vector<bool> active(kk, true);
+    std::vector<char> active(kk, 1);
+    alpha_.assign(kk, 0.0);
+    beta_.assign(kk, 0.0);
     for(Eigen::Index c = 0; c < k; ++c)
     {
       bnorm[std::size_t(c)] = B.col(c).norm();
-      rz[std::size_t(c)] = R_.col(c).dot(Z_.col(c));
+      rz[std::size_t(c)] = R_.col(c).dot(P_.col(c));
       rnorm[std::size_t(c)] = R_.col(c).norm();
     }
     auto converged = [&](Eigen::Index c) {
@@ -119,7 +159,7 @@ public:
     {
       bool any = false;
       for(Eigen::Index c = 0; c < k; ++c)
-        if(active[std::size_t(c)] && converged(c)) active[std::size_t(c)] = false;
+        if(active[std::size_t(c)] && converged(c)) active[std::size_t(c)] = 0;
         else any = any || active[std::size_t(c)];
       if(!any) break;
       if(it == max_iterations_)
@@ -129,37 +169,66 @@ public:
         break;
       }
       ++it;
-      symmetric_product(A, P_, AP_);
+      product(P_, AP_);
+      // the vector work in row chunks on every core, fused into two passes over the rows
+      const double* p = P_.data();
+      const double* ap = AP_.data();
+      chunked_sums(n, k, [&](Eigen::Index i, double* sums) {
+        for(Eigen::Index c = 0; c < k; ++c) sums[c] += p[i * k + c] * ap[i * k + c];
+      }, pap_);
       for(Eigen::Index c = 0; c < k; ++c)
       {
-        if(!active[std::size_t(c)]) continue;
-        const double pap = P_.col(c).dot(AP_.col(c));
-        if(!(pap > 0) || !std::isfinite(pap))
+        const std::size_t cc = std::size_t(c);
+        alpha_[cc] = 0;
+        if(!active[cc]) continue;
+        if(!(pap_[cc] > 0) || !std::isfinite(pap_[cc]))
         {
           st.ok = false;
           st.message = "conjugate gradients broke down (the matrix is not positive definite)";
-          return finish(st, A, B, X, bnorm, it);
+          return finish(st, product, B, X, bnorm, it);
         }
-        const double alpha = rz[std::size_t(c)] / pap;
-        X.col(c) += alpha * P_.col(c);
-        R_.col(c) -= alpha * AP_.col(c);
-        Z_.col(c) = inv_diag.cwiseProduct(R_.col(c));
-        const double rz_new = R_.col(c).dot(Z_.col(c));
-        P_.col(c) = Z_.col(c) + (rz_new / rz[std::size_t(c)]) * P_.col(c);
-        rz[std::size_t(c)] = rz_new;
-        rnorm[std::size_t(c)] = R_.col(c).norm();
+        alpha_[cc] = rz[cc] / pap_[cc];
       }
+      double* x = X.data();
+      double* r = R_.data();
+      const double* id = inv_diag.data();
+      chunked_sums(n, 2 * k, [&](Eigen::Index i, double* sums) {   // sums: r.z, then r.r, per column
+        for(Eigen::Index c = 0; c < k; ++c)
+        {
+          if(!active[std::size_t(c)]) continue;
+          const Eigen::Index e = i * k + c;
+          x[e] += alpha_[std::size_t(c)] * p[e];
+          r[e] -= alpha_[std::size_t(c)] * ap[e];
+          sums[c] += r[e] * r[e] * id[i];
+          sums[k + c] += r[e] * r[e];
+        }
+      }, sums_);
+      for(Eigen::Index c = 0; c < k; ++c)
+      {
+        const std::size_t cc = std::size_t(c);
+        beta_[cc] = active[cc] ? sums_[cc] / rz[cc] : 0.0;
+        if(!active[cc]) continue;
+        rz[cc] = sums_[cc];
+        rnorm[cc] = std::sqrt(sums_[std::size_t(k) + cc]);
+      }
+      double* pw = P_.data();
+      for_rows(n, [&](Eigen::Index begin, Eigen::Index end) {
+        for(Eigen::Index i = begin; i < end; ++i)
+          for(Eigen::Index c = 0; c < k; ++c)
+            if(active[std::size_t(c)]) pw[i * k + c] = id[i] * r[i * k + c] + beta_[std::size_t(c)] * pw[i * k + c];
+      });
     }
-    return finish(st, A, B, X, bnorm, it);
+    return finish(st, product, B, X, bnorm, it);
   }
 
 private:
   // the reported residual is recomputed from scratch, not the recurrence's
-  Solve_statistics& finish(Solve_statistics& st, const Eigen::SparseMatrix<double>& A, const Control_matrix& B,
+  template <typename Product>
+  Solve_statistics& finish(Solve_statistics& st, const Product& product, const Control_matrix& B,
                            const Control_matrix& X, const std::vector<double>& bnorm, int it)
   {
     st.iterations = it;
-    symmetric_product(A, X, AP_);
+    product(X, AP_);
     for(Eigen::Index c = 0; c < B.cols(); ++c)
     {
       const double r = (B.col(c) - AP_.col(c)).norm();
@@ -168,9 +237,51 @@ private:
     return st;
   }
 
+  // f(begin, end) over all rows, in chunks on every core for a long vector
+  template <typename F>
+  static void for_rows(Eigen::Index n, const F& f)
+  {
+#ifdef CGAL_LINKED_WITH_TBB
+    if(n > 20000)
+    {
+      tbb::parallel_for(tbb::blocked_range<Eigen::Index>(0, n, 4096),
+                        [&](const tbb::blocked_range<Eigen::Index>& r) { f(r.begin(), r.end()); });
+      return;
+    }
+#endif
+    f(0, n);
+  }
+
+  // out[w] = sum over rows i of what row(i, sums) adds to sums[w], w < width. Each fixed chunk of rows has
+  // its own partial sums, added in chunk order: the result does not depend on the number of threads.
+  template <typename Row>
+  void chunked_sums(Eigen::Index n, Eigen::Index width, const Row& row, std::vector<double>& out)
+  {
+    const Eigen::Index chunk = 4096, chunks = (n + chunk - 1) / chunk;
+    partial_.assign(std::size_t(chunks * width), 0.0);
+    auto run = [&](Eigen::Index first, Eigen::Index last) {
+      for(Eigen::Index q = first; q < last; ++q)
+      {
+        double* sums = partial_.data() + q * width;
+        for(Eigen::Index i = q * chunk; i < std::min(n, (q + 1) * chunk); ++i) row(i, sums);
+      }
+    };
+#ifdef CGAL_LINKED_WITH_TBB
+    if(chunks > 4)
+      tbb::parallel_for(tbb::blocked_range<Eigen::Index>(0, chunks, 1),
+                        [&](const tbb::blocked_range<Eigen::Index>& r) { run(r.begin(), r.end()); });
+    else
+#endif
+      run(0, chunks);
+    out.assign(std::size_t(width), 0.0);
+    for(Eigen::Index q = 0; q < chunks; ++q)
+      for(Eigen::Index w = 0; w < width; ++w) out[std::size_t(w)] += partial_[std::size_t(q * width + w)];
+  }
+
   double tolerance_;
   int max_iterations_;
-  Control_matrix R_, Z_, P_, AP_;
+  Control_matrix R_, P_, AP_;
+  std::vector<double> alpha_, beta_, pap_, sums_, partial_;
 };
 
 /// A factorising solver of the symmetric positive definite system (the matrix stored in full): the
