@@ -182,8 +182,10 @@ int run(const Options& o, Run_record& r)
   const bool quiet = o.quiet;
   std::size_t last_step = 0;
   auto progress = [max_steps, quiet, &last_step](const AF::Fairing_step& s) {
-    // with automatic parameters the library also runs the isotropic flow, to keep the better result
-    if(!quiet && s.step <= last_step) std::fprintf(stderr, "the isotropic flow, for comparison:\n");
+    // with automatic parameters the library also runs the isotropic and the uniform fourth-order flow, and
+    // each flow once more on a perturbed copy of the input (to estimate its error), to keep the best result
+    if(!quiet && s.step <= last_step)
+      std::fprintf(stderr, "another run of the comparison (anisotropic, isotropic, uniform fourth-order flow; then each on a perturbed copy):\n");
     last_step = s.step;
     if(!quiet)
       std::fprintf(stderr, "step %zu/%u  t=%.6g  area=%.6g  int|H|^2=%.6g  max disp=%.6g  %d %s  %.3fs+%.3fs\n",

@@ -11,26 +11,35 @@
 
 #include <Eigen/SparseCore>
 
+#ifdef CGAL_LINKED_WITH_TBB
+#include <tbb/parallel_for.h>
+#include <tbb/task_arena.h>
+#endif
+
 #include <algorithm>
+#include <cstddef>
 #include <vector>
 
 namespace CGAL {
 namespace Anisotropic_fairing {
 namespace internal {
 
-/// Returns an n x n compressed, symmetric matrix whose structural non-zeros are all pairs of
-/// vertices sharing a triangle ring, with zero values.
-/// A compressed column-major matrix with the given structure and zero values.
+/// A compressed column-major matrix with the given structure and zero values, written in place (no
+/// temporary copy: at a million triangles the pattern holds 20 million entries).
 inline Eigen::SparseMatrix<double> sparse_matrix_from_pattern(Eigen::Index rows, Eigen::Index cols,
                                                              const std::vector<int>& outer, const std::vector<int>& inner)
 {
-  std::vector<double> zeros(inner.size(), 0.0);
-  const Eigen::Map<const Eigen::SparseMatrix<double>> view(rows, cols, Eigen::Index(inner.size()), outer.data(),
-                                                          inner.data(), zeros.data());
-  return Eigen::SparseMatrix<double>(view);
+  Eigen::SparseMatrix<double> A(rows, cols);
+  A.data().resize(Eigen::Index(inner.size()));
+  std::copy(outer.begin(), outer.end(), A.outerIndexPtr());
+  std::copy(inner.begin(), inner.end(), A.innerIndexPtr());
+  std::fill(A.valuePtr(), A.valuePtr() + inner.size(), 0.0);
+  return A;
 }
 
-/// `Cache` is any element cache (Patch_cache, Linear_element_cache) exposing faces and their rings.
+/// Returns an n x n compressed, symmetric matrix whose structural non-zeros are all pairs of
+/// vertices sharing a triangle ring, with zero values. `Cache` is any element cache (Patch_cache,
+/// Linear_element_cache) exposing faces and their rings.
 template <typename Cache>
 Eigen::SparseMatrix<double> ring_sparsity_pattern(const Cache& cache, std::size_t n)
 {
@@ -44,24 +53,47 @@ Eigen::SparseMatrix<double> ring_sparsity_pattern(const Cache& cache, std::size_
   for(std::size_t f = 0; f < cache.number_of_faces(); ++f)
     for(int k = 0; k < cache.ring_size(f); ++k) faces_of[fill[cache.ring(f)[k]]++] = int(f);
 
-  // column j: every vertex of every ring that contains j (sorted), written straight into CSC arrays
-  std::vector<int> outer(n + 1, 0), inner, mark(n, -1);
-  inner.reserve(n * 40);
-  for(std::size_t j = 0; j < n; ++j)
-  {
-    const std::size_t begin = inner.size();
+  // column j: every vertex of every ring that contains j (sorted). Two passes over the columns, in
+  // blocks on every core: count each column, then write it at its offset.
+  std::vector<int> outer(n + 1, 0), inner;
+  auto column = [&](std::size_t j, std::vector<int>& mark, std::vector<int>& rows) {
+    rows.clear();
     for(std::size_t p = start[j]; p < start[j + 1]; ++p)
     {
       const int f = faces_of[p];
       for(int k = 0; k < cache.ring_size(std::size_t(f)); ++k)
       {
         const int i = cache.ring(std::size_t(f))[k];
-        if(mark[std::size_t(i)] != int(j)) { mark[std::size_t(i)] = int(j); inner.push_back(i); }
+        if(mark[std::size_t(i)] != int(j)) { mark[std::size_t(i)] = int(j); rows.push_back(i); }
       }
     }
-    std::sort(inner.begin() + std::ptrdiff_t(begin), inner.end());
-    outer[j + 1] = int(inner.size());
-  }
+  };
+  auto for_blocks = [n](const auto& body) {   // body(first, last) over a few blocks of columns (each has its own marks)
+#ifdef CGAL_LINKED_WITH_TBB
+    const std::size_t blocks = 4 * std::size_t(std::max(1, tbb::this_task_arena::max_concurrency()));
+    if(n > 20000)
+    {
+      tbb::parallel_for(std::size_t(0), blocks, [&](std::size_t b) { body(n * b / blocks, n * (b + 1) / blocks); });
+      return;
+    }
+#endif
+    body(std::size_t(0), n);
+  };
+  for_blocks([&](std::size_t first, std::size_t last) {
+    std::vector<int> mark(n, -1), rows;
+    for(std::size_t j = first; j < last; ++j) { column(j, mark, rows); outer[j + 1] = int(rows.size()); }
+  });
+  for(std::size_t j = 0; j < n; ++j) outer[j + 1] += outer[j];
+  inner.resize(std::size_t(outer[n]));
+  for_blocks([&](std::size_t first, std::size_t last) {
+    std::vector<int> mark(n, -1), rows;
+    for(std::size_t j = first; j < last; ++j)
+    {
+      column(j, mark, rows);
+      std::sort(rows.begin(), rows.end());
+      std::copy(rows.begin(), rows.end(), inner.begin() + outer[j]);
+    }
+  });
   return sparse_matrix_from_pattern(Eigen::Index(n), Eigen::Index(n), outer, inner);
 }
 

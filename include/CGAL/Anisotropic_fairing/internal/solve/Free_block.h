@@ -37,6 +37,7 @@ struct Free_block
     std::vector<int> outer(1, 0), inner;
     inner.reserve(std::size_t(pattern.nonZeros()));
     source.reserve(std::size_t(pattern.nonZeros()));
+    entry_column.reserve(std::size_t(pattern.nonZeros()));
     for(std::size_t k = 0; k < free.size(); ++k)
     {
       for(int p = pattern.outerIndexPtr()[free[k]]; p < pattern.outerIndexPtr()[free[k] + 1]; ++p)
