@@ -21,6 +21,11 @@
 #include <CGAL/Anisotropic_fairing/internal/types/Vector3.h>
 #include <CGAL/Anisotropic_fairing/internal/mesh/Triangle_topology.h>
 
+#ifdef CGAL_LINKED_WITH_TBB
+#include <tbb/blocked_range.h>
+#include <tbb/parallel_for.h>
+#endif
+
 #include <algorithm>
 #include <cmath>
 #include <utility>
@@ -50,66 +55,75 @@ public:
     const std::size_t n = std::size_t(X.rows());
     normal_.assign(3 * n, 0.0);
     edge_.assign(n, 0.0);
-    has_height_.assign(n, false);
+    has_height_.assign(n, 0);
     std::vector<double> height(n, 0.0);
-    std::vector<int> ring;
-    for(std::size_t i = 0; i < n; ++i)
-    {
-      if(!usable[i] || topo.outgoing(int(i)) < 0) continue;
-      ring.clear();
-      topo.neighbours_ccw(topo.outgoing(int(i)), std::back_inserter(ring));
-      double c[3] = { 0, 0, 0 }, nrm[3] = { 0, 0, 0 }, h = 0;
-      for(int j : ring)
-        for(int a = 0; a < 3; ++a) c[a] += X(j, a) / double(ring.size());
-      for(std::size_t k = 0; k < ring.size(); ++k)
+    // each vertex on its own (in blocks on every core): its ring's normal, edge length and its height
+    for_vertex_blocks(n, [&](std::size_t first, std::size_t last) {
+      std::vector<int> ring;
+      for(std::size_t i = first; i < last; ++i)
       {
-        const int p = ring[k], q = ring[(k + 1) % ring.size()];
-        const double u[3] = { X(p, 0) - c[0], X(p, 1) - c[1], X(p, 2) - c[2] };
-        const double w[3] = { X(q, 0) - c[0], X(q, 1) - c[1], X(q, 2) - c[2] };
-        vec3(nrm) += vec3(u).cross(vec3(w));
-        h += (X.row(p).head(3) - X.row(Eigen::Index(i)).head(3)).norm();
+        if(!usable[i] || topo.outgoing(int(i)) < 0) continue;
+        ring.clear();
+        topo.neighbours_ccw(topo.outgoing(int(i)), std::back_inserter(ring));
+        double c[3] = { 0, 0, 0 }, nrm[3] = { 0, 0, 0 }, h = 0;
+        for(int j : ring)
+          for(int a = 0; a < 3; ++a) c[a] += X(j, a) / double(ring.size());
+        for(std::size_t k = 0; k < ring.size(); ++k)
+        {
+          const int p = ring[k], q = ring[(k + 1) % ring.size()];
+          const double u[3] = { X(p, 0) - c[0], X(p, 1) - c[1], X(p, 2) - c[2] };
+          const double w[3] = { X(q, 0) - c[0], X(q, 1) - c[1], X(q, 2) - c[2] };
+          vec3(nrm) += vec3(u).cross(vec3(w));
+          h += (X.row(p).head(3) - X.row(Eigen::Index(i)).head(3)).norm();
+        }
+        const double len = vec3(nrm).norm();
+        h /= double(ring.size());
+        if(!(len > 0) || !(h > 0) || !std::isfinite(len)) continue;
+        for(int a = 0; a < 3; ++a) normal_[3 * i + std::size_t(a)] = nrm[a] / len;
+        edge_[i] = h;
+        for(int a = 0; a < 3; ++a) height[i] += (X(Eigen::Index(i), a) - c[a]) * normal_[3 * i + std::size_t(a)];
+        has_height_[i] = 1;
       }
-      const double len = vec3(nrm).norm();
-      h /= double(ring.size());
-      if(!(len > 0) || !(h > 0) || !std::isfinite(len)) continue;
-      for(int a = 0; a < 3; ++a) normal_[3 * i + std::size_t(a)] = nrm[a] / len;
-      edge_[i] = h;
-      for(int a = 0; a < 3; ++a) height[i] += (X(Eigen::Index(i), a) - c[a]) * normal_[3 * i + std::size_t(a)];
-      has_height_[i] = true;
-    }
-    // d_i and the norm of row i of (I - W)^2, over vertices whose whole ring has a height
+    });
+    // d_i and the norm of row i of (I - W)^2, over vertices whose whole ring has a height (NaN: none);
+    // the samples are then taken in vertex order, as one loop would
+    std::vector<double> sample(n, std::nan(""));
+    for_vertex_blocks(n, [&](std::size_t first, std::size_t last) {
+      std::vector<int> ring, inner;
+      std::vector<std::pair<int, double>> row;
+      for(std::size_t i = first; i < last; ++i)
+      {
+        if(!has_height_[i]) continue;
+        ring.clear();
+        topo.neighbours_ccw(topo.outgoing(int(i)), std::back_inserter(ring));
+        bool complete = true;
+        for(int j : ring) complete = complete && has_height_[std::size_t(j)];
+        if(!complete) continue;
+        const double ki = double(ring.size());
+        double d = height[i];
+        row.clear();
+        row.emplace_back(int(i), 1.0);
+        for(int j : ring)
+        {
+          d -= height[std::size_t(j)] / ki;
+          row.emplace_back(j, -2.0 / ki);   // -1/k_i from r_i, -1/k_i from r_j's own vertex
+          inner.clear();
+          topo.neighbours_ccw(topo.outgoing(j), std::back_inserter(inner));
+          for(int m : inner) row.emplace_back(m, 1.0 / (ki * double(inner.size())));
+        }
+        std::sort(row.begin(), row.end());
+        double norm2 = 0, acc = 0;
+        for(std::size_t k = 0; k < row.size(); ++k)
+        {
+          acc += row[k].second;
+          if(k + 1 == row.size() || row[k + 1].first != row[k].first) { norm2 += acc * acc; acc = 0; }
+        }
+        sample[i] = d / (std::sqrt(norm2) * edge_[i]);
+      }
+    });
     std::vector<double> samples;
-    std::vector<std::pair<int, double>> row;
-    for(std::size_t i = 0; i < n; ++i)
-    {
-      if(!has_height_[i]) continue;
-      ring.clear();
-      topo.neighbours_ccw(topo.outgoing(int(i)), std::back_inserter(ring));
-      bool complete = true;
-      for(int j : ring) complete = complete && has_height_[std::size_t(j)];
-      if(!complete) continue;
-      const double ki = double(ring.size());
-      double d = height[i];
-      row.clear();
-      row.emplace_back(int(i), 1.0);
-      std::vector<int> inner;
-      for(int j : ring)
-      {
-        d -= height[std::size_t(j)] / ki;
-        row.emplace_back(j, -2.0 / ki);   // -1/k_i from r_i, -1/k_i from r_j's own vertex
-        inner.clear();
-        topo.neighbours_ccw(topo.outgoing(j), std::back_inserter(inner));
-        for(int m : inner) row.emplace_back(m, 1.0 / (ki * double(inner.size())));
-      }
-      std::sort(row.begin(), row.end());
-      double norm2 = 0, acc = 0;
-      for(std::size_t k = 0; k < row.size(); ++k)
-      {
-        acc += row[k].second;
-        if(k + 1 == row.size() || row[k + 1].first != row[k].first) { norm2 += acc * acc; acc = 0; }
-      }
-      samples.push_back(d / (std::sqrt(norm2) * edge_[i]));
-    }
+    for(double v : sample)
+      if(!std::isnan(v)) samples.push_back(v);
     samples_ = samples.size();
     relative_sigma_ = robust_deviation(samples);
   }
@@ -147,8 +161,23 @@ public:
   }
 
 private:
+  // f(first, last) over blocks of vertices, on every core for a large mesh
+  template <typename F>
+  static void for_vertex_blocks(std::size_t n, const F& f)
+  {
+#ifdef CGAL_LINKED_WITH_TBB
+    if(n > 20000)
+    {
+      tbb::parallel_for(tbb::blocked_range<std::size_t>(0, n, 4096),
+                        [&](const tbb::blocked_range<std::size_t>& r) { f(r.begin(), r.end()); });
+      return;
+    }
+#endif
+    f(0, n);
+  }
+
   std::vector<double> normal_, edge_;
-  std::vector<bool> has_height_;
+  std::vector<char> has_height_;   // (not vector<bool>: written from several threads)
   double relative_sigma_ = 0;
   std::size_t samples_ = 0;
 };
