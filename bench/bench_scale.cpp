@@ -157,7 +157,7 @@ static int child(const std::string& kind, const std::string& file)
     v["tensor_chosen_anisotropic"] = r.feature_threshold > 0 ? 1 : 0;
   }
   else if(kind == "assembly") v["assembly"] = assembly_seconds(m);
-  else if(kind == "attributes")
+  else if(kind == "attributes" || kind == "attributes_cholesky")
   {
     auto f = m.add_property_map<Mesh::Vertex_index, double>("v:field").first;
     std::mt19937 rng(2);
@@ -166,10 +166,18 @@ static int child(const std::string& kind, const std::string& file)
     t.reset();
     const AF::Fairing_report r = AF::anisotropic_fairing(m, m.points(), f,
         AF::parameters::attribute_mode(AF::Attribute_mode::ATTRIBUTES_ONLY).relative_time_step(1e-3)
-                       .number_of_iterations(6).stopping_criteria(AF::Stopping_criteria::none()));
+                       .number_of_iterations(6).stopping_criteria(AF::Stopping_criteria::none())
+                       .linear_solver(kind == "attributes" ? AF::Linear_solver::AUTOMATIC : AF::Linear_solver::CHOLESKY));
     put_step(v, r);
-    std::vector<double> later;
-    for(std::size_t k = 1; k < r.steps.size(); ++k) later.push_back(r.steps[k].assemble_seconds + r.steps[k].solve_seconds);
+    std::vector<double> later, later_iterations;
+    for(std::size_t k = 1; k < r.steps.size(); ++k)
+    {
+      later.push_back(r.steps[k].assemble_seconds + r.steps[k].solve_seconds);
+      later_iterations.push_back(r.steps[k].solver_iterations);
+      std::fprintf(stderr, "step %zu: assemble %.4f solve %.4f its %d\n", k + 1, r.steps[k].assemble_seconds, r.steps[k].solve_seconds, r.steps[k].solver_iterations);
+    }
+    v["first_iterations"] = r.steps.empty() ? 0 : r.steps[0].solver_iterations;
+    v["later_iterations"] = median(later_iterations);
     v["first_step"] = r.steps.empty() ? std::nan("") : r.steps[0].assemble_seconds + r.steps[0].solve_seconds;
     v["later_step"] = median(later);
   }

@@ -13,6 +13,7 @@
 #include <CGAL/Anisotropic_fairing/Quadrature_point_geometry.h>
 #include <CGAL/Anisotropic_fairing/Surface_curvature.h>
 #include <CGAL/Anisotropic_fairing/internal/types/Control_matrix.h>
+#include <CGAL/Anisotropic_fairing/internal/types/Parallel_blocks.h>
 #include <CGAL/Anisotropic_fairing/internal/types/Stencil_row.h>
 #include <CGAL/Anisotropic_fairing/internal/types/Vector3.h>
 #include <CGAL/Anisotropic_fairing/internal/assembly/Sparse_pattern.h>
@@ -147,21 +148,19 @@ public:
     if(!Cache::has_second_derivatives) with_matrices = true;   // the curvature integral needs them
     if(with_matrices)
     {
-      M.assign(nnz, 0.0);
-      L.assign(nnz, 0.0);
+      // zeroed by the chunk that fills them, on its own core
+      M.resize(nnz);
+      L.resize(nnz);
     }
     std::vector<Assembly_statistics> stats{ std::size_t(chunks_) };
     for(Assembly_statistics& st : stats) st.component_area.assign(components_, 0.0);
     auto run_chunk = [&](int k) {
-      double* mv = M.data();
-      double* lv = L.data();
-      if(k > 0 && with_matrices)
-      {
-        std::vector<double>& pm = partial_[2 * std::size_t(k - 1)];
-        std::vector<double>& pl = partial_[2 * std::size_t(k - 1) + 1];
-        pm.assign(nnz, 0.0); pl.assign(nnz, 0.0);
-        mv = pm.data(); lv = pl.data();
-      }
+      std::vector<double>* pm = &M;
+      std::vector<double>* pl = &L;
+      if(k > 0 && with_matrices) { pm = &partial_[2 * std::size_t(k - 1)]; pl = &partial_[2 * std::size_t(k - 1) + 1]; }
+      if(with_matrices) { pm->assign(nnz, 0.0); pl->assign(nnz, 0.0); }
+      double* mv = pm->data();
+      double* lv = pl->data();
       Workspace ws;
       const std::size_t begin = nf * std::size_t(k) / std::size_t(chunks_);
       const std::size_t end = nf * std::size_t(k + 1) / std::size_t(chunks_);
@@ -174,12 +173,15 @@ public:
     else
 #endif
       for(int k = 0; k < chunks_; ++k) run_chunk(k);
-    for(int k = 1; k < chunks_ && with_matrices; ++k)
-    {
-      const std::vector<double>& pm = partial_[2 * std::size_t(k - 1)];
-      const std::vector<double>& pl = partial_[2 * std::size_t(k - 1) + 1];
-      for(std::size_t p = 0; p < nnz; ++p) { M[p] += pm[p]; L[p] += pl[p]; }
-    }
+    if(with_matrices && chunks_ > 1)
+      parallel_blocks(nnz, [&](std::size_t first, std::size_t last) {   // each entry adds the chunks in order
+        for(int k = 1; k < chunks_; ++k)
+        {
+          const double* pm = partial_[2 * std::size_t(k - 1)].data();
+          const double* pl = partial_[2 * std::size_t(k - 1) + 1].data();
+          for(std::size_t p = first; p < last; ++p) { M[p] += pm[p]; L[p] += pl[p]; }
+        }
+      }, std::size_t(65536));
     Assembly_statistics total;
     total.component_area.assign(components_, 0.0);
     for(const Assembly_statistics& s : stats) total.add(s);

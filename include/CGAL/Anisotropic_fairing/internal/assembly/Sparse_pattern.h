@@ -8,13 +8,8 @@
 #ifndef CGAL_ANISOTROPIC_FAIRING_INTERNAL_ASSEMBLY_SPARSE_PATTERN_H
 #define CGAL_ANISOTROPIC_FAIRING_INTERNAL_ASSEMBLY_SPARSE_PATTERN_H
 
-
+#include <CGAL/Anisotropic_fairing/internal/types/Parallel_blocks.h>
 #include <Eigen/SparseCore>
-
-#ifdef CGAL_LINKED_WITH_TBB
-#include <tbb/parallel_for.h>
-#include <tbb/task_arena.h>
-#endif
 
 #include <algorithm>
 #include <cstddef>
@@ -68,17 +63,8 @@ Eigen::SparseMatrix<double> ring_sparsity_pattern(const Cache& cache, std::size_
       }
     }
   };
-  auto for_blocks = [n](const auto& body) {   // body(first, last) over a few blocks of columns (each has its own marks)
-#ifdef CGAL_LINKED_WITH_TBB
-    const std::size_t blocks = 4 * std::size_t(std::max(1, tbb::this_task_arena::max_concurrency()));
-    if(n > 20000)
-    {
-      tbb::parallel_for(std::size_t(0), blocks, [&](std::size_t b) { body(n * b / blocks, n * (b + 1) / blocks); });
-      return;
-    }
-#endif
-    body(std::size_t(0), n);
-  };
+  // a few large blocks of columns, each with marks of its own
+  auto for_blocks = [n](const auto& body) { parallel_blocks(n, body, n / 8 + 1); };
   for_blocks([&](std::size_t first, std::size_t last) {
     std::vector<int> mark(n, -1), rows;
     for(std::size_t j = first; j < last; ++j) { column(j, mark, rows); outer[j + 1] = int(rows.size()); }

@@ -18,13 +18,10 @@
 #define CGAL_ANISOTROPIC_FAIRING_INTERNAL_FLOW_NOISE_ESTIMATE_H
 
 #include <CGAL/Anisotropic_fairing/internal/types/Control_matrix.h>
+#include <CGAL/Anisotropic_fairing/internal/types/Parallel_blocks.h>
 #include <CGAL/Anisotropic_fairing/internal/types/Vector3.h>
 #include <CGAL/Anisotropic_fairing/internal/mesh/Triangle_topology.h>
 
-#ifdef CGAL_LINKED_WITH_TBB
-#include <tbb/blocked_range.h>
-#include <tbb/parallel_for.h>
-#endif
 
 #include <algorithm>
 #include <cmath>
@@ -58,7 +55,7 @@ public:
     has_height_.assign(n, 0);
     std::vector<double> height(n, 0.0);
     // each vertex on its own (in blocks on every core): its ring's normal, edge length and its height
-    for_vertex_blocks(n, [&](std::size_t first, std::size_t last) {
+    parallel_blocks(n, [&](std::size_t first, std::size_t last) {
       std::vector<int> ring;
       for(std::size_t i = first; i < last; ++i)
       {
@@ -88,7 +85,7 @@ public:
     // d_i and the norm of row i of (I - W)^2, over vertices whose whole ring has a height (NaN: none);
     // the samples are then taken in vertex order, as one loop would
     std::vector<double> sample(n, std::nan(""));
-    for_vertex_blocks(n, [&](std::size_t first, std::size_t last) {
+    parallel_blocks(n, [&](std::size_t first, std::size_t last) {
       std::vector<int> ring, inner;
       std::vector<std::pair<int, double>> row;
       for(std::size_t i = first; i < last; ++i)
@@ -161,21 +158,6 @@ public:
   }
 
 private:
-  // f(first, last) over blocks of vertices, on every core for a large mesh
-  template <typename F>
-  static void for_vertex_blocks(std::size_t n, const F& f)
-  {
-#ifdef CGAL_LINKED_WITH_TBB
-    if(n > 20000)
-    {
-      tbb::parallel_for(tbb::blocked_range<std::size_t>(0, n, 4096),
-                        [&](const tbb::blocked_range<std::size_t>& r) { f(r.begin(), r.end()); });
-      return;
-    }
-#endif
-    f(0, n);
-  }
-
   std::vector<double> normal_, edge_;
   std::vector<char> has_height_;   // (not vector<bool>: written from several threads)
   double relative_sigma_ = 0;

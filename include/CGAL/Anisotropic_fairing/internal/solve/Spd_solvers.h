@@ -11,6 +11,7 @@
 #define CGAL_ANISOTROPIC_FAIRING_INTERNAL_SOLVE_SPD_SOLVERS_H
 
 #include <CGAL/Anisotropic_fairing/internal/types/Control_matrix.h>
+#include <CGAL/Anisotropic_fairing/internal/types/Parallel_blocks.h>
 #include <Eigen/Core>
 #include <Eigen/SparseCholesky>
 #include <Eigen/SparseCore>
@@ -93,15 +94,7 @@ inline void symmetric_product(const Eigen::SparseMatrix<double>& A, const Contro
       }
     }
   };
-#ifdef CGAL_LINKED_WITH_TBB
-  if(X.rows() > 20000)
-  {
-    tbb::parallel_for(tbb::blocked_range<Eigen::Index>(0, X.rows(), 4096),
-                      [&](const tbb::blocked_range<Eigen::Index>& r) { range(r.begin(), r.end()); });
-    return;
-  }
-#endif
-  range(0, X.rows());
+  parallel_blocks(X.rows(), range);
 }
 
 /// Jacobi-preconditioned conjugate gradients on all columns at once; a column stops updating once
@@ -212,7 +205,7 @@ public:
         rnorm[cc] = std::sqrt(sums_[std::size_t(k) + cc]);
       }
       double* pw = P_.data();
-      for_rows(n, [&](Eigen::Index begin, Eigen::Index end) {
+      parallel_blocks(n, [&](Eigen::Index begin, Eigen::Index end) {
         for(Eigen::Index i = begin; i < end; ++i)
           for(Eigen::Index c = 0; c < k; ++c)
             if(active[std::size_t(c)]) pw[i * k + c] = id[i] * r[i * k + c] + beta_[std::size_t(c)] * pw[i * k + c];
@@ -235,21 +228,6 @@ private:
       st.residual = std::max(st.residual, bnorm[std::size_t(c)] > 0 ? r / bnorm[std::size_t(c)] : r);
     }
     return st;
-  }
-
-  // f(begin, end) over all rows, in chunks on every core for a long vector
-  template <typename F>
-  static void for_rows(Eigen::Index n, const F& f)
-  {
-#ifdef CGAL_LINKED_WITH_TBB
-    if(n > 20000)
-    {
-      tbb::parallel_for(tbb::blocked_range<Eigen::Index>(0, n, 4096),
-                        [&](const tbb::blocked_range<Eigen::Index>& r) { f(r.begin(), r.end()); });
-      return;
-    }
-#endif
-    f(0, n);
   }
 
   // out[w] = sum over rows i of what row(i, sums) adds to sums[w], w < width. Each fixed chunk of rows has
