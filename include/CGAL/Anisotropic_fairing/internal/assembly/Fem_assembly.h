@@ -29,6 +29,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstddef>
 #include <limits>
 #include <type_traits>
 #include <vector>
@@ -37,25 +38,39 @@ namespace CGAL {
 namespace Anisotropic_fairing {
 namespace internal {
 
+/// Where a column's entries go: its pattern positions p in `values`, or, for a column shared with other
+/// threads (shift[j] != owned_column), positions p + shift[j] in `shared` (shift null: every column is owned).
+constexpr std::ptrdiff_t owned_column = std::numeric_limits<std::ptrdiff_t>::min();
+
 /// Adds N symmetric local matrices, given by their lower triangles (ring x ring), into N value arrays
 /// sharing one compressed column pattern (outer, rows) that contains the ring's pairs. Reading one
 /// triangle only keeps the results exactly symmetric. Rows of a column are sorted, so each local
 /// column is merged into the global one in one pass.
 template <int N, typename Local>
 void scatter_local_matrices(const Local* const (&local)[N], const int* ring, int m, std::vector<int>& order,
-                            const int* outer, const int* rows, double* const (&values)[N])
+                            const int* outer, const int* rows, double* const (&values)[N],
+                            double* const (&shared)[N], const std::ptrdiff_t* shift)
 {
   order.resize(std::size_t(m));
   for(int k = 0; k < m; ++k) order[std::size_t(k)] = k;
   std::sort(order.begin(), order.end(), [ring](int a, int b) { return ring[a] < ring[b]; });
   for(int s = 0; s < m; ++s)
   {
-    int p = outer[ring[s]];
+    const int j = ring[s];
+    double* target[N];
+    std::ptrdiff_t offset = 0;
+    for(int i = 0; i < N; ++i) target[i] = values[i];
+    if(shift && shift[j] != owned_column)
+    {
+      offset = shift[j];
+      for(int i = 0; i < N; ++i) target[i] = shared[i];
+    }
+    int p = outer[j];
     for(int k = 0; k < m; ++k)
     {
       const int r = order[std::size_t(k)];
       while(rows[p] < ring[r]) ++p;
-      for(int i = 0; i < N; ++i) values[i][p] += (r >= s) ? (*local[i])(r, s) : (*local[i])(s, r);
+      for(int i = 0; i < N; ++i) target[i][p + offset] += (r >= s) ? (*local[i])(r, s) : (*local[i])(s, r);
     }
   }
 }
@@ -103,7 +118,7 @@ public:
     chunks_ = std::max(1, tbb::this_task_arena::max_concurrency());
 #endif
     chunks_ = int(std::min<std::size_t>(std::size_t(chunks_), std::max<std::size_t>(1, cache.number_of_faces() / 256)));
-    partial_.resize(std::size_t(chunks_ - 1) * 2);
+    if(with_pattern && chunks_ > 1) share_columns(number_of_vertices);
   }
 
   /// Indices reported to the tensor (Quadrature_point_geometry::face and ring) and in statistics are
@@ -148,24 +163,34 @@ public:
     if(!Cache::has_second_derivatives) with_matrices = true;   // the curvature integral needs them
     if(with_matrices)
     {
-      // zeroed by the chunk that fills them, on its own core
       M.resize(nnz);
       L.resize(nnz);
+      parallel_blocks(nnz, [&](std::size_t first, std::size_t last) {
+        std::fill(M.begin() + std::ptrdiff_t(first), M.begin() + std::ptrdiff_t(last), 0.0);
+        std::fill(L.begin() + std::ptrdiff_t(first), L.begin() + std::ptrdiff_t(last), 0.0);
+      }, std::size_t(65536));
     }
     std::vector<Assembly_statistics> stats{ std::size_t(chunks_) };
     for(Assembly_statistics& st : stats) st.component_area.assign(components_, 0.0);
+    // chunk k: the k-th range of faces. Each writes the columns only its faces touch into M and L; chunk 0
+    // writes the shared columns there too, every other chunk into its own short arrays, added below
     auto run_chunk = [&](int k) {
-      std::vector<double>* pm = &M;
-      std::vector<double>* pl = &L;
-      if(k > 0 && with_matrices) { pm = &partial_[2 * std::size_t(k - 1)]; pl = &partial_[2 * std::size_t(k - 1) + 1]; }
-      if(with_matrices) { pm->assign(nnz, 0.0); pl->assign(nnz, 0.0); }
-      double* mv = pm->data();
-      double* lv = pl->data();
+      double* sm = nullptr;
+      double* sl = nullptr;
+      if(k > 0 && with_matrices)
+      {
+        std::vector<double>& pm = shared_values_[2 * std::size_t(k - 1)];
+        std::vector<double>& pl = shared_values_[2 * std::size_t(k - 1) + 1];
+        pm.assign(shared_size_, 0.0); pl.assign(shared_size_, 0.0);
+        sm = pm.data(); sl = pl.data();
+      }
       Workspace ws;
+      ws.shared_m = sm; ws.shared_l = sl;
+      ws.shift = k > 0 ? shift_.data() : nullptr;
       const std::size_t begin = nf * std::size_t(k) / std::size_t(chunks_);
       const std::size_t end = nf * std::size_t(k + 1) / std::size_t(chunks_);
       for(std::size_t f = begin; f < end; ++f)
-        assemble_face(f, X, metric_columns, tensor, ws, with_matrices ? mv : nullptr, lv, stats[std::size_t(k)]);
+        assemble_face(f, X, metric_columns, tensor, ws, with_matrices ? M.data() : nullptr, L.data(), stats[std::size_t(k)]);
     };
 #ifdef CGAL_LINKED_WITH_TBB
     if(chunks_ > 1)
@@ -173,15 +198,16 @@ public:
     else
 #endif
       for(int k = 0; k < chunks_; ++k) run_chunk(k);
+    // a shared entry: chunk 0's part, then the others' in order (as a sum over chunks)
     if(with_matrices && chunks_ > 1)
-      parallel_blocks(nnz, [&](std::size_t first, std::size_t last) {   // each entry adds the chunks in order
+      for(int j : shared_columns_)
         for(int k = 1; k < chunks_; ++k)
         {
-          const double* pm = partial_[2 * std::size_t(k - 1)].data();
-          const double* pl = partial_[2 * std::size_t(k - 1) + 1].data();
-          for(std::size_t p = first; p < last; ++p) { M[p] += pm[p]; L[p] += pl[p]; }
+          const double* pm = shared_values_[2 * std::size_t(k - 1)].data();
+          const double* pl = shared_values_[2 * std::size_t(k - 1) + 1].data();
+          const std::ptrdiff_t d = shift_[std::size_t(j)];
+          for(int p = pattern_.outerIndexPtr()[j]; p < pattern_.outerIndexPtr()[j + 1]; ++p) { M[std::size_t(p)] += pm[p + d]; L[std::size_t(p)] += pl[p + d]; }
         }
-      }, std::size_t(65536));
     Assembly_statistics total;
     total.component_area.assign(components_, 0.0);
     for(const Assembly_statistics& s : stats) total.add(s);
@@ -217,7 +243,36 @@ private:
     Any_buffers any;
     std::vector<int> order, original_ring;
     std::vector<double> zeros, mean_curvature;   // kappa values, for any kappa
+    double* shared_m = nullptr;   // this chunk's arrays of the shared columns (scatter_local_matrices)
+    double* shared_l = nullptr;
+    const std::ptrdiff_t* shift = nullptr;
   };
+
+  // The columns touched by the faces of more than one chunk, and where each chunk but the first adds into
+  // them: its own arrays, as long as those columns' entries. The faces are in the locality order, so a
+  // chunk's faces touch a band of vertices and few columns are shared.
+  void share_columns(std::size_t n)
+  {
+    std::vector<int> owner(n, -2);   // -2: no face, -1: several chunks
+    const std::size_t nf = cache_.number_of_faces();
+    for(int k = 0; k < chunks_; ++k)
+      for(std::size_t f = nf * std::size_t(k) / std::size_t(chunks_); f < nf * std::size_t(k + 1) / std::size_t(chunks_); ++f)
+        for(int r = 0; r < cache_.ring_size(f); ++r)
+        {
+          int& o = owner[std::size_t(cache_.ring(f)[r])];
+          o = o == -2 || o == k ? k : -1;
+        }
+    shift_.assign(n, owned_column);
+    shared_size_ = 0;
+    for(std::size_t j = 0; j < n; ++j)
+      if(owner[j] == -1)
+      {
+        shared_columns_.push_back(int(j));
+        shift_[j] = std::ptrdiff_t(shared_size_) - pattern_.outerIndexPtr()[j];
+        shared_size_ += std::size_t(pattern_.outerIndexPtr()[j + 1] - pattern_.outerIndexPtr()[j]);
+      }
+    shared_values_.resize(std::size_t(chunks_ - 1) * 2);
+  }
 
   template <typename Tensor>
   void assemble_face(std::size_t f, const Control_matrix& X, int kappa, const Tensor& tensor, Workspace& ws,
@@ -360,7 +415,8 @@ private:
     typedef typename std::remove_reference<decltype(b.localM)>::type Local;
     const Local* const locals[2] = { &b.localM, &b.localL };
     double* const values[2] = { mv, lv };
-    scatter_local_matrices<2>(locals, ring, m, ws.order, pattern_.outerIndexPtr(), pattern_.innerIndexPtr(), values);
+    double* const shared[2] = { ws.shared_m, ws.shared_l };
+    scatter_local_matrices<2>(locals, ring, m, ws.order, pattern_.outerIndexPtr(), pattern_.innerIndexPtr(), values, shared, ws.shift);
   }
 
   // |H|^2, H the mean-curvature vector (Surface_curvature.h), written into h
@@ -397,7 +453,10 @@ private:
   const Cache& cache_;
   Eigen::SparseMatrix<double> pattern_;
   int chunks_ = 1;
-  std::vector<std::vector<double>> partial_;
+  std::vector<int> shared_columns_;
+  std::vector<std::ptrdiff_t> shift_;               // per column (share_columns)
+  std::size_t shared_size_ = 0;
+  std::vector<std::vector<double>> shared_values_;  // M and L of the shared columns, per chunk but the first
   const std::vector<int>* original_vertex_ = nullptr;
   const std::vector<std::size_t>* original_face_ = nullptr;
   const std::vector<bool>* border_ = nullptr;
