@@ -42,9 +42,12 @@
 
 #include <CGAL/Anisotropic_fairing/anisotropic_fairing.h>
 #include <CGAL/Anisotropic_fairing/Loop_limit_surface.h>
+#include <CGAL/Anisotropic_fairing/internal/flow/Deviation_bound.h>
 
+#include <algorithm>
 #include <cstdio>
 #include <filesystem>
+#include <limits>
 #include <string>
 #include <utility>
 #include <vector>
@@ -59,12 +62,21 @@ namespace {
 // ------------------------------------------------------------------------------------------------
 // Fairing: the named parameters differ in type with the time step and fidelity flags given
 // ------------------------------------------------------------------------------------------------
+// (the bounds always given, 0 for none, so that they add one variant of the call, not three)
+template <typename NP, typename Run>
+AF::Fairing_report with_bound(const NP& np, const Options& o, Run& run)
+{
+  const auto bounded = np.attribute_maximum_deviation(o.attribute_bound);
+  if(o.has_bound) return run(bounded.absolute_maximum_deviation(o.bound));
+  return run(bounded.maximum_deviation(o.relative_bound));
+}
+
 template <typename NP, typename Run>
 AF::Fairing_report with_fidelity(const NP& np, const Options& o, Run& run)
 {
-  if(o.has_fidelity) return run(np.fidelity_weight(o.fidelity));
-  if(o.has_relative_fidelity) return run(np.relative_fidelity_weight(o.relative_fidelity));
-  return run(np);
+  if(o.has_fidelity) return with_bound(np.fidelity_weight(o.fidelity), o, run);
+  if(o.has_relative_fidelity) return with_bound(np.relative_fidelity_weight(o.relative_fidelity), o, run);
+  return with_bound(np, o, run);
 }
 
 template <typename NP, typename Run>
@@ -124,6 +136,43 @@ void write_limit_surface(Mesh& mesh, const Limit& limit, bool normals, std::vect
   for(const auto& h : held_values) (*attribute_values)[std::size_t(h.first)] = h.second;
 }
 
+// The library holds within the bounds what it writes, here the control points; the limit points computed
+// from them are put within the bounds the same way (internal::clamp_to_bound: a vertex farther off goes
+// onto the bound along the line to its input position), and the report's largest deviations and clamped
+// vertices are those written.
+void bound_limit_points(Mesh& mesh, const std::vector<Point>& input, std::vector<std::vector<double>>* values,
+                        const std::vector<std::vector<double>>& input_values, const Options& o, AF::Fairing_report& report)
+{
+  namespace I = AF::internal;
+  if(input.empty()) return;
+  const std::size_t n = mesh.number_of_vertices();
+  const Eigen::Index d = values && n > 0 ? Eigen::Index((*values)[0].size()) : 0;
+  I::Control_matrix Y(Eigen::Index(n), 3 + d), Y0(Eigen::Index(n), 3 + d);
+  for(Vertex_index v : mesh.vertices())
+  {
+    const Eigen::Index i = Eigen::Index(v);
+    Y.row(i).head(3) << mesh.point(v).x(), mesh.point(v).y(), mesh.point(v).z();
+    Y0.row(i).head(3) << input[std::size_t(i)].x(), input[std::size_t(i)].y(), input[std::size_t(i)].z();
+    for(Eigen::Index k = 0; k < d; ++k) { Y(i, 3 + k) = (*values)[std::size_t(i)][std::size_t(k)]; Y0(i, 3 + k) = input_values[std::size_t(i)][std::size_t(k)]; }
+  }
+  const double none = std::numeric_limits<double>::infinity();
+  const I::Column_bound geometry{ 0, 3, report.maximum_deviation > 0 ? report.maximum_deviation : none };
+  const I::Column_bound attributes{ 3, d, o.attribute_bound > 0 ? o.attribute_bound : none };
+  const std::vector<bool> written(n, true);   // held vertices kept their input values: deviation 0
+  std::vector<bool> moved(n, false);
+  I::clamp_to_bound(Y, Y0, geometry, written, moved);
+  I::clamp_to_bound(Y, Y0, attributes, written, moved);
+  for(Vertex_index v : mesh.vertices())
+  {
+    const Eigen::Index i = Eigen::Index(v);
+    mesh.point(v) = Point(Y(i, 0), Y(i, 1), Y(i, 2));
+    for(Eigen::Index k = 0; k < d; ++k) (*values)[std::size_t(i)][std::size_t(k)] = Y(i, 3 + k);
+  }
+  report.largest_deviation = I::largest_written_deviation(Y, Y0, geometry, written);
+  report.largest_attribute_deviation = I::largest_written_deviation(Y, Y0, attributes, written);
+  report.clamped_vertices = std::size_t(std::count(moved.begin(), moved.end(), true));
+}
+
 } // namespace
 
 int run(const Options& o, Run_record& r)
@@ -167,6 +216,12 @@ int run(const Options& o, Run_record& r)
   std::vector<std::vector<double>> attribute_values;   // per vertex, the columns in order
   if(fair_attributes) gather(mesh, columns, attribute_values);
   const Attribute_vectors attribute_map{&attribute_values};
+  // with a bound and the limit points computed here from the control points the library wrote (below),
+  // the bound is applied to those limit points again: the input, to measure them against
+  const bool bounded = o.has_bound || o.has_relative_bound || o.attribute_bound > 0;
+  std::vector<Point> input_points;
+  std::vector<std::vector<double>> input_values;
+  if(bounded) { input_points.assign(mesh.points().begin(), mesh.points().end()); input_values = attribute_values; }
   // without attributes to fair, GEOMETRY_ONLY: the attribute map is then neither read nor written
   const AF::Attribute_mode library_mode = fair_attributes ? mode : AF::Attribute_mode::GEOMETRY_ONLY;
 
@@ -257,8 +312,11 @@ int run(const Options& o, Run_record& r)
       r.curvature = true;
     }
     if(limit_from_control)
+    {
       write_limit_surface(mesh, limit, exact_limit_normals, fair_attributes ? &attribute_values : nullptr,
                           r.report.limit_weight);
+      bound_limit_points(mesh, input_points, fair_attributes ? &attribute_values : nullptr, input_values, o, r.report);
+    }
   }
   if(info.has_normals)
   {

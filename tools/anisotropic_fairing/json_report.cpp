@@ -89,6 +89,18 @@ std::string report_json(const Options& o, const Run_record& r, double wall_secon
   j["limit_weight"] = ran ? number(f.limit_weight) : Json(nullptr);
   j["components"] = known(ran, f.components);
   j["rejected_steps"] = known(ran, f.rejected_steps);
+  // the bounds the run used, model units (and in units of l), and the largest deviations written
+  j["maximum_deviation"] = ran ? (f.maximum_deviation > 0 ? number(f.maximum_deviation) : Json(nullptr))
+                           : o.has_bound ? number(o.bound) : Json(nullptr);
+  j["relative_maximum_deviation"] = o.has_relative_bound && o.relative_bound > 0 ? number(o.relative_bound)
+                                    : ran && f.maximum_deviation > 0 && f.scale > 0 ? number(f.maximum_deviation / f.scale) : Json(nullptr);
+  j["largest_deviation"] = ran ? number(f.largest_deviation) : Json(nullptr);
+  j["attribute_maximum_deviation"] = o.attribute_bound > 0 ? number(o.attribute_bound) : Json(nullptr);
+  j["largest_attribute_deviation"] = ran && f.attribute_dimension > 0 ? number(f.largest_attribute_deviation) : Json(nullptr);
+  j["bound_fidelity_weight"] = ran ? number(f.bound_fidelity_weight) : Json(nullptr);
+  j["bound_held_vertices"] = known(ran, f.bound_held_vertices);
+  j["bound_retaken_steps"] = known(ran, f.bound_retaken_steps);
+  j["clamped_vertices"] = known(ran, f.clamped_vertices);
   j["initial"] = ran ? Json{ { "area", number(f.initial.area) }, { "energy", number(f.initial.energy) },
                              { "H_integral", number(f.initial.H_integral) } }
                      : Json(nullptr);

@@ -158,6 +158,18 @@ const Option_spec option_table[] = {
    [](Options& o, const std::string& flag, const std::string& v) {
      set_number(o.relative_fidelity, o.has_relative_fidelity, flag, v, true);
    }},
+  {"--maximum-deviation", nullptr, "D",
+   "no written vertex moves farther than D (model units) off its input\n"
+   "position: the vertices nearing it are held by a fidelity weight of\n"
+   "their own, and one it cannot hold is written on the bound (default:\n"
+   "no bound; 0: none)",
+   [](Options& o, const std::string& flag, const std::string& v) { set_number(o.bound, o.has_bound, flag, v, true); }},
+  {"--relative-maximum-deviation", nullptr, "R", "the same in units of l; give at most one of the two",
+   [](Options& o, const std::string& flag, const std::string& v) { set_number(o.relative_bound, o.has_relative_bound, flag, v, true); }},
+  {"--attribute-maximum-deviation", nullptr, "D",
+   "no vertex's attribute values move farther than D (their units,\n"
+   "Euclidean over the components) off the input's (default: no bound)",
+   [](Options& o, const std::string& flag, const std::string& v) { set_number(o.attribute_bound, o.has_attribute_bound, flag, v, true); }},
   {"--element", nullptr, "loop|linear", "Loop limit-surface elements (default) or linear (P1) elements",
    [](Options& o, const std::string& flag, const std::string& v) {
      o.element = choice<AF::Finite_element>(flag, v, {{"loop", AF::Finite_element::LOOP}, {"linear", AF::Finite_element::LINEAR}});
@@ -310,6 +322,9 @@ const char* const help_after_options =
 "JSON report: status, message, input, output, vertices, faces, element, output_positions, tensor, lambda,\n"
 "lambda_model_units, epsilon, tangential_motion, automatic_parameters, choices, noise_level,\n"
 "noise_deviation, noise_displacement, limit_weight, components, rejected_steps,\n"
+"maximum_deviation, relative_maximum_deviation, largest_deviation, attribute_maximum_deviation,\n"
+"largest_attribute_deviation, bound_fidelity_weight, bound_held_vertices, bound_retaken_steps,\n"
+"clamped_vertices,\n"
 "solver, requested_solver, stop, max_steps, quadrature_degree, time_step, order, relative_time_step, scale,\n"
 "fidelity_weight, relative_fidelity_weight, mean_edge_length, normals, curvature, mode, attributes,\n"
 "attribute_dimension, attribute_weight, boundary_handling,\n"
@@ -438,6 +453,7 @@ void parse_arguments(int argc, char** argv, Options& o)
   o.output = positional[1];
   if(o.has_time_step && o.has_relative_time_step) usage_error("give either --time-step or --relative-time-step, not both");
   if(o.has_fidelity && o.has_relative_fidelity) usage_error("give either --fidelity or --relative-fidelity, not both");
+  if(o.has_bound && o.has_relative_bound) usage_error("give either --maximum-deviation or --relative-maximum-deviation, not both");
   if(o.attributes.empty() && (o.mode == AF::Attribute_mode::COUPLED || o.mode == AF::Attribute_mode::ATTRIBUTES_ONLY))
     usage_error(std::string("--mode ") + mode_name(o.mode) + " needs --attributes");
   // without a time step the parameters are automatic: the anisotropic tensor unless --tensor is given

@@ -24,6 +24,8 @@ struct Options
   std::string stop = "auto";   // auto, noise, paper, off
   bool has_fidelity = false, has_relative_fidelity = false;
   double fidelity = 0, relative_fidelity = 0;
+  bool has_bound = false, has_relative_bound = false, has_attribute_bound = false;   // --maximum-deviation ...
+  double bound = 0, relative_bound = 0, attribute_bound = 0;
   AF::Finite_element element = AF::Finite_element::LOOP;
   AF::Output_positions output_positions = AF::Output_positions::LIMIT_SURFACE;
   AF::Linear_solver solver = AF::Linear_solver::AUTOMATIC;

@@ -39,7 +39,8 @@ enum class Stop_reason {
   FAILURE,              ///< see `Fairing_report::status`
   NOISE_LEVEL,          ///< the written surface moved off the input by the estimated noise (`Stopping_criteria::noise_discrepancy`); also before any step, when the limit surface of the input already does
   STEP_REJECTED,        ///< a step would have left an unsound surface (folded, pinched, overflowing, \f$\int|H|^2\f$ exploding) even with 1/1024 of the time step: the run ended on the last sound surface, and `Fairing_report::message` says what failed
-  NOISE_REMOVED         ///< the noise criterion, fourth-order flow: its displacement off the input stopped growing short of the estimated noise. What still moves then is shape: the displacement grows more slowly than a wave of \f$4\pi h\f$ (h: the mean edge length) decays under the flow, \f$1/16\f$ per unit of time \f$h^4\f$
+  NOISE_REMOVED,        ///< the noise criterion, fourth-order flow: its displacement off the input stopped growing short of the estimated noise. What still moves then is shape: the displacement grows more slowly than a wave of \f$4\pi h\f$ (h: the mean edge length) decays under the flow, \f$1/16\f$ per unit of time \f$h^4\f$
+  DEVIATION_BOUND       ///< the noise criterion with a maximum deviation (`maximum_deviation`): the written surface's displacement off the input grew by less than 1% in a step, short of the estimated noise: the bound holds it there
 };
 
 /// \ingroup PkgAnisotropicFairingFunctions
@@ -57,6 +58,7 @@ inline const char* to_string(Stop_reason r)
     case Stop_reason::NO_FREE_VERTEX: return "no_free_vertex";
     case Stop_reason::NOISE_LEVEL: return "noise_level";
     case Stop_reason::NOISE_REMOVED: return "noise_removed";
+    case Stop_reason::DEVIATION_BOUND: return "deviation_bound";
     case Stop_reason::STEP_REJECTED: return "step_rejected";
     default: return "failure";
   }
@@ -140,6 +142,14 @@ struct Fairing_report
   /// first step, the input's own limit surface being off it by more than the noise (Loop element; with
   /// `Output_positions::CONTROL_POINTS` the input is written and this says what the limit output would be)
   double limit_weight = 1;
+  double maximum_deviation = 0;   ///< the bound on how far a written vertex moves off the input (named parameter `maximum_deviation` or `absolute_maximum_deviation`), model units; 0 without a bound
+  double largest_deviation = 0;   ///< the largest distance from a written vertex to its input position, model units (with or without a bound)
+  double attribute_maximum_deviation = 0; ///< the bound on each vertex's attribute values (`attribute_maximum_deviation`), the attributes' units; 0 without
+  double largest_attribute_deviation = 0; ///< the largest Euclidean distance between a vertex's written and input attribute values
+  double bound_fidelity_weight = 0;      ///< the largest fidelity weight a vertex was given to hold it within a bound, model units (1/time; the global one, `fidelity_weight`, comes on top)
+  std::size_t bound_held_vertices = 0;   ///< vertices given a fidelity weight of their own by a bound
+  std::size_t bound_retaken_steps = 0;   ///< steps taken again, with more vertices held, because they carried a vertex past a bound
+  std::size_t clamped_vertices = 0;      ///< written vertices put on a bound along the line to their input position: their fidelity could not hold them (e.g. the input's own limit point lies farther off than the bound)
   std::string choices;            ///< with automatic parameters: what was chosen and why, in one sentence
   std::string selected_tensor;    ///< with automatic parameters and no tensor given: "anisotropic", "isotropic" or "uniform", the result kept (empty otherwise; "uniform" is the uniform tensor's fourth-order flow, `flow_order` 4)
   double setup_seconds = 0;       ///< set-up: private numbering, element (patch categories, stencils), sparsity patterns

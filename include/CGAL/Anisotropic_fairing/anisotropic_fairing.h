@@ -86,6 +86,28 @@ of its area per step. `time_step` and `fidelity_weight` give them in model units
     \cgalParamDescription{\f$\omega\f$ in model units (1/time); excludes `relative_fidelity_weight`}
     \cgalParamType{double >= 0} \cgalParamDefault{unused}
   \cgalParamNEnd
+  \cgalParamNBegin{maximum_deviation}
+    \cgalParamDescription{a bound \f$\varepsilon\f$, in units of \f$\ell\f$, on how far any written vertex moves off
+                          its input position: \f$\|x_i(t) - x_i(0)\| \le \varepsilon\f$ for every vertex, at every step.
+                          A vertex nearing it gets a fidelity weight of its own on its written position, raised (the
+                          step taken again) where a step would carry it past; one that weight cannot hold (its cap,
+                          or the input's own limit point lying farther off) is written on the bound, along the line
+                          to its input position. With automatic parameters a run that the bound holds short of the
+                          noise level ends when its displacement levels off (`Stop_reason::DEVIATION_BOUND`). The
+                          report gives the bound in model units, the largest deviation written and how many
+                          vertices were held and put on the bound (Section \ref sec_AF_deviation_bound). 0: none}
+    \cgalParamType{double >= 0} \cgalParamDefault{`0` (no bound)}
+  \cgalParamNEnd
+  \cgalParamNBegin{absolute_maximum_deviation}
+    \cgalParamDescription{the same bound in model units; excludes `maximum_deviation`}
+    \cgalParamType{double >= 0} \cgalParamDefault{unused}
+  \cgalParamNEnd
+  \cgalParamNBegin{attribute_maximum_deviation}
+    \cgalParamDescription{the same bound on each vertex's attribute values, the Euclidean distance over their
+                          components in the attribute's own units (in every attribute mode; in the coupled mode
+                          before `attribute_weight` is applied). 0: none}
+    \cgalParamType{double >= 0} \cgalParamDefault{`0` (no bound)}
+  \cgalParamNEnd
   \cgalParamNBegin{stopping_criteria}
     \cgalParamDescription{the criteria (27)-(29) and a steady-state test, relative to \f$\ell\f$ by default}
     \cgalParamType{`Stopping_criteria`; `Stopping_criteria::none()` runs exactly `number_of_iterations` steps}

@@ -136,6 +136,17 @@ def check_table(spec, work):
         r = spec['row']
         got = select(columns, rows[r['index']], r['cols']) if -len(rows) <= r['index'] < len(rows) else 'missing'
         check(got == r['value'], '%s row %d: %r == %r' % (what, r['index'], got, r['value']))
+    if 'within' in spec:   # every row's columns no farther (Euclidean) than `distance` from another file's
+        o = spec['within']
+        ocolumns, orows = table(os.path.join(work, o['file']), spec.get('table', 'vertex'))
+        check(len(rows) == len(orows), '%s: %d rows, %s %d' % (what, len(rows), o['file'], len(orows)))
+        far = 0.0
+        for row, orow in zip(rows, orows):
+            a = [float(x) for x in select(columns, row, o['cols']).split()]
+            b = [float(x) for x in select(ocolumns, orow, o['cols']).split()]
+            far = max(far, sum((x - y) ** 2 for x, y in zip(a, b)) ** 0.5)
+        check(far <= o['distance'], '%s %s within %g of %s (largest %.17g)' % (what, o['cols'], o['distance'], o['file'], far))
+        check(far > o.get('moved', 0), '%s moved by more than %g (largest %.17g)' % (what, o.get('moved', 0), far))
     for key, same in (('same_as', True), ('differs_from', False)):   # the same columns of another file
         if key not in spec:
             continue
@@ -162,7 +173,9 @@ def check_table(spec, work):
 
 # ---- the report ----------------------------------------------------------------------------------
 REQUIRED_TOP = ('steps stop_reason total_seconds vertices faces mode attributes attribute_dimension attribute_weight '
-                'automatic_parameters choices noise_level noise_deviation noise_displacement components rejected_steps order').split()
+                'automatic_parameters choices noise_level noise_deviation noise_displacement components rejected_steps order '
+                'maximum_deviation relative_maximum_deviation largest_deviation attribute_maximum_deviation '
+                'largest_attribute_deviation bound_fidelity_weight bound_held_vertices bound_retaken_steps clamped_vertices').split()
 REQUIRED_STEP = ('step time solver_iterations residual area energy H_integral max_displacement assemble_seconds '
                  'solve_seconds time_step noise_displacement').split()
 

@@ -22,3 +22,6 @@ CGAL_AF_add_named_parameter(solver_tolerance_t,          solver_tolerance,      
 CGAL_AF_add_named_parameter(solver_maximum_iterations_t, solver_maximum_iterations, solver_maximum_iterations)
 CGAL_AF_add_named_parameter(vertex_curvature_map_t,      vertex_curvature_map,      vertex_curvature_map)
 CGAL_AF_add_named_parameter(flow_order_t,                flow_order,                flow_order)
+CGAL_AF_add_named_parameter(maximum_deviation_t,          maximum_deviation,          maximum_deviation)
+CGAL_AF_add_named_parameter(absolute_maximum_deviation_t, absolute_maximum_deviation, absolute_maximum_deviation)
+CGAL_AF_add_named_parameter(attribute_maximum_deviation_t, attribute_maximum_deviation, attribute_maximum_deviation)

@@ -5,11 +5,12 @@
 // the fourth-order one (Fourth_order_system.h), and its solution by the chosen solver (Solver_choice.h).
 // With several components the unknowns are scaled per component so that the solver's tolerance means the
 // same on each; the displacement returned is in model units. On a fixed surface the matrix is constant:
-// formed once, and factorised once when factorised at all.
+// formed once, and factorised once when factorised at all (again when a vertex's own fidelity is raised).
 
 #ifndef CGAL_ANISOTROPIC_FAIRING_INTERNAL_FLOW_STEP_SOLVER_H
 #define CGAL_ANISOTROPIC_FAIRING_INTERNAL_FLOW_STEP_SOLVER_H
 
+#include <CGAL/Anisotropic_fairing/internal/flow/Output_fidelity.h>
 #include <CGAL/Anisotropic_fairing/internal/flow/Step_units.h>
 #include <CGAL/Anisotropic_fairing/internal/flow/Stepper_settings.h>
 #include <CGAL/Anisotropic_fairing/internal/solve/Fourth_order_system.h>
@@ -32,9 +33,11 @@ class Step_solver
 {
 public:
   /// `columns`: of the unknowns; `constant_matrix`: every step has the same system (a fixed surface).
+  /// `fidelity`: what a vertex's own fidelity holds (null: no bound), at `anchor` (the input's written positions).
   Step_solver(const Eigen::SparseMatrix<double>& pattern, const Free_block& block, const Stepper_settings& s,
-              Eigen::Index columns, bool constant_matrix)
-    : pattern_(pattern), block_(block), A_(block.matrix), cg_(s.solver_tolerance, s.solver_maximum_iterations),
+              Eigen::Index columns, bool constant_matrix, const Output_fidelity* fidelity = nullptr,
+              const Control_matrix* anchor = nullptr)
+    : pattern_(pattern), block_(block), fidelity_(fidelity), anchor_(anchor), A_(block.matrix), cg_(s.solver_tolerance, s.solver_maximum_iterations),
       choice_(s.solver, block.size(), constant_matrix, s.direct_solver), constant_(constant_matrix),
       R_(pattern.rows(), columns), B_(Eigen::Index(block.size()), columns), dX_(Control_matrix::Zero(Eigen::Index(block.size()), columns))
   {
@@ -43,25 +46,55 @@ public:
 
   /// Solves the step of `factor` times the time step at (M, L), from X (X0: the input, for the fidelity
   /// term), the system divided by `sys`. `mass_weight`: the local time scale; `unknown_scale`: per row with
-  /// several components; either empty: none. `direct`: whether it was factorised.
+  /// several components; either empty: none. `mu`: each vertex's own fidelity (Deviation_bound.h; empty:
+  /// none). `direct`: whether it was factorised.
   Solve_statistics solve(const std::vector<double>& M, const std::vector<double>& L, const Step_units& u,
                          const std::vector<double>& mass_weight, const std::vector<double>& unknown_scale, double factor, double sys,
-                         const Control_matrix& X, const Control_matrix& X0, bool& direct)
+                         const Control_matrix& X, const Control_matrix& X0, const std::vector<double>& mu, bool& direct)
   {
-    const bool form = !(constant_ && formed_);
+    const bool held_changed = mu != formed_mu_;
+    const bool form = !(constant_ && formed_) || held_changed;
+    if(constant_ && formed_ && held_changed) choice_.matrix_changed();
+    formed_mu_ = mu;
+    // a vertex's own fidelity on what is written (Output_fidelity.h): its part of the matrix, E
+    const bool held = fidelity_ && !mu.empty();
+    if(held) held_mass(M, mass_weight, mu);
+    if(held && form)
+    {
+      std::vector<double> coefficient(mu.size());
+      for(std::size_t j = 0; j < mu.size(); ++j)
+      {
+        const double scale = unknown_scale.empty() ? 1.0 : unknown_scale[j];
+        coefficient[j] = factor * u.tau[j] / (sys * scale * scale);
+      }
+      extra_ = fidelity_->matrix(held_, block_.free_index, coefficient, Eigen::Index(block_.size()));
+    }
     if(fourth_order_)
     {
       if(form)
       {
         fourth_order_->set_operator(M, L, mass_weight);
         fourth_order_->set_coefficients(u.tau, u.omega, factor, sys, unknown_scale);
+        fourth_order_->set_extra(held ? &extra_ : nullptr);
       }
       fourth_order_->residual(u.tau, u.omega, X, X0, factor / sys, R_);
     }
     else
     {
-      if(form) fill_step_matrix(A_, block_.source, block_.entry_column, block_.free, M, L, u.tau, u.omega, factor, sys, unknown_scale, mass_weight);
+      if(form)
+      {
+        fill_step_matrix(A_, block_.source, block_.entry_column, block_.free, M, L, u.tau, u.omega, factor, sys, unknown_scale, mass_weight);
+        if(held)
+          for(Eigen::Index k = 0; k < extra_.outerSize(); ++k)
+            for(Eigen::SparseMatrix<double>::InnerIterator it(extra_, k); it; ++it) A_.coeffRef(it.row(), it.col()) += it.value();
+      }
       step_residual(pattern_, M, L, u.tau, u.omega, X, X0, factor / sys, R_, mass_weight);
+    }
+    if(held)
+    {
+      std::vector<double> residual_factor(mu.size());
+      for(std::size_t j = 0; j < mu.size(); ++j) residual_factor[j] = factor / sys * u.tau[j];
+      fidelity_->add_to_residual(held_, X, *anchor_, residual_factor, R_);
     }
     formed_ = true;
     block_.gather(R_, B_);
@@ -91,15 +124,34 @@ public:
   double solve_seconds() const { return solve_seconds_; }
 
 private:
+  // held_i = mu_i D_i, D_i = sum_j M_ij (with the local time scale's weights): a vertex's fidelity on its
+  // lumped mass
+  void held_mass(const std::vector<double>& M, const std::vector<double>& mass_weight, const std::vector<double>& mu)
+  {
+    const int* outer = pattern_.outerIndexPtr();
+    const int* inner = pattern_.innerIndexPtr();
+    held_.assign(mu.size(), 0.0);
+    for(std::size_t j = 0; j < mu.size(); ++j)
+      for(int p = outer[j]; p < outer[j + 1]; ++p)
+      {
+        const std::size_t i = std::size_t(inner[p]);
+        held_[i] += M[std::size_t(p)] * (mass_weight.empty() ? 1.0 : mass_weight[i] * mass_weight[j]);
+      }
+    for(std::size_t i = 0; i < mu.size(); ++i) held_[i] *= mu[i];
+  }
+
   const Eigen::SparseMatrix<double>& pattern_;
   const Free_block& block_;
-  Eigen::SparseMatrix<double> A_;   // the system of a second-order step
+  const Output_fidelity* fidelity_;
+  const Control_matrix* anchor_;
+  Eigen::SparseMatrix<double> A_, extra_;   // the system of a second-order step
   std::unique_ptr<Fourth_order_system> fourth_order_;
   Block_conjugate_gradient cg_;
   Solver_choice choice_;
   bool constant_, formed_ = false, scaled_ = false;
   double solve_seconds_ = 0;
   Control_matrix R_, B_, dX_, model_dX_;
+  std::vector<double> formed_mu_, held_;
 };
 
 } // namespace internal

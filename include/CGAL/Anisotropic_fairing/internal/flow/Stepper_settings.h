@@ -32,9 +32,13 @@ struct Stepper_settings
   Direct_solver_factory direct_solver;   // the factorisation (empty: Sparse_cholesky)
   bool verbose = false;
   bool limit_output = false;        // the positions measured are the Loop limit points of the control points
+  bool limit_written = false;       // the positions written are (a bound holds them: Deviation_bound.h)
   const Noise_estimate* noise = nullptr;   // of the input, in the stepper's numbering (noise criterion)
   int maximum_rejections = 5;       // retries of a step, each with a quarter of the time step
   bool local_time_scale = false;    // the time step follows the mesh's density (Local_time_scale.h)
+  double maximum_deviation = 0;     // the bound on the written geometry's motion (0: none), in units of l if relative
+  bool relative_deviation = true;
+  double attribute_maximum_deviation = 0;   // on the attribute columns as the stepper holds them (0: none)
 };
 
 } // namespace internal

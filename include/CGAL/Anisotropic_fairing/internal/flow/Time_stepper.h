@@ -25,6 +25,7 @@
 #include <CGAL/Anisotropic_fairing/Isotropic_diffusion_tensor.h>
 #include <CGAL/Anisotropic_fairing/internal/mesh/Ghost_layer.h>
 #include <CGAL/Anisotropic_fairing/internal/mesh/Mesh_components.h>
+#include <CGAL/Anisotropic_fairing/internal/flow/Deviation_bound.h>
 #include <CGAL/Anisotropic_fairing/internal/flow/Local_time_scale.h>
 #include <CGAL/Anisotropic_fairing/internal/flow/Noise_estimate.h>
 #include <CGAL/Anisotropic_fairing/internal/flow/Normal_motion.h>
@@ -152,6 +153,19 @@ private:
       count_folds(layer_, Cache::has_second_derivatives, components_.of_face, component_edge_, Z, initial);
       input_folds = count_folded_edges(*layer_.topology, layer_.real_faces, Z0, components_.of_face, component_edge_);
     }
+    // the user's bound on the written positions (Deviation_bound.h), Yb, held by the vertices' own fidelity
+    Deviation_bound bound = make_bound(s, Z, fixed, report);
+    const Output_fidelity fidelity(*layer_.topology, s.limit_written);
+    Control_matrix Yb;
+    auto written = [&](const Control_matrix& W) -> const Control_matrix& {
+      if(fixed || s.limit_written != limit_output_) { if(s.limit_written) limit_points(layer_, W, Yb); else Yb = W; return Yb; }
+      output_positions(W, Y);
+      return Y;
+    };
+    const Control_matrix anchor = bound.active() ? written(Z) : Control_matrix();
+    bound.set_start(anchor, Z0);
+    int bound_retries = 0;
+    const int maximum_bound_retries = 4;
     Surface_soundness accepted = initial;
     Lowest_curvature lowest_H(a);
     const double target = noise_stop ? s.stopping.noise_discrepancy * s.noise->relative_sigma() : 0.0;
@@ -162,7 +176,7 @@ private:
     const double first_discrepancy = noise_stop ? std::max(discrepancy, s.noise->relative_displacement(Y, Z0, {}, true)) : 0.0;
 
     const Eigen::Index nfree = Eigen::Index(block_.size());
-    Step_solver solver(operator_.pattern(), block_, s, Z.cols(), fixed);
+    Step_solver solver(operator_.pattern(), block_, s, Z.cols(), fixed, bound.active() ? &fidelity : nullptr, &anchor);
     Control_matrix Zc, Z_previous;
     // the last surface with no more folded edges than the input mesh (or its limit surface): what the
     // run falls back to if the surface it ends on has more
@@ -192,7 +206,7 @@ private:
       // system and right-hand side at Z_n, divided by sys so that a huge tau cannot overflow
       clock.reset();
       const Solve_statistics sol = solver.solve(operator_.M(), operator_.L(), units_, mass_weight, unknown_scale, factor,
-                                                system_scale(factor, s.order), Z, Z0, st.direct_solve);
+                                                system_scale(factor, s.order), Z, Z0, bound.weights(), st.direct_solve);
       st.solve_seconds = solver.solve_seconds();
       st.assemble_seconds = assemble_seconds + clock.time() - st.solve_seconds;
       assemble_seconds = 0;
@@ -260,6 +274,21 @@ private:
         break;
       }
 
+      // a written position carried past the user's bound: the step again, those vertices held harder
+      if(bound.active() && finite && bound_retries < maximum_bound_retries)
+      {
+        std::vector<double> tau(units_.tau);
+        for(double& t : tau) t *= factor;
+        if(bound.exceeded_and_raised(written(Zc), Z0, block_.free, tau))
+        {
+          if(!fixed) operator_.restore();
+          ++bound_retries;
+          ++report.bound_retaken_steps;
+          continue;
+        }
+      }
+      bound_retries = 0;
+
       // the noise level is passed within this step: take it again, shorter, so that it ends there (the
       // displacement grows fastest at first, so the secant undershoots the time and each retry comes closer)
       const double candidate_discrepancy = noise_stop ? s.noise->relative_displacement(Y, Z0, {}) : 0.0;
@@ -312,10 +341,21 @@ private:
       if(noise_stop && s.order == 4 && report.stop_reason != Stop_reason::NOISE_LEVEL && previous_discrepancy > 0 &&
          (discrepancy - previous_discrepancy) / discrepancy < st.time_step / (16 * std::pow(mean_edge_, 4)))
         report.stop_reason = Stop_reason::NOISE_REMOVED;
+      // with a maximum deviation short of the noise the displacement levels off where the bound holds it
+      if(noise_stop && bound.active() && report.stop_reason != Stop_reason::NOISE_LEVEL && previous_discrepancy > 0 &&
+         discrepancy - previous_discrepancy < 0.01 * discrepancy)
+        report.stop_reason = Stop_reason::DEVIATION_BOUND;
       if(!fixed) report.noise_displacement = st.noise_displacement;
+      if(bound.active())
+      {
+        std::vector<double> tau(units_.tau);
+        for(double& t : tau) t *= std::min(1.0, 2 * factor);   // the next step's
+        bound.accept(written(Z), Z0, block_.free, tau);
+      }
       report.steps.push_back(st);
       if(s.verbose) print(st);
-      if(report.stop_reason == Stop_reason::NOISE_LEVEL || report.stop_reason == Stop_reason::NOISE_REMOVED)
+      if(report.stop_reason == Stop_reason::NOISE_LEVEL || report.stop_reason == Stop_reason::NOISE_REMOVED ||
+         report.stop_reason == Stop_reason::DEVIATION_BOUND)
       {
         callback(report.steps.back());
         break;
@@ -354,8 +394,23 @@ private:
                        "); the run ends on the last surface without new folds (step " + std::to_string(unfolded_steps) + ")";
       if(noise_stop) { output_positions(Z, Y); report.noise_displacement = s.noise->relative_displacement(Y, Z0, {}); }
     }
+    report.bound_fidelity_weight = bound.largest_weight();
+    report.bound_held_vertices = bound.held_rows();
     report.total_seconds = total.time();
     return report;
+  }
+
+  // the bounds of the settings on Z's columns: the geometry (the first 3, not on a fixed surface) and the
+  // attributes (the others, all of them on a fixed surface)
+  Deviation_bound make_bound(const Stepper_settings& s, const Control_matrix& Z, bool fixed, Fairing_report& report) const
+  {
+    Column_bound g, a;
+    if(s.maximum_deviation > 0)
+      report.maximum_deviation = s.relative_deviation ? s.maximum_deviation * units_.scale : s.maximum_deviation;
+    if(s.maximum_deviation > 0 && !fixed) { g.count = 3; g.radius = report.maximum_deviation; }
+    a.first = fixed ? 0 : 3;
+    if(s.attribute_maximum_deviation > 0 && Z.cols() > a.first) { a.count = Z.cols() - a.first; a.radius = s.attribute_maximum_deviation; }
+    return Deviation_bound(g, a, std::size_t(Z.rows()));
   }
 
   // 1, or what the system of a step with f times the time step is divided by so that a huge time

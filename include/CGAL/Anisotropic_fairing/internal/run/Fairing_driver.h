@@ -20,6 +20,7 @@
 #include <CGAL/Anisotropic_fairing/internal/run/Fairing_parameters.h>
 #include <CGAL/Anisotropic_fairing/internal/run/Tensor_selection.h>
 #include <CGAL/Anisotropic_fairing/internal/flow/Boundary_constraints.h>
+#include <CGAL/Anisotropic_fairing/internal/flow/Deviation_bound.h>
 #include <CGAL/Anisotropic_fairing/internal/element/Ghosted_patch_cache.h>
 #include <CGAL/Anisotropic_fairing/internal/mesh/Indexed_mesh.h>
 #include <CGAL/Anisotropic_fairing/internal/element/Linear_element_cache.h>
@@ -35,8 +36,10 @@
 #include <boost/graph/graph_traits.hpp>
 #include <boost/property_map/property_map.hpp>
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <limits>
 #include <string>
 #include <type_traits>
 #include <utility>
@@ -152,7 +155,8 @@ void select_smoother(Run& run, const Tensor& tensor, const Ghost_layer& layer, c
   c[1].name = "isotropic"; c[1].report = run(Isotropic_diffusion_tensor(), c[1].Y, 2, input);
   c[2].name = "uniform"; c[2].report = run(Uniform_diffusion_tensor(), c[2].Y, 4, input);
   auto at_noise_level = [](const Fairing_report& r) {
-    return r.succeeded() && (r.stop_reason == Stop_reason::NOISE_LEVEL || r.stop_reason == Stop_reason::NOISE_REMOVED);
+    return r.succeeded() && (r.stop_reason == Stop_reason::NOISE_LEVEL || r.stop_reason == Stop_reason::NOISE_REMOVED ||
+                             r.stop_reason == Stop_reason::DEVIATION_BOUND);
   };
   // the normals of the risk: the isotropic result's, or the first sound one's
   const Candidate* base = &c[1];
@@ -257,6 +261,27 @@ Fairing_report fair(TriangleMesh& tm, VertexPointMap vpm, AttributeMap attribute
   for(int v : layer.boundary_vertices) border[std::size_t(v)] = true;
   std::vector<bool> isolated(n, false);   // on no surface: nothing to fair
   for(int v : layer.isolated_vertices) isolated[std::size_t(v)] = constrained[std::size_t(v)] = true;
+  // the rows written back: the user's constrained, boundary and isolated vertices keep their values
+  std::vector<bool> written(n);
+  for(std::size_t i = 0; i < n; ++i) written[i] = !constrained[i] && !border[i];
+  // a bound on the attributes, in the units the stepper holds them in
+  if(mode == Attribute_mode::COUPLED) s.attribute_maximum_deviation *= attribute_weight;
+  // the bounds on what is written, once the run's result is: a vertex its fidelity could not hold goes on
+  // the bound (Deviation_bound.h); the largest deviations written, in the user's units
+  auto bound_written = [&](Control_matrix& Y, const Control_matrix& start, Fairing_report& r) {
+    if(!r.succeeded()) return;
+    const double none = std::numeric_limits<double>::infinity();
+    const Column_bound geometry{ 0, mode == Attribute_mode::ATTRIBUTES_ONLY ? 0 : 3, r.maximum_deviation > 0 ? r.maximum_deviation : none };
+    const Column_bound values{ 3, Y.cols() - 3, s.attribute_maximum_deviation > 0 ? s.attribute_maximum_deviation : none };
+    std::vector<bool> moved(n, false);
+    clamp_to_bound(Y, start, geometry, written, moved);
+    clamp_to_bound(Y, start, values, written, moved);
+    r.clamped_vertices = std::size_t(std::count(moved.begin(), moved.end(), true));
+    r.largest_deviation = largest_written_deviation(Y, start, geometry, written);
+    r.largest_attribute_deviation = largest_written_deviation(Y, start, values, written) /
+                                    (mode == Attribute_mode::COUPLED ? attribute_weight : 1.0);
+    r.attribute_maximum_deviation = given.settings.attribute_maximum_deviation;
+  };
   // what the borders hold: the boundary vertices, and the influence set of the limit boundary curve
   auto hold = [&](const std::vector<bool>& held) {
     std::size_t count = 0;
@@ -296,6 +321,7 @@ Fairing_report fair(TriangleMesh& tm, VertexPointMap vpm, AttributeMap attribute
   // the noise stop measures the limit surface, the surface faired, whichever positions are written: a
   // run that writes control points (the tool does, to give exact limit normals) then stops where the
   // limit-surface run stops, and `limit_weight` says how far toward the limit points the latter writes
+  s.limit_written = element == Finite_element::LOOP && output == Output_positions::LIMIT_SURFACE;
   s.limit_output = element == Finite_element::LOOP &&
                    (output == Output_positions::LIMIT_SURFACE || s.stopping.noise_discrepancy > 0);
   std::string choices;
@@ -350,6 +376,7 @@ Fairing_report fair(TriangleMesh& tm, VertexPointMap vpm, AttributeMap attribute
           if(!isolated[i]) vertex_limit_value(*layer.topology, extended, int(i), Y.row(Eigen::Index(i)).data());
         if(limit_weight < 1) Y.leftCols(3) = start.leftCols(3) + limit_weight * (Y.leftCols(3) - start.leftCols(3));
       }
+      bound_written(Y, start, r);
       return r;
     };
     report = run(tensor, X, s.order, input);
@@ -363,8 +390,10 @@ Fairing_report fair(TriangleMesh& tm, VertexPointMap vpm, AttributeMap attribute
     auto run = [&](const auto& t, Control_matrix& Y, int order, const Control_matrix& start) {
       Y = start;
       double limit_weight = 1;   // the linear element writes its control points: no limit surface to approach
-      return run_stepper(cache, ordering, components, component_edge, mean_edge, Y, mode, constrained, border, t, with_order(s, order),
-                         callback, setup_seconds, limit_weight);
+      Fairing_report r = run_stepper(cache, ordering, components, component_edge, mean_edge, Y, mode, constrained, border, t, with_order(s, order),
+                                     callback, setup_seconds, limit_weight);
+      bound_written(Y, start, r);
+      return r;
     };
     report = run(tensor, X, s.order, input);
     if(select_tensor) select_smoother(run, tensor, layer, input, noise_sigma, X, report, choices);

@@ -76,6 +76,17 @@ Fairing_parameters read_fairing_parameters(const NamedParameters& np, bool has_a
   s.fidelity_weight = absolute_w ? double(choose_parameter(get_parameter(np, internal_np::fidelity_weight), 0.0))
                                  : double(choose_parameter(get_parameter(np, internal_np::relative_fidelity_weight), 0.0));
   check_parameter(std::isfinite(s.fidelity_weight) && s.fidelity_weight >= 0, "the fidelity weight must be finite and >= 0");
+  const bool relative_bound = !is_default_parameter<NamedParameters, internal_np::maximum_deviation_t>::value;
+  const bool absolute_bound = !is_default_parameter<NamedParameters, internal_np::absolute_maximum_deviation_t>::value;
+  check_parameter(!(relative_bound && absolute_bound), "give either maximum_deviation or absolute_maximum_deviation, not both");
+  s.relative_deviation = !absolute_bound;
+  s.maximum_deviation = absolute_bound ? double(choose_parameter(get_parameter(np, internal_np::absolute_maximum_deviation), 0.0))
+                                       : double(choose_parameter(get_parameter(np, internal_np::maximum_deviation), 0.0));
+  // 0: no bound
+  check_parameter(std::isfinite(s.maximum_deviation) && s.maximum_deviation >= 0, "the maximum deviation must be finite and >= 0");
+  s.attribute_maximum_deviation = double(choose_parameter(get_parameter(np, internal_np::attribute_maximum_deviation), 0.0));
+  check_parameter(std::isfinite(s.attribute_maximum_deviation) && s.attribute_maximum_deviation >= 0,
+                  "the attribute maximum deviation must be finite and >= 0");
   s.maximum_steps = std::size_t(choose_parameter(get_parameter(np, CGAL::internal_np::number_of_iterations),
                                                   automatic ? automatic_maximum_steps : 10u));
   s.order = choose_parameter(get_parameter(np, internal_np::flow_order), 2);

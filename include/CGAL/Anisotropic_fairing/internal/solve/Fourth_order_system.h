@@ -104,6 +104,18 @@ public:
     }
   }
 
+  /// E (free x free, in A's units, null: none) added to A: a vertex's own fidelity (Output_fidelity.h). After
+  /// set_coefficients; E must outlive the solves.
+  void set_extra(const Eigen::SparseMatrix<double>* E)
+  {
+    extra_ = E;
+    A_formed_ = false;
+    if(E)
+      for(Eigen::Index k = 0; k < E->outerSize(); ++k)
+        for(Eigen::SparseMatrix<double>::InnerIterator it(*E, k); it; ++it)
+          if(it.row() == it.col()) diagonal_[k] += it.value();
+  }
+
   /// The diagonal of A, for the preconditioner.
   const Eigen::VectorXd& diagonal() const { return diagonal_; }
 
@@ -123,6 +135,7 @@ public:
       const int i = free_[k];
       Y.row(Eigen::Index(k)) = a_[i] * mass_.row(i) + b_[i] * full_.row(i);
     }
+    if(extra_) Y += *extra_ * X;
   }
 
   /// A formed, for a factorisation (once per operator and coefficients).
@@ -133,6 +146,7 @@ public:
     A_formed_ = true;
     const Eigen::SparseMatrix<double> S = a_.asDiagonal() * M_ + b_.asDiagonal() * Q_;
     A_ = select_ * S * select_.transpose();
+    if(extra_) A_ += *extra_;
     return A_;
   }
 
@@ -157,6 +171,7 @@ private:
   std::vector<int> free_;
   Eigen::SparseMatrix<double> M_, L_, Q_, A_;
   bool Q_formed_ = false, A_formed_ = false;
+  const Eigen::SparseMatrix<double>* extra_ = nullptr;
   Eigen::VectorXd inverse_mass_, m_diagonal_, q_diagonal_, a_, b_, diagonal_;
   mutable Control_matrix full_, mass_, laplace_;
 };

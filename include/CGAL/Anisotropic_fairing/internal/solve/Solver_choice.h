@@ -39,6 +39,8 @@ public:
   {}
 
   bool factorise_now() const { return mode_ != ITERATE; }
+  /// A constant matrix changed (a vertex's fidelity was raised): a kept factorisation is redone.
+  void matrix_changed() { if(direct_) direct_->matrix_changed(); }
   bool may_fall_back() const { return automatic_ && may_factorise_; }
   Direct_solver& direct_solver()
   {

@@ -271,9 +271,12 @@ public:
   virtual Solve_statistics solve(const Eigen::SparseMatrix<double>& A, const Control_matrix& B, Control_matrix& X) = 0;
   /// For a matrix that does not change between solves: factorise at the first solve only.
   void keep_factorisation(bool keep) { keep_factorisation_ = keep; }
+  /// The kept factorisation no longer fits the matrix: factorise at the next solve.
+  void matrix_changed() { factorised_ = false; }
 
 protected:
   bool keep_factorisation_ = false;
+  bool factorised_ = false;
 };
 
 /// Makes the direct solver to use; empty: Sparse_cholesky.
@@ -329,7 +332,6 @@ public:
 private:
   Eigen::SimplicialLDLT<Eigen::SparseMatrix<double>, Eigen::Lower> ldlt_;
   bool analysed_ = false;
-  bool factorised_ = false;
 };
 
 inline std::unique_ptr<Direct_solver> make_direct_solver(const Direct_solver_factory& factory)

@@ -71,7 +71,6 @@ public:
 
 private:
   SolverTraits traits_;
-  bool factorised_ = false;
 };
 
 /// The factory of Stepper_settings::direct_solver for the user's traits

@@ -1,0 +1,175 @@
+// Copyright (c) 2026 Anisotropic_fairing developers.
+// SPDX-License-Identifier: GPL-3.0-or-later
+//
+// The user's bound on how far a written vertex may move off the input (named parameter maximum_deviation).
+// Bajaj & Xu leave the choice of the fidelity weight for such a bound open (their Section 7). Here each
+// vertex gets a fidelity of its own, mu_i, added to the global one as a lumped (diagonal) mass term, so the
+// step's matrix stays symmetric positive definite: mu_i is raised where a step would carry the written
+// position past the bound, and that step is taken again (Output_fidelity.h: what mu holds is the written
+// position). What mu leaves beyond the bound, within its cap, the write-back puts on the bound.
+
+#ifndef CGAL_ANISOTROPIC_FAIRING_INTERNAL_FLOW_DEVIATION_BOUND_H
+#define CGAL_ANISOTROPIC_FAIRING_INTERNAL_FLOW_DEVIATION_BOUND_H
+
+#include <CGAL/Anisotropic_fairing/internal/types/Control_matrix.h>
+
+#include <algorithm>
+#include <cmath>
+#include <cstddef>
+#include <limits>
+#include <vector>
+
+namespace CGAL {
+namespace Anisotropic_fairing {
+namespace internal {
+
+/// The columns a bound applies to and its radius (model units; infinity: none).
+struct Column_bound
+{
+  Eigen::Index first = 0, count = 0;
+  double radius = std::numeric_limits<double>::infinity();
+  bool active() const { return count > 0 && std::isfinite(radius); }
+};
+
+/// |Y_i - Y0_i| over the bound's columns
+inline double row_deviation(const Control_matrix& Y, const Control_matrix& Y0, Eigen::Index i, const Column_bound& b)
+{
+  return (Y.row(i).segment(b.first, b.count) - Y0.row(i).segment(b.first, b.count)).norm();
+}
+
+/// Puts each written row of Y (`written[i]`) whose columns of the bound lie farther than its radius from the
+/// input's on the bound, along the line to the input, and marks it in `moved`.
+inline void clamp_to_bound(Control_matrix& Y, const Control_matrix& input, const Column_bound& b, const std::vector<bool>& written,
+                           std::vector<bool>& moved)
+{
+  if(!b.active()) return;
+  for(Eigen::Index i = 0; i < Y.rows(); ++i)
+  {
+    const double d = row_deviation(Y, input, i, b);
+    if(!written[std::size_t(i)] || !(d > b.radius)) continue;
+    // the point is rounded onto the grid of doubles near the input: shrink until the rounded one is within
+    const Eigen::RowVectorXd away = Y.row(i).segment(b.first, b.count) - input.row(i).segment(b.first, b.count);
+    double scale = b.radius / d;
+    for(int attempt = 0; ; ++attempt)
+    {
+      Y.row(i).segment(b.first, b.count) = input.row(i).segment(b.first, b.count) + scale * away;
+      const double e = row_deviation(Y, input, i, b);
+      if(e <= b.radius) break;
+      if(attempt == 8) { Y.row(i).segment(b.first, b.count) = input.row(i).segment(b.first, b.count); break; }
+      scale *= b.radius / e * (1 - 1e-15);
+    }
+    moved[std::size_t(i)] = true;
+  }
+}
+
+/// The largest deviation of a written row over the bound's columns
+inline double largest_written_deviation(const Control_matrix& Y, const Control_matrix& input, const Column_bound& b,
+                                        const std::vector<bool>& written)
+{
+  double largest = 0;
+  if(b.count > 0)
+    for(Eigen::Index i = 0; i < Y.rows(); ++i)
+      if(written[std::size_t(i)]) largest = std::max(largest, row_deviation(Y, input, i, b));
+  return largest;
+}
+
+class Deviation_bound
+{
+public:
+  /// `geometry`, `attributes`: the two bounds on the stepper's columns; `rows`: of the stepper's matrices.
+  Deviation_bound(const Column_bound& geometry, const Column_bound& attributes, std::size_t rows)
+    : bounds_{ geometry, attributes }
+  {
+    if(active()) weight_.assign(rows, 0.0);
+  }
+
+  bool active() const { return bounds_[0].active() || bounds_[1].active(); }
+
+  /// The written positions of the input (its limit points, or the input itself), where the fidelity
+  /// anchors them: a row held there cannot come closer to the input, so its target is the larger of the
+  /// bound and where it starts (the write-back puts it on the bound). Holding the limit points at the
+  /// input itself would make the control points interpolate the noise.
+  void set_start(const Control_matrix& Y0, const Control_matrix& input)
+  {
+    if(!active()) return;
+    for(int b = 0; b < 2; ++b)
+    {
+      start_[b].assign(std::size_t(Y0.rows()), 0.0);
+      if(bounds_[b].active())
+        for(Eigen::Index i = 0; i < Y0.rows(); ++i) start_[b][std::size_t(i)] = row_deviation(Y0, input, i, bounds_[b]);
+    }
+    previous_ = Y0;
+  }
+
+  /// Whether the candidate's written positions Y carry some free row past its bound (by more than 1%:
+  /// the write-back puts what is left on the bound). Where they do, mu is raised on the row (raise()), and
+  /// the step is to be taken again. `tau`: each row's time step of the step taken.
+  bool exceeded_and_raised(const Control_matrix& Y, const Control_matrix& input, const std::vector<int>& free,
+                           const std::vector<double>& tau)
+  {
+    bool exceeded = false;
+    for_each_bounded(Y, input, free, [&](std::size_t r, int b, double radius, double d) {
+      if(d > 1.01 * radius && raise(r, d, row_deviation(previous_, input, Eigen::Index(r), bounds_[b]), radius, tau[r], 4))
+        exceeded = true;
+    });
+    return exceeded;
+  }
+
+  /// The written positions of the accepted step: where the next step's motion starts. A row whose next
+  /// step, as long as this one, would carry it past 0.9 of its bound is held before it gets there.
+  void accept(const Control_matrix& Y, const Control_matrix& input, const std::vector<int>& free, const std::vector<double>& tau)
+  {
+    for_each_bounded(Y, input, free, [&](std::size_t r, int b, double radius, double d) {
+      const double step = row_deviation(Y, previous_, Eigen::Index(r), bounds_[b]);
+      if(d + step > 0.9 * radius) raise(r, d + step, d, radius, tau[r], 1);
+    });
+    if(active()) previous_ = Y;
+  }
+
+  /// mu per row (1/time, model units), empty without a bound
+  const std::vector<double>& weights() const { return weight_; }
+  double largest_weight() const { return weight_.empty() ? 0.0 : *std::max_element(weight_.begin(), weight_.end()); }
+  std::size_t held_rows() const { return std::size_t(std::count_if(weight_.begin(), weight_.end(), [](double w) { return w > 0; })); }
+
+private:
+  // body(row, bound, the row's radius, its deviation in Y) for each free row and each bound in force; a
+  // row's radius is the bound, or where it starts if farther (set_start())
+  template <typename Body>
+  void for_each_bounded(const Control_matrix& Y, const Control_matrix& input, const std::vector<int>& free, const Body& body) const
+  {
+    for(int b = 0; b < 2; ++b)
+      if(bounds_[b].active())
+        for(int row : free)
+        {
+          const std::size_t r = std::size_t(row);
+          body(r, b, std::max(bounds_[b].radius, start_[b][r]), row_deviation(Y, input, Eigen::Index(row), bounds_[b]));
+        }
+  }
+
+  // mu of row r to what cuts a motion from `before` to `d` to the room left below 0.9 radius (a step of tau
+  // damps it by about 1 / (1 + tau mu)), at least `growth` times what it was, and at most tau mu = 1e3:
+  // beyond, the row's fidelity only worsens the system's conditioning, and the write-back does the rest.
+  // Whether mu grew.
+  bool raise(std::size_t r, double d, double before, double radius, double tau, double growth)
+  {
+    if(weight_[r] * tau >= maximum_held) return false;
+    const double room = std::max(0.9 * radius - before, 0.05 * radius);
+    const double needed = std::max(std::max(d - before, 0.0) / room - 1, growth > 1 ? 1.0 : 0.0) / tau;
+    const double raised = std::min(std::max(needed, growth * weight_[r]), maximum_held / tau);
+    if(!(raised > weight_[r])) return false;
+    weight_[r] = raised;
+    return true;
+  }
+
+  static constexpr double maximum_held = 1e3;   // tau mu
+  Column_bound bounds_[2];
+  std::vector<double> start_[2];
+  std::vector<double> weight_;
+  Control_matrix previous_;
+};
+
+} // namespace internal
+} // namespace Anisotropic_fairing
+} // namespace CGAL
+
+#endif // CGAL_ANISOTROPIC_FAIRING_INTERNAL_FLOW_DEVIATION_BOUND_H

@@ -1,0 +1,236 @@
+// The user's bound on the deviation (named parameter maximum_deviation, issue 17): every written vertex
+// stays within the bound of its input position, for several bounds, on a noisy sphere and on the
+// Fandisk0.3 denoising pair; as the bound goes to 0 the output tends to the input; with a bound the run
+// never reaches, the result is byte for byte the unbounded run's; a bound near the noise still removes
+// noise (the output is closer to the true sphere than the input); the bound holds with both tensors,
+// the fourth-order flow, the linear element, borders, constrained vertices, the automatic defaults, and
+// for attributes (separate, coupled, attributes only) with a bound of their own.
+//
+// argv[1]: the test data folder.
+
+#include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
+#include <CGAL/Surface_mesh.h>
+#include <CGAL/boost/graph/IO/polygon_mesh_io.h>
+
+#include <CGAL/Anisotropic_fairing/anisotropic_fairing.h>
+
+#include "test_support/check.h"
+#include "test_support/mesh_coordinates.h"
+#include "test_support/mesh_generators.h"
+
+#include <cmath>
+#include <cstdio>
+#include <random>
+#include <string>
+#include <vector>
+
+typedef CGAL::Exact_predicates_inexact_constructions_kernel K;
+typedef CGAL::Surface_mesh<K::Point_3> Mesh;
+namespace AF = CGAL::Anisotropic_fairing;
+using AF_test::byte_identical;
+using AF_test::coordinates;
+
+// the largest |x_i(out) - x_i(in)| over the vertices
+double largest_deviation(const std::vector<double>& in, const std::vector<double>& out)
+{
+  double d = 0;
+  for(std::size_t i = 0; i + 2 < in.size(); i += 3)
+    d = std::max(d, std::sqrt(std::pow(out[i] - in[i], 2) + std::pow(out[i + 1] - in[i + 1], 2) + std::pow(out[i + 2] - in[i + 2], 2)));
+  return d;
+}
+
+// root mean square of |x| - 1: the distance to the unit sphere
+double sphere_error(const std::vector<double>& x)
+{
+  double s = 0;
+  for(std::size_t i = 0; i + 2 < x.size(); i += 3) s += std::pow(std::sqrt(x[i] * x[i] + x[i + 1] * x[i + 1] + x[i + 2] * x[i + 2]) - 1, 2);
+  return std::sqrt(s / double(x.size() / 3));
+}
+
+Mesh noisy_sphere(unsigned int seed, double amplitude)
+{
+  Mesh m;
+  AF_test::make_icosphere(m, 4);
+  std::mt19937 rng(seed);
+  std::normal_distribution<double> noise(0, amplitude);
+  for(auto v : m.vertices())
+  {
+    const K::Vector_3 n = m.point(v) - CGAL::ORIGIN;
+    m.point(v) = m.point(v) + noise(rng) * n / std::sqrt(n.squared_length());
+  }
+  return m;
+}
+
+// the bound holds on every vertex to rounding; the report says so
+void check_bound(const std::vector<double>& in, const std::vector<double>& out, const AF::Fairing_report& r, double bound,
+                 const std::string& what)
+{
+  AF_CHECK(r.succeeded(), what + ": the run succeeds (" + r.message + ")");
+  AF_CHECK_REL(r.maximum_deviation, bound, 1e-12, what + ": the report gives the bound in model units");
+  const double d = largest_deviation(in, out);
+  AF_CHECK(d <= bound * (1 + 1e-12), what + ": every vertex within the bound (" + std::to_string(d) + " vs " + std::to_string(bound) + ")");
+  AF_CHECK(r.largest_deviation <= bound * (1 + 1e-12) && std::abs(r.largest_deviation - d) <= 1e-12 * bound,
+           what + ": the report's largest deviation is the output's");
+}
+
+void sphere_bounds()
+{
+  const Mesh input = noisy_sphere(1, 0.01);
+  const std::vector<double> in = coordinates(input);
+  const auto fixed = AF::parameters::relative_time_step(2e-3).number_of_iterations(10u).stopping_criteria(AF::Stopping_criteria::none());
+  Mesh free_run = input;
+  const AF::Fairing_report r0 = AF::anisotropic_fairing(free_run, fixed);
+  const std::vector<double> unbounded = coordinates(free_run);
+  const double moved = largest_deviation(in, unbounded);
+  AF_CHECK(r0.succeeded() && r0.maximum_deviation == 0, "the unbounded run reports no bound");
+  for(double relative : { 0.002, 0.005, 0.01 })
+  {
+    Mesh m = input;
+    const AF::Fairing_report r = AF::anisotropic_fairing(m, fixed.maximum_deviation(relative));
+    const std::vector<double> out = coordinates(m);
+    const std::string what = "sphere, relative bound " + std::to_string(relative);
+    AF_CHECK(moved > relative * r.scale, what + ": the unbounded run goes beyond it (the bound is tested)");
+    check_bound(in, out, r, relative * r.scale, what);
+    AF_CHECK(r.bound_fidelity_weight > 0 && r.bound_held_vertices > 0, what + ": vertices were held by their fidelity");
+    // the noise is 0.01: a bound at or above it still removes noise
+    if(relative >= 0.005)
+      AF_CHECK(sphere_error(out) < 0.75 * sphere_error(in), what + ": closer to the sphere than the input (" +
+               std::to_string(sphere_error(out)) + " vs " + std::to_string(sphere_error(in)) + ")");
+  }
+  // the absolute bound
+  {
+    Mesh m = input;
+    const AF::Fairing_report r = AF::anisotropic_fairing(m, fixed.absolute_maximum_deviation(0.004));
+    check_bound(in, coordinates(m), r, 0.004, "sphere, absolute bound 0.004");
+  }
+  // as the bound goes to zero, the output tends to the input
+  for(double relative : { 1e-4, 1e-7 })
+  {
+    Mesh m = input;
+    const AF::Fairing_report r = AF::anisotropic_fairing(m, fixed.maximum_deviation(relative));
+    check_bound(in, coordinates(m), r, relative * r.scale, "sphere, bound " + std::to_string(relative));
+  }
+  // a bound the run never reaches changes nothing, to the last bit
+  {
+    Mesh m = input;
+    const AF::Fairing_report r = AF::anisotropic_fairing(m, fixed.maximum_deviation(10.0));
+    AF_CHECK(byte_identical(coordinates(m), unbounded), "sphere, bound 10: the unbounded result, byte for byte");
+    AF_CHECK(r.bound_held_vertices == 0 && r.clamped_vertices == 0, "sphere, bound 10: no vertex held");
+    AF_CHECK(r.steps.size() == r0.steps.size(), "sphere, bound 10: as many steps");
+  }
+  // the same with the other settings a user may combine with it
+  const double bound = 0.004;
+  {
+    Mesh m = input;
+    const AF::Fairing_report r = AF::anisotropic_fairing(m, fixed.absolute_maximum_deviation(bound).flow_order(4));
+    check_bound(in, coordinates(m), r, bound, "sphere, fourth-order flow");
+  }
+  {
+    Mesh m = input;
+    const AF::Fairing_report r = AF::anisotropic_fairing(m, fixed.absolute_maximum_deviation(bound).finite_element(AF::Finite_element::LINEAR));
+    check_bound(in, coordinates(m), r, bound, "sphere, linear element");
+  }
+  {
+    Mesh m = input;
+    const AF::Fairing_report r = AF::anisotropic_fairing(m, fixed.absolute_maximum_deviation(bound)
+                                                               .output_positions(AF::Output_positions::CONTROL_POINTS));
+    check_bound(in, coordinates(m), r, bound, "sphere, control points written");
+  }
+  {
+    Mesh m = input;
+    auto held = m.add_property_map<Mesh::Vertex_index, bool>("v:held", false).first;
+    std::size_t k = 0;
+    for(auto v : m.vertices()) held[v] = (k++ % 17) == 0;
+    const AF::Fairing_report r = AF::anisotropic_fairing(m, fixed.absolute_maximum_deviation(bound).vertex_is_constrained_map(held));
+    const std::vector<double> out = coordinates(m);
+    check_bound(in, out, r, bound, "sphere, constrained vertices");
+    bool kept = true;
+    k = 0;
+    for(auto v : m.vertices())
+      if(held[v]) kept = kept && out[3 * k] == in[3 * k] && out[3 * k + 1] == in[3 * k + 1] && out[3 * k + 2] == in[3 * k + 2], ++k;
+      else ++k;
+    AF_CHECK(kept, "sphere, constrained vertices: held exactly");
+  }
+  // the automatic defaults with only a bound
+  {
+    Mesh m = input;
+    const AF::Fairing_report r = AF::anisotropic_fairing(m, AF::parameters::absolute_maximum_deviation(bound));
+    const std::vector<double> out = coordinates(m);
+    check_bound(in, out, r, bound, "sphere, automatic defaults");
+    AF_CHECK(sphere_error(out) < sphere_error(in), "sphere, automatic defaults: noise removed");
+  }
+}
+
+// the denoising pair: both tensors, several bounds
+void fandisk_bounds(const std::string& data)
+{
+  Mesh input;
+  if(!AF_CHECK(CGAL::IO::read_polygon_mesh(data + "/fandisk0.3_noisy.obj", input), "read fandisk0.3_noisy.obj")) return;
+  const std::vector<double> in = coordinates(input);
+  for(double relative : { 0.001, 0.003 })
+  {
+    Mesh m = input;
+    const AF::Fairing_report r = AF::anisotropic_fairing(m, AF::parameters::relative_time_step(1e-4).number_of_iterations(8u)
+        .diffusion_tensor(AF::Anisotropic_diffusion_tensor::automatic()).stopping_criteria(AF::Stopping_criteria::none())
+        .maximum_deviation(relative));
+    check_bound(in, coordinates(m), r, relative * r.scale, "fandisk, anisotropic, bound " + std::to_string(relative));
+    Mesh d = input;
+    const AF::Fairing_report rd = AF::anisotropic_fairing(d, AF::parameters::maximum_deviation(relative));
+    check_bound(in, coordinates(d), rd, relative * rd.scale, "fandisk, default run, bound " + std::to_string(relative));
+  }
+}
+
+// a noisy hemisphere: its border held, the rest bounded
+void border_bound(const std::string& data)
+{
+  Mesh input;
+  if(!AF_CHECK(CGAL::IO::read_polygon_mesh(data + "/hemisphere.off", input), "read hemisphere.off")) return;
+  AF_test::perturb_vertices(input, 0.01, 3);
+  const std::vector<double> in = coordinates(input);
+  Mesh m = input;
+  const AF::Fairing_report r = AF::anisotropic_fairing(m, AF::parameters::relative_time_step(1e-3).number_of_iterations(10u)
+      .stopping_criteria(AF::Stopping_criteria::none()).absolute_maximum_deviation(0.003));
+  check_bound(in, coordinates(m), r, 0.003, "hemisphere with its border");
+}
+
+// attributes: a noisy scalar on the sphere, bounded in its own units
+void attribute_bounds()
+{
+  const Mesh input = noisy_sphere(2, 0.01);
+  const std::vector<double> in = coordinates(input);
+  for(AF::Attribute_mode mode : { AF::Attribute_mode::SEPARATE, AF::Attribute_mode::COUPLED, AF::Attribute_mode::ATTRIBUTES_ONLY })
+  {
+    Mesh m = input;
+    auto f = m.add_property_map<Mesh::Vertex_index, double>("v:f", 0.0).first;
+    std::mt19937 rng(5);
+    std::normal_distribution<double> noise(0, 0.2);
+    for(auto v : m.vertices()) f[v] = m.point(v).z() + noise(rng);
+    std::vector<double> f0;
+    for(auto v : m.vertices()) f0.push_back(f[v]);
+    const double bound = 0.05;
+    const AF::Fairing_report r = AF::anisotropic_fairing(m, m.points(), f, AF::parameters::relative_time_step(2e-3).number_of_iterations(8u)
+        .stopping_criteria(AF::Stopping_criteria::none()).attribute_mode(mode).attribute_weight(2.0)
+        .attribute_maximum_deviation(bound).absolute_maximum_deviation(0.004));
+    const std::string what = "attributes, mode " + std::to_string(int(mode));
+    AF_CHECK(r.succeeded(), what + ": succeeds");
+    double largest = 0, moved = 0;
+    std::size_t k = 0;
+    for(auto v : m.vertices()) { largest = std::max(largest, std::abs(f[v] - f0[k])); moved += std::abs(f[v] - f0[k]); ++k; }
+    AF_CHECK(largest <= bound * (1 + 1e-12), what + ": every value within its bound (" + std::to_string(largest) + ")");
+    AF_CHECK(moved / double(k) > 0.1 * bound, what + ": the values were faired");
+    AF_CHECK(std::abs(r.largest_attribute_deviation - largest) <= 1e-12, what + ": the report's largest attribute deviation");
+    AF_CHECK(r.attribute_maximum_deviation == bound, what + ": the report's attribute bound");
+    if(mode != AF::Attribute_mode::ATTRIBUTES_ONLY) AF_CHECK(largest_deviation(in, coordinates(m)) <= 0.004 * (1 + 1e-12), what + ": the geometry within its bound");
+    else AF_CHECK(byte_identical(in, coordinates(m)), what + ": the geometry untouched");
+  }
+}
+
+int main(int argc, char** argv)
+{
+  const std::string data = argc > 1 ? argv[1] : "data";
+  sphere_bounds();
+  fandisk_bounds(data);
+  border_bound(data);
+  attribute_bounds();
+  return AF_test::report();
+}
