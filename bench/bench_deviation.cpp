@@ -82,9 +82,9 @@ void pairs(const std::string& dir, const std::string& only)
 void table_one(const std::string& source)
 {
   Mesh input;
-  if(!CGAL::IO::read_polygon_mesh(source + "/test/Anisotropic_fairing/data/bunny.off", input)) { std::printf("cannot read bunny.off\n"); return; }
+  if(!CGAL::IO::read_polygon_mesh(source + "/examples/Anisotropic_fairing/data/bumpy.off", input)) { std::printf("cannot read bumpy.off\n"); return; }
   const double area0 = PMP::area(input);
-  std::printf("\n### Table I on bunny.off (%zu vertices, area %.4g)\n\n", num_vertices(input), area0);
+  std::printf("\n### Table I on bumpy.off (%zu vertices, area %.4g)\n\n", num_vertices(input), area0);
   std::printf("| omega (1/l^2) | area | steps | largest deviation | mean deviation | with the bound instead: area | steps | largest | mean | on the bound |\n"
               "|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|\n");
   AF::Stopping_criteria steady = AF::Stopping_criteria::none();
@@ -101,8 +101,9 @@ void table_one(const std::string& source)
     Mesh b = input;
     const AF::Fairing_report rb = AF::anisotropic_fairing(b, flow.absolute_maximum_deviation(d.largest));
     const Deviation db = deviation(b, input);
-    std::printf("| %.3g | %.4g | %zu | %.4g | %.4g | %s | %zu | %.4g | %.4g | %zu |\n", w, PMP::area(m), r.steps.size(), d.largest, d.mean,
-                rb.succeeded() ? fmt("%.4g", PMP::area(b)).c_str() : AF::to_string(rb.status), rb.steps.size(), db.largest, db.mean, rb.clamped_vertices);
+    std::printf("| %.3g | %.4g | %zu (%s) | %.4g | %.4g | %s | %zu (%s) | %.4g | %.4g | %zu |\n", w, PMP::area(m), r.steps.size(),
+                AF::to_string(r.stop_reason), d.largest, d.mean, rb.succeeded() ? fmt("%.4g", PMP::area(b)).c_str() : AF::to_string(rb.status),
+                rb.steps.size(), AF::to_string(rb.stop_reason), db.largest, db.mean, rb.clamped_vertices);
     std::fflush(stdout);
   }
 }
