@@ -3,10 +3,9 @@
 //
 // The user's bound on how far a written vertex may move off the input (named parameter maximum_deviation).
 // Bajaj & Xu leave the choice of the fidelity weight for such a bound open (their Section 7). Here each
-// vertex gets a fidelity of its own, mu_i, added to the global one as a lumped (diagonal) mass term, so the
-// step's matrix stays symmetric positive definite: mu_i is raised where a step would carry the written
-// position past the bound, and that step is taken again (Output_fidelity.h: what mu holds is the written
-// position). What mu leaves beyond the bound, within its cap, the write-back puts on the bound.
+// vertex gets a fidelity of its own, mu_i, on its written position (Output_fidelity.h), on top of the global
+// one: mu_i is raised where a step would carry the written position past the bound, and that step is taken
+// again. What mu leaves beyond the bound, within its cap, the write-back puts on the bound.
 
 #ifndef CGAL_ANISOTROPIC_FAIRING_INTERNAL_FLOW_DEVIATION_BOUND_H
 #define CGAL_ANISOTROPIC_FAIRING_INTERNAL_FLOW_DEVIATION_BOUND_H

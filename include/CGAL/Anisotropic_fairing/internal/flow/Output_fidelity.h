@@ -47,11 +47,11 @@ public:
     return mask_;
   }
 
-  /// Whether row i's mask reads only the real vertices (of `rows`): a border vertex's reads ghosts, and a
-  /// border vertex is never written.
-  bool real_mask(int i, std::size_t rows) const
+  /// Whether a mask reads only the real vertices (of `rows`): a border vertex's reads ghosts, and a border
+  /// vertex is never written.
+  static bool real_mask(const std::vector<std::pair<int, double>>& m, std::size_t rows)
   {
-    for(const auto& a : mask(i))
+    for(const auto& a : m)
       if(std::size_t(a.first) >= rows) return false;
     return true;
   }
@@ -65,8 +65,9 @@ public:
     std::vector<Eigen::Triplet<double>> t;
     for(std::size_t i = 0; i < held.size(); ++i)
     {
-      if(held[i] == 0 || !real_mask(int(i), held.size())) continue;
+      if(held[i] == 0) continue;
       const std::vector<std::pair<int, double>>& m = mask(int(i));
+      if(!real_mask(m, held.size())) continue;
       for(const auto& a : m)
         for(const auto& b : m)
         {
@@ -86,8 +87,9 @@ public:
     Eigen::RowVectorXd e(X.cols());
     for(std::size_t i = 0; i < held.size(); ++i)
     {
-      if(held[i] == 0 || !real_mask(int(i), held.size())) continue;
+      if(held[i] == 0) continue;
       const std::vector<std::pair<int, double>>& m = mask(int(i));
+      if(!real_mask(m, held.size())) continue;
       e = Y0.row(Eigen::Index(i));
       for(const auto& a : m) e -= a.second * X.row(a.first);
       e *= held[i];

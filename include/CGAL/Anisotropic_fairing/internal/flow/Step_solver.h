@@ -58,9 +58,9 @@ public:
     formed_mu_ = mu;
     // a vertex's own fidelity on what is written (Output_fidelity.h): its part of the matrix, E
     const bool held = fidelity_ && !mu.empty();
-    if(held) held_mass(M, mass_weight, mu);
-    if(held && form)
+    if(held && form)   // (otherwise M and mu are those of the last solve, and so is held_)
     {
+      held_mass(M, mass_weight, mu);
       std::vector<double> coefficient(mu.size());
       for(std::size_t j = 0; j < mu.size(); ++j)
       {
