@@ -4,7 +4,10 @@
 // never reaches, the result is byte for byte the unbounded run's; a bound near the noise still removes
 // noise (the output is closer to the true sphere than the input); the bound holds with both tensors,
 // the fourth-order flow, the linear element, borders, constrained vertices, the automatic defaults, and
-// for attributes (separate, coupled, attributes only) with a bound of their own.
+// for attributes (separate, coupled, attributes only) with a bound of their own. Run to a steady state, the
+// bounded flow settles within the bound where the unbounded one shrinks past it: on a sphere at the radius
+// where the uniform weight it chose balances the mean curvature, omega (r0 - r) = 2 / r. The control points
+// the run gives back (control_point_map) have the written points as their limit points.
 //
 // argv[1]: the test data folder.
 
@@ -13,6 +16,8 @@
 #include <CGAL/boost/graph/IO/polygon_mesh_io.h>
 
 #include <CGAL/Anisotropic_fairing/anisotropic_fairing.h>
+#include <CGAL/Anisotropic_fairing/Loop_limit_surface.h>
+#include <CGAL/Polygon_mesh_processing/measure.h>
 
 #include "test_support/check.h"
 #include "test_support/mesh_coordinates.h"
@@ -225,6 +230,100 @@ void attribute_bounds()
   }
 }
 
+// mean |x| over the vertices
+double mean_radius(const std::vector<double>& x)
+{
+  double s = 0;
+  for(std::size_t i = 0; i + 2 < x.size(); i += 3) s += std::sqrt(x[i] * x[i] + x[i + 1] * x[i + 1] + x[i + 2] * x[i + 2]);
+  return s / double(x.size() / 3);
+}
+
+// Runs to a steady state (no fidelity weight of the user's): the bound sets the weight that stops the
+// shrinking within it
+void steady_state_bounds(const std::string& data)
+{
+  AF::Stopping_criteria steady = AF::Stopping_criteria::none();
+  steady.steady_speed = 1e-3;
+  const auto flow = AF::parameters::relative_time_step(2e-3).number_of_iterations(2000u).stopping_criteria(steady);
+  // the unit sphere: the weight omega holds a sphere of limit radius r0 at r with omega (r0 - r) = 2 / r
+  {
+    Mesh input;
+    AF_test::make_icosphere(input, 3);
+    const std::vector<double> in = coordinates(input);
+    Mesh limit = input;
+    AF::Loop_limit_surface<Mesh>(input).limit_positions(limit.points());
+    const double r0 = mean_radius(coordinates(limit));
+    const double bound = 0.05;
+    Mesh free_run = input;
+    const AF::Fairing_report r_free = AF::anisotropic_fairing(free_run, flow.number_of_iterations(200u));
+    AF_CHECK(!r_free.succeeded() || largest_deviation(in, coordinates(free_run)) > 2 * bound, "sphere to a steady state: unbounded, it shrinks past the bound");
+    Mesh m = input;
+    const AF::Fairing_report r = AF::anisotropic_fairing(m, flow.absolute_maximum_deviation(bound));
+    const std::vector<double> out = coordinates(m);
+    check_bound(in, out, r, bound, "sphere to a steady state");
+    AF_CHECK(r.stop_reason == AF::Stop_reason::STEADY_STATE, std::string("sphere to a steady state: reached (") + AF::to_string(r.stop_reason) + ")");
+    AF_CHECK(r.bound_uniform_weight > 0, "sphere to a steady state: a uniform weight was chosen");
+    const double radius = mean_radius(out);
+    AF_CHECK_REL(r.bound_uniform_weight * (r0 - radius), 2 / radius, 0.03,
+                 "sphere to a steady state: the weight balances the mean curvature at the radius reached");
+    AF_CHECK(largest_deviation(in, out) > 0.5 * bound, "sphere to a steady state: it fairs up to the bound's neighbourhood");
+  }
+  // bumpy.off: bumps on a sphere; held one by one, the vertices that reach the bound first would become tents
+  {
+    Mesh input;
+    if(!AF_CHECK(CGAL::IO::read_polygon_mesh(data + "/bumpy.off", input), "read bumpy.off")) return;
+    const std::vector<double> in = coordinates(input);
+    for(double relative : { 0.05, 0.2 })
+    {
+      Mesh m = input;
+      const AF::Fairing_report r = AF::anisotropic_fairing(m, flow.maximum_deviation(relative));
+      const std::string what = "bumpy.off to a steady state, bound " + std::to_string(relative);
+      check_bound(in, coordinates(m), r, relative * r.scale, what);
+      AF_CHECK(r.stop_reason == AF::Stop_reason::STEADY_STATE, what + ": reached (" + AF::to_string(r.stop_reason) + ": " + r.message + ")");
+      AF_CHECK(!r.steps.empty() && r.steps.back().H_integral < r.initial.H_integral, what + ": smoother than the input, no tent");
+      AF_CHECK(CGAL::Polygon_mesh_processing::area(m) < CGAL::Polygon_mesh_processing::area(input), what + ": faired (the area shrank)");
+    }
+  }
+}
+
+// The control points given back have the written points as their Loop limit points: with a bound and in
+// the default run, whose result is one of three candidates
+void control_points_given_back(const std::string& data)
+{
+  Mesh input;
+  if(!AF_CHECK(CGAL::IO::read_polygon_mesh(data + "/fandisk0.3_noisy.obj", input), "read fandisk0.3_noisy.obj")) return;
+  auto check = [&](const Mesh& m, const std::vector<K::Point_3>& control, const AF::Fairing_report& r, const std::string& what) {
+    AF_CHECK(r.succeeded(), what + ": succeeds");
+    Mesh c = m;
+    for(auto v : c.vertices()) c.point(v) = control[std::size_t(v)];
+    Mesh limit = m;
+    AF::Loop_limit_surface<Mesh>(c).limit_positions(limit.points());
+    double largest = 0;
+    std::size_t differ = 0;
+    for(auto v : m.vertices())
+    {
+      const double e = std::sqrt(CGAL::squared_distance(limit.point(v), m.point(v)));
+      largest = std::max(largest, e);
+      differ += e > 1e-12 ? 1 : 0;
+    }
+    AF_CHECK(differ <= r.clamped_vertices, what + ": the written points are the control points' limit points (" + std::to_string(differ) +
+             " differ, " + std::to_string(r.clamped_vertices) + " put on the bound; largest " + std::to_string(largest) + ")");
+  };
+  {
+    Mesh m = input;
+    std::vector<K::Point_3> control(num_vertices(m));
+    const AF::Fairing_report r = AF::anisotropic_fairing(m, AF::parameters::maximum_deviation(0.003)
+                                                               .control_point_map(CGAL::make_property_map(control)));
+    check(m, control, r, "control points, default run with a bound");
+  }
+  {
+    Mesh m = input;
+    std::vector<K::Point_3> control(num_vertices(m));
+    const AF::Fairing_report r = AF::anisotropic_fairing(m, AF::parameters::control_point_map(CGAL::make_property_map(control)));
+    check(m, control, r, "control points, default run (" + r.selected_tensor + " kept)");
+  }
+}
+
 int main(int argc, char** argv)
 {
   const std::string data = argc > 1 ? argv[1] : "data";
@@ -232,5 +331,7 @@ int main(int argc, char** argv)
   fandisk_bounds(data);
   border_bound(data);
   attribute_bounds();
+  steady_state_bounds(data);
+  control_points_given_back(data);
   return AF_test::report();
 }

@@ -3,21 +3,14 @@
 //
 // Normals: if the input carries vertex normals (NOFF, PLY nx/ny/nz, OBJ vn) the normals written are
 // those of the faired surface, never the stale input ones:
-//  - Loop element with `--output limit`: the fairing is run with Output_positions::CONTROL_POINTS,
-//    then a Loop_limit_surface is built on the faired control mesh, and its limit_positions() and
-//    limit_normals() are written. limit_positions() applies the same closed-form limit masks as the
-//    library's Output_positions::LIMIT_SURFACE to the same control points, so the positions are the
-//    ones a LIMIT_SURFACE run writes up to the order of the floating-point sums (about 1e-16
-//    relative; the test cli_limit_normals_keep_positions checks 1e-14 absolute on bumpy.off), and the
-//    normals are the exact normals of the faired limit surface at those points (write_limit_surface()
-//    says where this differs from the library's write-back).
+//  - Loop element with `--output limit`: the library writes the limit points (held within the bounds)
+//    and gives the faired control points through its control_point_map; a Loop_limit_surface built on
+//    those gives the exact normals of the faired limit surface at the points written.
 //  - `--output control` or the linear element: the written mesh is the surface itself (control
 //    polygon or P1 surface), so the normals are CGAL::Polygon_mesh_processing::compute_vertex_normals.
-// Without input normals (and without --curvature) the library's LIMIT_SURFACE output is used directly
-// and no normal is written.
 // Curvature (`--curvature`, PLY output): Loop_limit_surface::vertex_curvatures() of the limit surface of
-// the faired control mesh (the same CONTROL_POINTS path as the normals above when the output is the
-// limit surface), written as the double vertex properties k1, k2 and mean_curvature.
+// the faired control mesh (the control_point_map above), written as the double vertex properties k1, k2
+// and mean_curvature.
 // With `--mode attributes` the geometry is not faired: positions and the input's normals are written
 // unchanged (OBJ vn, which CGAL's reader does not read, are recomputed as for `--output control`).
 //
@@ -27,9 +20,7 @@
 // order given, into ONE std::vector<double> per vertex, so that the library faires all of them in one
 // solve with the attribute mode asked for; the result is then scattered back into the original typed
 // properties (integers rounded and clamped to their range, colour channels to 0..255 with alpha kept,
-// floats as float). The `--output limit` path with exact limit normals (above) also gives the
-// attributes their limit values (Loop_limit_surface::limit_values()), boundary and isolated vertices
-// keeping theirs, as the library's LIMIT_SURFACE output does. CGAL's OBJ reader and writer know no vt:
+// floats as float). CGAL's OBJ reader and writer know no vt:
 // this program reads them itself and, when they are one per vertex, keeps them as the "v:texcoord"
 // property (as the OFF reader does) and writes OBJ itself ("f a/a", "f a/a/a" with normals).
 
@@ -42,7 +33,6 @@
 
 #include <CGAL/Anisotropic_fairing/anisotropic_fairing.h>
 #include <CGAL/Anisotropic_fairing/Loop_limit_surface.h>
-#include <CGAL/Anisotropic_fairing/internal/flow/Deviation_bound.h>
 
 #include <algorithm>
 #include <cstdio>
@@ -95,84 +85,6 @@ std::string strip_library_prefix(const std::string& what)
 
 typedef AF::Loop_limit_surface<Mesh> Limit;
 
-// The library's Output_positions::LIMIT_SURFACE write-back, redone on the faired control points that
-// the mesh holds: the exact limit normals (and the curvature) need those control points, which that
-// output replaces, and the library has no public call that writes the limit points and also returns
-// the control points. As the library does, boundary and isolated vertices keep their (held) positions
-// and attribute values. The positions agree with the library's to the order of the floating-point sums
-// (about 1 ulp; cli_limit_normals_keep_positions checks 1e-14 on bumpy.off). When the noise stop ends a
-// run before its first step (the input's own limit surface already off it by more than the noise), the
-// positions are the same blend of the input and its limit points, `Fairing_report::limit_weight`; the
-// normals are then the limit surface's at its own points.
-void write_limit_surface(Mesh& mesh, const Limit& limit, bool normals, std::vector<std::vector<double>>* attribute_values,
-                         double limit_weight)
-{
-  std::vector<Point> input;
-  if(limit_weight < 1) input.assign(mesh.points().begin(), mesh.points().end());
-  if(normals) limit.limit_normals(mesh.property_map<Vertex_index, Vector>("v:normal").first);
-  std::vector<std::pair<Vertex_index, Point>> held;
-  std::vector<std::pair<Vertex_index, std::vector<double>>> held_values;
-  for(Vertex_index v : mesh.vertices())
-    if(mesh.is_border(v) || mesh.is_isolated(v))
-    {
-      held.emplace_back(v, mesh.point(v));
-      if(attribute_values) held_values.emplace_back(v, (*attribute_values)[std::size_t(v)]);
-    }
-  limit.limit_positions(mesh.points());
-  if(limit_weight < 1)
-    for(Vertex_index v : mesh.vertices())
-    {
-      const Point& p0 = input[std::size_t(v)];
-      const Point& p = mesh.point(v);
-      mesh.point(v) = Point(p0.x() + limit_weight * (p.x() - p0.x()), p0.y() + limit_weight * (p.y() - p0.y()),
-                            p0.z() + limit_weight * (p.z() - p0.z()));
-    }
-  if(attribute_values)
-  {
-    const Attribute_vectors map{attribute_values};
-    limit.limit_values(map, map);
-  }
-  for(const auto& h : held) mesh.point(h.first) = h.second;
-  for(const auto& h : held_values) (*attribute_values)[std::size_t(h.first)] = h.second;
-}
-
-// The library holds within the bounds what it writes, here the control points; the limit points computed
-// from them are put within the bounds the same way (internal::clamp_to_bound: a vertex farther off goes
-// onto the bound along the line to its input position), and the report's largest deviations and clamped
-// vertices are those written.
-void bound_limit_points(Mesh& mesh, const std::vector<Point>& input, std::vector<std::vector<double>>* values,
-                        const std::vector<std::vector<double>>& input_values, const Options& o, AF::Fairing_report& report)
-{
-  namespace I = AF::internal;
-  if(input.empty()) return;
-  const std::size_t n = mesh.number_of_vertices();
-  const Eigen::Index d = values && n > 0 ? Eigen::Index((*values)[0].size()) : 0;
-  I::Control_matrix Y(Eigen::Index(n), 3 + d), Y0(Eigen::Index(n), 3 + d);
-  for(Vertex_index v : mesh.vertices())
-  {
-    const Eigen::Index i = Eigen::Index(v);
-    Y.row(i).head(3) << mesh.point(v).x(), mesh.point(v).y(), mesh.point(v).z();
-    Y0.row(i).head(3) << input[std::size_t(i)].x(), input[std::size_t(i)].y(), input[std::size_t(i)].z();
-    for(Eigen::Index k = 0; k < d; ++k) { Y(i, 3 + k) = (*values)[std::size_t(i)][std::size_t(k)]; Y0(i, 3 + k) = input_values[std::size_t(i)][std::size_t(k)]; }
-  }
-  const double none = std::numeric_limits<double>::infinity();
-  const I::Column_bound geometry{ 0, 3, report.maximum_deviation > 0 ? report.maximum_deviation : none };
-  const I::Column_bound attributes{ 3, d, o.attribute_bound > 0 ? o.attribute_bound : none };
-  const std::vector<bool> written(n, true);   // held vertices kept their input values: deviation 0
-  std::vector<bool> moved(n, false);
-  I::clamp_to_bound(Y, Y0, geometry, written, moved);
-  I::clamp_to_bound(Y, Y0, attributes, written, moved);
-  for(Vertex_index v : mesh.vertices())
-  {
-    const Eigen::Index i = Eigen::Index(v);
-    mesh.point(v) = Point(Y(i, 0), Y(i, 1), Y(i, 2));
-    for(Eigen::Index k = 0; k < d; ++k) (*values)[std::size_t(i)][std::size_t(k)] = Y(i, 3 + k);
-  }
-  report.largest_deviation = I::largest_written_deviation(Y, Y0, geometry, written);
-  report.largest_attribute_deviation = I::largest_written_deviation(Y, Y0, attributes, written);
-  report.clamped_vertices = std::size_t(std::count(moved.begin(), moved.end(), true));
-}
-
 } // namespace
 
 int run(const Options& o, Run_record& r)
@@ -216,22 +128,14 @@ int run(const Options& o, Run_record& r)
   std::vector<std::vector<double>> attribute_values;   // per vertex, the columns in order
   if(fair_attributes) gather(mesh, columns, attribute_values);
   const Attribute_vectors attribute_map{&attribute_values};
-  // with a bound and the limit points computed here from the control points the library wrote (below),
-  // the bound is applied to those limit points again: the input, to measure them against
-  const bool bounded = o.has_bound || o.has_relative_bound || o.attribute_bound > 0;
-  std::vector<Point> input_points;
-  std::vector<std::vector<double>> input_values;
-  if(bounded) { input_points.assign(mesh.points().begin(), mesh.points().end()); input_values = attribute_values; }
   // without attributes to fair, GEOMETRY_ONLY: the attribute map is then neither read nor written
   const AF::Attribute_mode library_mode = fair_attributes ? mode : AF::Attribute_mode::GEOMETRY_ONLY;
 
-  // Exact limit normals need the control points: see the comment at the top of this file. With
-  // --mode attributes the geometry is fixed: positions and input normals are written as they are.
-  // The curvature of the faired limit surface needs its control points too.
+  // Exact limit normals and the curvature need the faired control points: see the comment at the top of
+  // this file. With --mode attributes the geometry is fixed: positions and input normals are written as they are.
   const bool limit_output = o.element == AF::Finite_element::LOOP && o.output_positions == AF::Output_positions::LIMIT_SURFACE;
   const bool exact_limit_normals = info.has_normals && limit_output && fair_geometry;
-  const bool limit_from_control = (exact_limit_normals || o.curvature) && limit_output && fair_geometry;
-  const AF::Output_positions library_output = limit_from_control ? AF::Output_positions::CONTROL_POINTS : o.output_positions;
+  std::vector<Point> control_points(mesh.number_of_vertices());
 
   const unsigned int max_steps = o.steps;
   const bool quiet = o.quiet;
@@ -249,8 +153,8 @@ int run(const Options& o, Run_record& r)
                    s.assemble_seconds, s.solve_seconds);
     return true;
   };
-  auto fair = [&mesh, &attribute_map](const auto& np) {
-    return AF::anisotropic_fairing(mesh, mesh.points(), attribute_map, np);
+  auto fair = [&mesh, &attribute_map, &control_points](const auto& np) {
+    return AF::anisotropic_fairing(mesh, mesh.points(), attribute_map, np.control_point_map(CGAL::make_property_map(control_points)));
   };
 
   const AF::Stopping_criteria stop = o.stop == "off" ? AF::Stopping_criteria::none()
@@ -261,7 +165,7 @@ int run(const Options& o, Run_record& r)
   const auto base = AF::parameters::number_of_iterations(max_steps)
                       .stopping_criteria(stop)
                       .finite_element(o.element)
-                      .output_positions(library_output)
+                      .output_positions(o.output_positions)
                       .linear_solver(o.solver)
                       .boundary_handling(o.boundary)
                       .quadrature_degree(o.quadrature_degree)
@@ -288,13 +192,13 @@ int run(const Options& o, Run_record& r)
          "fairing " + o.input + " failed (" + AF::to_string(r.report.status) + "): " +
          (r.report.message.empty() ? std::string("no detail") : r.report.message));
 
-  if(o.curvature || limit_from_control)
+  if(o.curvature || exact_limit_normals)
   {
-    // The mesh holds the faired control points (or, with --output control or --mode attributes, the
-    // points written, whose limit surface is the faired or fixed surface). The limit surface is a
-    // snapshot: one serves the curvature and the limit positions and normals. Only the curvature's
-    // averages use the quadrature (the run's degree); otherwise degree 4 is the cheapest set-up.
-    const Limit limit(mesh, AF::parameters::quadrature_degree(o.curvature ? o.quadrature_degree : 4));
+    // The limit surface of the faired control points serves the curvature and the normals. Only the
+    // curvature's averages use the quadrature (the run's degree); otherwise degree 4 is the cheapest set-up.
+    Mesh control = mesh;
+    for(Vertex_index v : control.vertices()) control.point(v) = control_points[std::size_t(v)];
+    const Limit limit(control, AF::parameters::quadrature_degree(o.curvature ? o.quadrature_degree : 4));
     if(o.curvature)
     {
       std::vector<Limit::Curvature> values(mesh.number_of_vertices());
@@ -311,12 +215,7 @@ int run(const Options& o, Run_record& r)
       }
       r.curvature = true;
     }
-    if(limit_from_control)
-    {
-      write_limit_surface(mesh, limit, exact_limit_normals, fair_attributes ? &attribute_values : nullptr,
-                          r.report.limit_weight);
-      bound_limit_points(mesh, input_points, fair_attributes ? &attribute_values : nullptr, input_values, o, r.report);
-    }
+    if(exact_limit_normals) limit.limit_normals(mesh.property_map<Vertex_index, Vector>("v:normal").first);
   }
   if(info.has_normals)
   {

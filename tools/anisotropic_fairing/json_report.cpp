@@ -99,6 +99,7 @@ std::string report_json(const Options& o, const Run_record& r, double wall_secon
   j["largest_attribute_deviation"] = ran && f.attribute_dimension > 0 ? number(f.largest_attribute_deviation) : Json(nullptr);
   j["bound_fidelity_weight"] = ran ? number(f.bound_fidelity_weight) : Json(nullptr);
   j["bound_held_vertices"] = known(ran, f.bound_held_vertices);
+  j["bound_uniform_weight"] = ran ? number(f.bound_uniform_weight) : Json(nullptr);
   j["bound_retaken_steps"] = known(ran, f.bound_retaken_steps);
   j["clamped_vertices"] = known(ran, f.clamped_vertices);
   j["initial"] = ran ? Json{ { "area", number(f.initial.area) }, { "energy", number(f.initial.energy) },

@@ -148,6 +148,7 @@ struct Fairing_report
   double largest_attribute_deviation = 0; ///< the largest Euclidean distance between a vertex's written and input attribute values
   double bound_fidelity_weight = 0;      ///< the largest fidelity weight a vertex was given to hold it within a bound, model units (1/time; the global one, `fidelity_weight`, comes on top)
   std::size_t bound_held_vertices = 0;   ///< vertices given a fidelity weight of their own by a bound
+  double bound_uniform_weight = 0;       ///< in a run not stopped at the noise level, the fidelity weight every vertex got from a bound (model units, 1/time), at its last value: the steady state within 0.8 of the bound
   std::size_t bound_retaken_steps = 0;   ///< steps taken again, with more vertices held, because they carried a vertex past a bound
   std::size_t clamped_vertices = 0;      ///< written vertices put on a bound along the line to their input position: their fidelity could not hold them (e.g. the input's own limit point lies farther off than the bound)
   std::string choices;            ///< with automatic parameters: what was chosen and why, in one sentence

@@ -93,7 +93,10 @@ of its area per step. `time_step` and `fidelity_weight` give them in model units
                           step taken again) where a step would carry it past; one that weight cannot hold (its cap,
                           or the input's own limit point lying farther off) is written on the bound, along the line
                           to its input position. With automatic parameters a run that the bound holds short of the
-                          noise level ends when its displacement levels off (`Stop_reason::DEVIATION_BOUND`). The
+                          noise level ends when its displacement levels off (`Stop_reason::DEVIATION_BOUND`). A run
+                          not stopped at the noise level (to a steady state, or a number of steps) also gives every
+                          vertex a fidelity weight, once a vertex is halfway to the bound, that puts the flow's steady
+                          state within 0.8 of it (`Fairing_report::bound_uniform_weight`). The
                           report gives the bound in model units, the largest deviation written and how many
                           vertices were held and put on the bound (Section \ref sec_AF_deviation_bound). 0: none}
     \cgalParamType{double >= 0} \cgalParamDefault{`0` (no bound)}
@@ -150,6 +153,15 @@ of its area per step. `time_step` and `fidelity_weight` give them in model units
   \cgalParamNBegin{output_positions}
     \cgalParamDescription{what is written back: points of the faired limit surface at the vertices, or the faired control points}
     \cgalParamType{`Output_positions`} \cgalParamDefault{`Output_positions::LIMIT_SURFACE`}
+  \cgalParamNEnd
+  \cgalParamNBegin{control_point_map}
+    \cgalParamDescription{receives, on success, the faired control points of every vertex: the mesh whose Loop limit
+                          surface is the faired surface (held vertices: their input). With `Output_positions::LIMIT_SURFACE`
+                          the point map gets the limit points, held within `maximum_deviation`, and this map the control
+                          points they come from: what `Loop_limit_surface` needs for the exact normals and curvatures of
+                          the result. With the control points or the linear element written, the same points as the point map}
+    \cgalParamType{a `WritablePropertyMap` with `vertex_descriptor` key and the point type as value}
+    \cgalParamDefault{none}
   \cgalParamNEnd
   \cgalParamNBegin{linear_solver}
     \cgalParamDescription{the solver of each step's symmetric positive definite system}

@@ -6,6 +6,14 @@
 // vertex gets a fidelity of its own, mu_i, on its written position (Output_fidelity.h), on top of the global
 // one: mu_i is raised where a step would carry the written position past the bound, and that step is taken
 // again. What mu leaves beyond the bound, within its cap, the write-back puts on the bound.
+// That suits a run that stops at the noise level, while the flow still removes noise. A run that goes on to
+// a steady state (or for a number of steps) also shrinks the surface as a whole, and vertices held one by
+// one against that become tents. There each vertex also gets a uniform weight, chosen as the steady state
+// of the flow with fidelity suggests: at rest omega (y_i - y0_i) balances the flow's own motion F_i, so
+// omega = max |F_i| / (0.8 bound), from the last step, puts the steady state within 0.8 of the bound and
+// leaves the per-vertex holding the rest. Bajaj & Xu leave this choice open; it is their omega chosen as
+// the surface goes. It comes into force once a vertex is halfway to the bound: a bound the run stays far
+// from changes nothing.
 
 #ifndef CGAL_ANISOTROPIC_FAIRING_INTERNAL_FLOW_DEVIATION_BOUND_H
 #define CGAL_ANISOTROPIC_FAIRING_INTERNAL_FLOW_DEVIATION_BOUND_H
@@ -75,11 +83,12 @@ inline double largest_written_deviation(const Control_matrix& Y, const Control_m
 class Deviation_bound
 {
 public:
-  /// `geometry`, `attributes`: the two bounds on the stepper's columns; `rows`: of the stepper's matrices.
-  Deviation_bound(const Column_bound& geometry, const Column_bound& attributes, std::size_t rows)
-    : bounds_{ geometry, attributes }
+  /// `geometry`, `attributes`: the two bounds on the stepper's columns; `rows`: of the stepper's matrices;
+  /// `uniform`: whether every vertex also gets the uniform weight of a run to a steady state.
+  Deviation_bound(const Column_bound& geometry, const Column_bound& attributes, std::size_t rows, bool uniform)
+    : bounds_{ geometry, attributes }, uniform_(uniform)
   {
-    if(active()) weight_.assign(rows, 0.0);
+    if(active()) { weight_.assign(rows, 0.0); own_.assign(rows, 0.0); }
   }
 
   bool active() const { return bounds_[0].active() || bounds_[1].active(); }
@@ -98,6 +107,7 @@ public:
         for(Eigen::Index i = 0; i < Y0.rows(); ++i) start_[b][std::size_t(i)] = row_deviation(Y0, input, i, bounds_[b]);
     }
     previous_ = Y0;
+    anchor_ = Y0;
   }
 
   /// Whether the candidate's written positions Y carry some free row past its bound (by more than 1%:
@@ -118,17 +128,36 @@ public:
   /// step, as long as this one, would carry it past 0.9 of its bound is held before it gets there.
   void accept(const Control_matrix& Y, const Control_matrix& input, const std::vector<int>& free, const std::vector<double>& tau)
   {
+    double omega = 0;   // the uniform weight's new value
+    bool halfway = false;
     for_each_bounded(Y, input, free, [&](std::size_t r, int b, double radius, double d) {
-      const double step = row_deviation(Y, previous_, Eigen::Index(r), bounds_[b]);
+      halfway = halfway || d > 0.5 * radius;
+      const Eigen::Index i = Eigen::Index(r);
+      const double step = row_deviation(Y, previous_, i, bounds_[b]);
+      if(uniform_)
+      {
+        // the flow's own motion: the step's, with the fidelity's pull added back
+        const auto F = ((Y.row(i) - previous_.row(i)) / tau[r] + weight_[r] * (Y.row(i) - anchor_.row(i))).segment(bounds_[b].first, bounds_[b].count);
+        omega = std::max(omega, F.norm() / (0.8 * radius));
+      }
       if(d + step > 0.9 * radius) raise(r, d + step, d, radius, tau[r], 1);
     });
+    // a change of less than a tenth keeps the weights (and a fixed surface's factorised matrix) as they are
+    if(uniform_ && (halfway || uniform_weight_ > 0) && std::abs(omega - uniform_weight_) > 0.1 * uniform_weight_)
+    {
+      uniform_weight_ = omega;
+      for(int row : free) weight_[std::size_t(row)] = std::max(own_[std::size_t(row)], uniform_weight_);
+    }
     if(active()) previous_ = Y;
   }
 
   /// mu per row (1/time, model units), empty without a bound
   const std::vector<double>& weights() const { return weight_; }
-  double largest_weight() const { return weight_.empty() ? 0.0 : *std::max_element(weight_.begin(), weight_.end()); }
-  std::size_t held_rows() const { return std::size_t(std::count_if(weight_.begin(), weight_.end(), [](double w) { return w > 0; })); }
+  /// the largest weight a row was given of its own, and the rows given one
+  double largest_weight() const { return own_.empty() ? 0.0 : *std::max_element(own_.begin(), own_.end()); }
+  std::size_t held_rows() const { return std::size_t(std::count_if(own_.begin(), own_.end(), [](double w) { return w > 0; })); }
+  /// the uniform weight of a run to a steady state, at its last value (0: none)
+  double uniform_weight() const { return uniform_weight_; }
 
 private:
   // body(row, bound, the row's radius, its deviation in Y) for each free row and each bound in force; a
@@ -156,15 +185,18 @@ private:
     const double needed = std::max(std::max(d - before, 0.0) / room - 1, growth > 1 ? 1.0 : 0.0) / tau;
     const double raised = std::min(std::max(needed, growth * weight_[r]), maximum_held / tau);
     if(!(raised > weight_[r])) return false;
-    weight_[r] = raised;
+    own_[r] = weight_[r] = raised;
     return true;
   }
 
   static constexpr double maximum_held = 1e3;   // tau mu
   Column_bound bounds_[2];
   std::vector<double> start_[2];
-  std::vector<double> weight_;
-  Control_matrix previous_;
+  bool uniform_;
+  double uniform_weight_ = 0;
+  std::vector<double> own_;      // each row's own weight
+  std::vector<double> weight_;   // what holds each row: the larger of its own and the uniform one
+  Control_matrix previous_, anchor_;
 };
 
 } // namespace internal

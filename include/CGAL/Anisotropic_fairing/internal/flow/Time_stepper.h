@@ -154,7 +154,7 @@ private:
       input_folds = count_folded_edges(*layer_.topology, layer_.real_faces, Z0, components_.of_face, component_edge_);
     }
     // the user's bound on the written positions (Deviation_bound.h), Yb, held by the vertices' own fidelity
-    Deviation_bound bound = make_bound(s, Z, fixed, report);
+    Deviation_bound bound = make_bound(s, Z, fixed, !noise_stop, report);
     const Output_fidelity fidelity(*layer_.topology, s.limit_written);
     Control_matrix Yb;
     auto written = [&](const Control_matrix& W) -> const Control_matrix& {
@@ -396,13 +396,14 @@ private:
     }
     report.bound_fidelity_weight = bound.largest_weight();
     report.bound_held_vertices = bound.held_rows();
+    report.bound_uniform_weight = bound.uniform_weight();
     report.total_seconds = total.time();
     return report;
   }
 
   // the bounds of the settings on Z's columns: the geometry (the first 3, not on a fixed surface) and the
   // attributes (the others, all of them on a fixed surface)
-  Deviation_bound make_bound(const Stepper_settings& s, const Control_matrix& Z, bool fixed, Fairing_report& report) const
+  Deviation_bound make_bound(const Stepper_settings& s, const Control_matrix& Z, bool fixed, bool uniform, Fairing_report& report) const
   {
     Column_bound g, a;
     if(s.maximum_deviation > 0)
@@ -410,7 +411,7 @@ private:
     if(s.maximum_deviation > 0 && !fixed) { g.count = 3; g.radius = report.maximum_deviation; }
     a.first = fixed ? 0 : 3;
     if(s.attribute_maximum_deviation > 0 && Z.cols() > a.first) { a.count = Z.cols() - a.first; a.radius = s.attribute_maximum_deviation; }
-    return Deviation_bound(g, a, std::size_t(Z.rows()));
+    return Deviation_bound(g, a, std::size_t(Z.rows()), uniform);
   }
 
   // 1, or what the system of a step with f times the time step is divided by so that a huge time

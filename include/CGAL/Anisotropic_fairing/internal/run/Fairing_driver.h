@@ -134,14 +134,16 @@ inline Stepper_settings with_order(Stepper_settings s, int order)
   return s;
 }
 
-/// Runs the isotropic and the uniform fourth-order flow too (`run(tensor, Y, order, start)` runs from
-/// `start` and writes Y) and keeps, in X and `report`, the result at the noise level whose estimated
+/// Runs the isotropic and the uniform fourth-order flow too (`run(tensor, Y, order, start, Z)` runs from
+/// `start` and writes Y, and its control points in *Z unless null) and keeps, in X, *control and `report`,
+/// the result at the noise level whose estimated
 /// error is lowest (Tensor_selection.h: each candidate runs once more on the probed input), or the first
 /// that succeeded. `sigma`: the noise's deviation at each vertex (0 where there is none to estimate).
 /// Says which in `choices`. (The user's callback sees every run.)
 template <typename Run, typename Tensor>
 void select_smoother(Run& run, const Tensor& tensor, const Ghost_layer& layer, const Control_matrix& input,
-                     const std::vector<double>& sigma, Control_matrix& X, Fairing_report& report, std::string& choices)
+                     const std::vector<double>& sigma, Control_matrix& X, Control_matrix* control, Fairing_report& report,
+                     std::string& choices)
 {
   report.selected_tensor = "anisotropic";
   if(report.succeeded() && report.stop_reason != Stop_reason::NOISE_LEVEL)
@@ -149,11 +151,12 @@ void select_smoother(Run& run, const Tensor& tensor, const Ghost_layer& layer, c
     choices += "; kept the anisotropic result (it did not end at the noise level, where the results are compared)";
     return;
   }
-  struct Candidate { const char* name; Fairing_report report; Control_matrix Y; double risk = std::nan(""); };
+  struct Candidate { const char* name; Fairing_report report; Control_matrix Y, Z; double risk = std::nan(""); };
   std::vector<Candidate> c(3);
   c[0].name = "anisotropic"; c[0].report = report; c[0].Y = X;
-  c[1].name = "isotropic"; c[1].report = run(Isotropic_diffusion_tensor(), c[1].Y, 2, input);
-  c[2].name = "uniform"; c[2].report = run(Uniform_diffusion_tensor(), c[2].Y, 4, input);
+  if(control) c[0].Z = *control;
+  c[1].name = "isotropic"; c[1].report = run(Isotropic_diffusion_tensor(), c[1].Y, 2, input, control ? &c[1].Z : nullptr);
+  c[2].name = "uniform"; c[2].report = run(Uniform_diffusion_tensor(), c[2].Y, 4, input, control ? &c[2].Z : nullptr);
   auto at_noise_level = [](const Fairing_report& r) {
     return r.succeeded() && (r.stop_reason == Stop_reason::NOISE_LEVEL || r.stop_reason == Stop_reason::NOISE_REMOVED ||
                              r.stop_reason == Stop_reason::DEVIATION_BOUND);
@@ -173,9 +176,9 @@ void select_smoother(Run& run, const Tensor& tensor, const Ghost_layer& layer, c
     {
       if(!at_noise_level(c[k].report)) continue;
       Control_matrix Yp;
-      const Fairing_report rp = k == 0 ? run(tensor, Yp, c[0].report.flow_order, probed)
-                              : k == 1 ? run(Isotropic_diffusion_tensor(), Yp, 2, probed)
-                                       : run(Uniform_diffusion_tensor(), Yp, 4, probed);
+      const Fairing_report rp = k == 0 ? run(tensor, Yp, c[0].report.flow_order, probed, nullptr)
+                              : k == 1 ? run(Isotropic_diffusion_tensor(), Yp, 2, probed, nullptr)
+                                       : run(Uniform_diffusion_tensor(), Yp, 4, probed, nullptr);
       if(!rp.succeeded()) continue;
       c[k].risk = risk_estimate(input, c[k].Y, Yp, N, sigma, b);
       if(!std::isfinite(c[k].risk)) continue;
@@ -203,9 +206,22 @@ void select_smoother(Run& run, const Tensor& tensor, const Ghost_layer& layer, c
   }
   if(kept == 0) return;
   X.swap(c[kept].Y);
+  if(control) control->swap(c[kept].Z);
   report = c[kept].report;
   report.selected_tensor = c[kept].name;
 }
+
+/// Puts the control points Z (rows in the private numbering) into the caller's control_point_map, every
+/// vertex (the held ones at their input); nothing without a map.
+template <typename Mesh, typename ControlMap>
+void write_control_points(const Mesh& im, ControlMap map, const Control_matrix& Z, const std::vector<int>& old_of_new)
+{
+  typedef typename boost::property_traits<ControlMap>::value_type Point;
+  for(Eigen::Index i = 0; i < Z.rows(); ++i)
+    put(map, im.vertex(std::size_t(old_of_new[std::size_t(i)])), Point(Z(i, 0), Z(i, 1), Z(i, 2)));
+}
+template <typename Mesh>
+void write_control_points(const Mesh&, CGAL::internal_np::Param_not_found, const Control_matrix&, const std::vector<int>&) {}
 
 template <typename TriangleMesh, typename VertexPointMap, typename AttributeMap, typename NamedParameters>
 Fairing_report fair(TriangleMesh& tm, VertexPointMap vpm, AttributeMap attributes, const NamedParameters& np)
@@ -358,17 +374,22 @@ Fairing_report fair(TriangleMesh& tm, VertexPointMap vpm, AttributeMap attribute
   const bool select_tensor = automatic && is_automatic_tensor(tensor) && mode != Attribute_mode::ATTRIBUTES_ONLY &&
                              s.stopping.noise_discrepancy > 0;
   const Control_matrix input = X;
+  // the control points of the result, for the caller's control_point_map
+  auto control_map = get_parameter(np, internal_np::control_point_map);
+  constexpr bool wants_control = !parameters::is_default_parameter<NamedParameters, internal_np::control_point_map_t>::value;
+  Control_matrix control_points;
   if(element == Finite_element::LOOP)
   {
     Ghosted_patch_cache cache(layer, spec);
     boundary_held = hold(boundary_constrained_vertices(layer, cache, boundary == Boundary_handling::HOLD_BOUNDARY_CURVE));
     setup_seconds = setup.time();
-    auto run = [&](const auto& t, Control_matrix& Y, int order, const Control_matrix& start) {
+    auto run = [&](const auto& t, Control_matrix& Y, int order, const Control_matrix& start, Control_matrix* control) {
       Y = start;
       double limit_weight = 1;
       Fairing_report r = run_stepper(cache, ordering, components, component_edge, mean_edge, Y, mode, constrained, border, t, with_order(s, order),
                                      callback, setup_seconds, limit_weight);
       r.limit_weight = limit_weight;
+      if(control) *control = Y;
       if(r.succeeded() && output == Output_positions::LIMIT_SURFACE)
       {
         const Control_matrix extended = layer.extend(Y);
@@ -377,26 +398,28 @@ Fairing_report fair(TriangleMesh& tm, VertexPointMap vpm, AttributeMap attribute
         if(limit_weight < 1) Y.leftCols(3) = start.leftCols(3) + limit_weight * (Y.leftCols(3) - start.leftCols(3));
       }
       bound_written(Y, start, r);
+      if(control && output == Output_positions::CONTROL_POINTS) *control = Y;   // as written, within the bounds
       return r;
     };
-    report = run(tensor, X, s.order, input);
-    if(select_tensor) select_smoother(run, tensor, layer, input, noise_sigma, X, report, choices);
+    report = run(tensor, X, s.order, input, wants_control ? &control_points : nullptr);
+    if(select_tensor) select_smoother(run, tensor, layer, input, noise_sigma, X, wants_control ? &control_points : nullptr, report, choices);
   }
   else
   {
     Linear_element_cache cache(*layer.topology, layer.real_faces);
     boundary_held = hold(border);
     setup_seconds = setup.time();
-    auto run = [&](const auto& t, Control_matrix& Y, int order, const Control_matrix& start) {
+    auto run = [&](const auto& t, Control_matrix& Y, int order, const Control_matrix& start, Control_matrix* control) {
       Y = start;
       double limit_weight = 1;   // the linear element writes its control points: no limit surface to approach
       Fairing_report r = run_stepper(cache, ordering, components, component_edge, mean_edge, Y, mode, constrained, border, t, with_order(s, order),
                                      callback, setup_seconds, limit_weight);
       bound_written(Y, start, r);
+      if(control) *control = Y;
       return r;
     };
-    report = run(tensor, X, s.order, input);
-    if(select_tensor) select_smoother(run, tensor, layer, input, noise_sigma, X, report, choices);
+    report = run(tensor, X, s.order, input, wants_control ? &control_points : nullptr);
+    if(select_tensor) select_smoother(run, tensor, layer, input, noise_sigma, X, wants_control ? &control_points : nullptr, report, choices);
   }
   if(mode == Attribute_mode::COUPLED && A.cols() > 0) X.rightCols(A.cols()) /= attribute_weight;
   report.faces = im.number_of_faces();
@@ -427,6 +450,7 @@ Fairing_report fair(TriangleMesh& tm, VertexPointMap vpm, AttributeMap attribute
       if(!keep[i] && mode != Attribute_mode::ATTRIBUTES_ONLY) put(vpm, im.vertex(i), Point(result(r, 0), result(r, 1), result(r, 2)));
     }
     if(A.cols() > 0) write_attribute_columns(im, attributes, result, 3, keep);
+    write_control_points(im, control_map, control_points, ordering.old_of_new_vertex);
   }
   report.total_seconds = total.time();
   return report;
