@@ -125,8 +125,10 @@ public:
   }
 
   /// The written positions of the accepted step: where the next step's motion starts. A row whose next
-  /// step, as long as this one, would carry it past 0.9 of its bound is held before it gets there.
-  void accept(const Control_matrix& Y, const Control_matrix& input, const std::vector<int>& free, const std::vector<double>& tau)
+  /// step, as long as this one, would carry it past 0.9 of its bound is held before it gets there. `tau`:
+  /// each row's time step of the next step; `taken`: the accepted step's, as a share of it.
+  void accept(const Control_matrix& Y, const Control_matrix& input, const std::vector<int>& free, const std::vector<double>& tau,
+              double taken)
   {
     double omega = 0;   // the uniform weight's new value
     bool halfway = false;
@@ -137,7 +139,8 @@ public:
       if(uniform_)
       {
         // the flow's own motion: the step's, with the fidelity's pull added back
-        const auto F = ((Y.row(i) - previous_.row(i)) / tau[r] + weight_[r] * (Y.row(i) - anchor_.row(i))).segment(bounds_[b].first, bounds_[b].count);
+        const auto F = ((Y.row(i) - previous_.row(i)) / (taken * tau[r]) + weight_[r] * (Y.row(i) - anchor_.row(i)))
+                         .segment(bounds_[b].first, bounds_[b].count);
         omega = std::max(omega, F.norm() / (0.8 * radius));
       }
       if(d + step > 0.9 * radius) raise(r, d + step, d, radius, tau[r], 1);

@@ -349,8 +349,9 @@ private:
       if(bound.active())
       {
         std::vector<double> tau(units_.tau);
-        for(double& t : tau) t *= std::min(1.0, 2 * factor);   // the next step's
-        bound.accept(written(Z), Z0, block_.free, tau);
+        const double next = std::min(1.0, 2 * factor);
+        for(double& t : tau) t *= next;   // the next step's
+        bound.accept(written(Z), Z0, block_.free, tau, factor / next);
       }
       report.steps.push_back(st);
       if(s.verbose) print(st);
