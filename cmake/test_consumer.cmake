@@ -1,11 +1,11 @@
 # CTest driver for the test `consumer_find_package` (run with `cmake -D... -P`):
-#   (a) install the package from AF_BUILD_DIR into AF_PREFIX,
+#   (a) install the package from AF_BUILD_DIR into AF_PREFIX (and run the installed program's --version),
 #   (b) configure the consumer project AF_CONSUMER_SOURCE_DIR into AF_CONSUMER_BINARY_DIR with
 #       CMAKE_PREFIX_PATH=AF_PREFIX (so only find_package(Anisotropic_fairing) can find it),
 #   (c) build it and (d) run its executable. Any failure is fatal.
 cmake_minimum_required(VERSION 3.14)
 
-foreach(var AF_BUILD_DIR AF_PREFIX AF_CONSUMER_SOURCE_DIR AF_CONSUMER_BINARY_DIR)
+foreach(var AF_BUILD_DIR AF_PREFIX AF_BINDIR AF_CONSUMER_SOURCE_DIR AF_CONSUMER_BINARY_DIR)
   if(NOT DEFINED ${var} OR "${${var}}" STREQUAL "")
     message(FATAL_ERROR "test_consumer.cmake: ${var} is not set")
   endif()
@@ -26,6 +26,8 @@ endfunction()
 file(REMOVE_RECURSE "${AF_PREFIX}")
 af_run("install" "${CMAKE_COMMAND}" --install "${AF_BUILD_DIR}" --prefix "${AF_PREFIX}"
        --config "${AF_BUILD_TYPE}")
+# the program is installed too, and runs from there
+af_run("installed program" "${AF_PREFIX}/${AF_BINDIR}/anisotropic_fairing" --version)
 
 # (b) Configure. The consumer build dir is kept between runs (incremental), but the package
 # location is re-checked every time.

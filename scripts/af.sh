@@ -20,6 +20,7 @@ cd "$ROOT"
 BUILD_DIR="build"
 JOBS=2
 DEB_PACKAGES=(libcgal-dev libeigen3-dev libboost-dev libtbb-dev nlohmann-json3-dev cmake g++ python3)   # nlohmann-json: the program's report; python3: the cli_* tests
+DOC_PACKAGES=(doxygen libjs-mathjax)   # the test command's: the manual, checked without warnings, its formulas offline
 
 # The main program: the one place to change what `af.sh main` runs.
 # The default run, no tuning flag: fairs the noisy fandisk of the denoising benchmark (6475 vertices,
@@ -80,6 +81,7 @@ cmd_main() {
 }
 
 cmd_test() {
+  DEB_PACKAGES+=("${DOC_PACKAGES[@]}")
   cmd_build
   ctest --test-dir "$BUILD_DIR" --output-on-failure --no-tests=error -j"$JOBS"
   cmd_sanitize input

@@ -27,6 +27,7 @@
 #include "fairing_run.h"
 
 #include "attribute_columns.h"
+#include "held_vertices.h"
 #include "mesh_io.h"
 
 #include <CGAL/Polygon_mesh_processing/compute_normal.h>
@@ -136,6 +137,8 @@ int run(const Options& o, Run_record& r)
   const bool limit_output = o.element == AF::Finite_element::LOOP && o.output_positions == AF::Output_positions::LIMIT_SURFACE;
   const bool exact_limit_normals = info.has_normals && limit_output && fair_geometry;
   std::vector<Point> control_points(mesh.number_of_vertices());
+  std::vector<unsigned char> held(mesh.number_of_vertices(), 0);
+  if(!o.hold.empty()) r.held_vertices = read_held_vertices(mesh, o.hold, held);
 
   const unsigned int max_steps = o.steps;
   const bool quiet = o.quiet;
@@ -153,8 +156,9 @@ int run(const Options& o, Run_record& r)
                    s.assemble_seconds, s.solve_seconds);
     return true;
   };
-  auto fair = [&mesh, &attribute_map, &control_points](const auto& np) {
-    return AF::anisotropic_fairing(mesh, mesh.points(), attribute_map, np.control_point_map(CGAL::make_property_map(control_points)));
+  auto fair = [&mesh, &attribute_map, &control_points, &held](const auto& np) {
+    return AF::anisotropic_fairing(mesh, mesh.points(), attribute_map, np.control_point_map(CGAL::make_property_map(control_points))
+                                                                       .vertex_is_constrained_map(CGAL::make_property_map(held)));
   };
 
   const AF::Stopping_criteria stop = o.stop == "off" ? AF::Stopping_criteria::none()

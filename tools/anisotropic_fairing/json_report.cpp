@@ -70,6 +70,8 @@ std::string report_json(const Options& o, const Run_record& r, double wall_secon
   j["mean_edge_length"] = ran ? number(f.mean_edge_length) : Json(nullptr);
   j["normals"] = r.normals;
   j["curvature"] = r.curvature;
+  j["hold"] = o.hold.empty() ? Json(nullptr) : Json(o.hold);
+  j["held_vertices"] = r.held_vertices;
   j["mode"] = mode_name(effective_mode(o));
   j["attributes"] = o.attributes;
   j["attribute_dimension"] = known(ran, f.attribute_dimension);

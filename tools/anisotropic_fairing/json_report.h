@@ -26,6 +26,7 @@ struct Run_record
   AF::Fairing_report report;
   std::string normals = "none";
   bool curvature = false;   // k1, k2, mean_curvature were added to the output
+  std::size_t held_vertices = 0;   // held by --hold
   bool output_written = false;
 };
 

@@ -47,6 +47,11 @@ int main(int argc, char** argv)
       std::fputs(help_text().c_str(), stdout);
       return 0;
     }
+    if(o.version)
+    {
+      std::fputs(version_text().c_str(), stdout);
+      return 0;
+    }
     return run(o, r);
   }
   catch(const Failure& f)

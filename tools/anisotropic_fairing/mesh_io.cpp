@@ -199,6 +199,29 @@ bool fold_alpha(Mesh& mesh, const Range& range, const std::string& color_name, c
   return true;
 }
 
+// The reverse for writing: CGAL's PLY writer writes a colour with an alpha. When the input had none, the
+// colour goes out as the three uchar properties red, green, blue (prefix "v:" or "f:") instead, so that
+// the output's properties are the input's. Returns whether it did.
+template <typename Index, typename Range>
+bool unfold_rgb(Mesh& mesh, const Range& range, const std::string& prefix)
+{
+  Mesh::Property_map<Index, CGAL::IO::Color> color;
+  bool has_color = false;
+  std::tie(color, has_color) = mesh.property_map<Index, CGAL::IO::Color>(prefix + "color");
+  if(!has_color) return false;
+  auto red = mesh.add_property_map<Index, boost::uint8_t>(prefix + "red", 0).first;
+  auto green = mesh.add_property_map<Index, boost::uint8_t>(prefix + "green", 0).first;
+  auto blue = mesh.add_property_map<Index, boost::uint8_t>(prefix + "blue", 0).first;
+  for(Index i : range)
+  {
+    red[i] = color[i].red();
+    green[i] = color[i].green();
+    blue[i] = color[i].blue();
+  }
+  mesh.remove_property_map(color);
+  return true;
+}
+
 // CGAL 5.5's ASCII OFF scanner reads texture coordinates at an index it computes only for files with
 // colours: an "STOFF" (or STNOFF, ...) file without "C" makes it read uninitialised memory (a crash).
 // For such a file, `patched` is its text with "C" inserted after "ST" in the header keyword: with no
@@ -340,7 +363,7 @@ void read_input(const std::string& path, Mesh& mesh, Input_info& info, bool repa
   if(info.format == Format::PLY)
   {
     info.vertex_alpha = fold_alpha<Vertex_index>(mesh, mesh.vertices(), "v:color", "v:alpha");
-    fold_alpha<Face_index>(mesh, mesh.faces(), "f:color", "f:alpha");
+    info.face_alpha = fold_alpha<Face_index>(mesh, mesh.faces(), "f:color", "f:alpha");
   }
   if(info.format == Format::OBJ)
   {
@@ -462,7 +485,17 @@ void write_mesh(const std::string& path, Format f, const Mesh& mesh, const Input
       if(out)
       {
         CGAL::IO::set_mode(out, binary ? CGAL::IO::BINARY : CGAL::IO::ASCII);
-        ok = CGAL::IO::write_PLY(out, mesh, info.ply_comments, CGAL::parameters::stream_precision(17));
+        // colours without the alpha the input did not have (a copy: the mesh is the caller's)
+        const bool vertex_rgb = !info.vertex_alpha && mesh.property_map<Vertex_index, CGAL::IO::Color>("v:color").second;
+        const bool face_rgb = !info.face_alpha && mesh.property_map<Face_index, CGAL::IO::Color>("f:color").second;
+        if(vertex_rgb || face_rgb)
+        {
+          Mesh rgb = mesh;
+          if(vertex_rgb) unfold_rgb<Vertex_index>(rgb, rgb.vertices(), "v:");
+          if(face_rgb) unfold_rgb<Face_index>(rgb, rgb.faces(), "f:");
+          ok = CGAL::IO::write_PLY(out, rgb, info.ply_comments, CGAL::parameters::stream_precision(17));
+        }
+        else ok = CGAL::IO::write_PLY(out, mesh, info.ply_comments, CGAL::parameters::stream_precision(17));
         out.close();
         ok = ok && !out.fail();
       }

@@ -24,6 +24,7 @@ struct Input_info
   bool has_normals = false;       // the input carries vertex normals (v:normal exists)
   bool normals_read = false;      // ... and their values were read (not for OBJ: CGAL's reader skips vn)
   bool vertex_alpha = false;      // PLY: the vertex alpha was folded into v:color (selectable as "alpha")
+  bool face_alpha = false;        // PLY: the face alpha was folded into f:color
   std::string uv_problem;         // OBJ: why its vt could not be kept (empty: none, or kept as v:texcoord)
   std::vector<std::string> warnings;
   std::vector<std::string> notes;   // what was done to read the file (STL corners merged, strips split)

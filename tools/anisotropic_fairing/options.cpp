@@ -4,6 +4,10 @@
 #include "options.h"
 
 #include <CGAL/Anisotropic_fairing/Fairing_settings.h>
+#include <CGAL/version.h>
+
+#include <Eigen/Core>
+#include <boost/version.hpp>
 
 #include <algorithm>
 #include <cctype>
@@ -266,6 +270,12 @@ const Option_spec option_table[] = {
    "vertex's faces (Loop_limit_surface::vertex_curvatures). Needs a .ply\n"
    "OUTPUT and the Loop element",
    [](Options& o, const std::string&, const std::string&) { o.curvature = true; }},
+  {"--hold", nullptr, "NAME|FILE",
+   "hold vertices where they are: those whose numeric vertex property NAME\n"
+   "of the input (PLY) is not 0, or those listed in FILE, one vertex index\n"
+   "(from 0, in the input's order) per line ('#' starts a comment line);\n"
+   "they are written unchanged, attributes included",
+   [](Options& o, const std::string&, const std::string& v) { o.hold = v; }},
   {"--report", nullptr, "FILE.json", "write per-step statistics (also, with status and message, on failure)",
    [](Options& o, const std::string&, const std::string& v) { o.report = v; }},
   {"--repair", nullptr, nullptr,
@@ -279,6 +289,8 @@ const Option_spec option_table[] = {
    [](Options& o, const std::string&, const std::string&) { o.quiet = true; }},
   {"--help", "-h", nullptr, "print this help and exit",
    [](Options& o, const std::string&, const std::string&) { o.help = true; }},
+  {"--version", nullptr, nullptr, "print the versions of the program, CGAL, Eigen and Boost and exit",
+   [](Options& o, const std::string&, const std::string&) { o.version = true; }},
 };
 
 const char* const help_before_options =
@@ -329,7 +341,7 @@ const char* const help_after_options =
 "fidelity_weight, relative_fidelity_weight, mean_edge_length, normals, curvature, mode, attributes,\n"
 "attribute_dimension, attribute_weight, boundary_handling,\n"
 "boundary_vertices, boundary_held_vertices, boundary_loops, isolated_vertices, constrained_vertices,\n"
-"stop_reason, initial {area,\n"
+"hold, held_vertices, stop_reason, initial {area,\n"
 "energy, H_integral}, steps [{step, time, solver_iterations, residual, area, energy, H_integral,\n"
 "max_displacement, step_displacement, assemble_seconds, solve_seconds, direct_solve, time_step,\n"
 "noise_displacement}], setup_seconds,\n"
@@ -394,6 +406,14 @@ bool format_of(const std::string& path, Format& f)
 }
 
 // "  --name VALUE" padded to 28 columns (or followed by three blanks), the help's further lines under it
+std::string version_text()
+{
+  return std::string("anisotropic_fairing ") + AF_VERSION + " (Anisotropic_fairing " + AF_VERSION + ")\n" +
+         "CGAL " + CGAL_VERSION_STR + ", Eigen " + std::to_string(EIGEN_WORLD_VERSION) + "." + std::to_string(EIGEN_MAJOR_VERSION) + "." +
+         std::to_string(EIGEN_MINOR_VERSION) + ", Boost " + std::to_string(BOOST_VERSION / 100000) + "." +
+         std::to_string(BOOST_VERSION / 100 % 1000) + "." + std::to_string(BOOST_VERSION % 100) + "\n";
+}
+
 std::string help_text()
 {
   std::string text = help_before_options;
@@ -445,7 +465,7 @@ void parse_arguments(int argc, char** argv, Options& o)
       if(!has_error) { first_error = f; has_error = true; }
     }
   }
-  if(o.help) return;
+  if(o.help || o.version) return;
   if(has_error) throw first_error;
   if(positional.size() < 2) usage_error("INPUT and OUTPUT are required");
   if(positional.size() > 2) usage_error("unexpected argument '" + positional[2] + "'");

@@ -43,7 +43,9 @@ struct Options
   bool quiet = false;
   bool repair = false;           // --repair: make a non-manifold or inconsistently oriented input usable
   bool report_refused = false;   // the report's path collides with the input or the output: never written
+  std::string hold;            // --hold: a vertex property or a file of vertex indices
   bool help = false;
+  bool version = false;
 };
 
 // Reads the options; throws Failure (exit 2) on a usage error. `o.report` is set as soon as it is
@@ -52,6 +54,8 @@ void parse_arguments(int argc, char** argv, Options& o);
 
 // The text of --help, its option list made from the option table.
 std::string help_text();
+// The text of --version: the program's version and those of the libraries it was built with.
+std::string version_text();
 
 bool automatic_parameters(const Options& o);
 // the anisotropic tensor whose threshold and prefilter are chosen from the mesh

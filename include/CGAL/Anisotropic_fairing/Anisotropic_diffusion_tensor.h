@@ -97,6 +97,22 @@ public:
   double lambda() const { return lambda_; }
   double epsilon() const { return epsilon_; }
 
+  /// \name Named setters
+  /// Each returns the tensor, so that settings chain in place of the constructor's positional arguments:
+  /// `Anisotropic_diffusion_tensor().set_lambda(2.5).set_epsilon(5e-4)`. A tensor given a threshold or a
+  /// prefilter time is no longer automatic.
+  /// @{
+
+  /// the feature threshold \f$\lambda\f$ (units of \f$1/\ell\f$, or 1/length with `set_relative(false)`)
+  Anisotropic_diffusion_tensor& set_lambda(double lambda) { lambda_ = threshold_ = lambda; automatic_ = false; return *this; }
+  /// the prefilter time \f$\varepsilon\f$ (units of \f$\ell^2\f$, or length squared with `set_relative(false)`; 0: none)
+  Anisotropic_diffusion_tensor& set_epsilon(double epsilon) { epsilon_ = prefilter_ = epsilon; automatic_ = false; return *this; }
+  /// whether \f$\lambda\f$ and \f$\varepsilon\f$ are relative to \f$\ell\f$ (the default) or in model units
+  Anisotropic_diffusion_tensor& set_relative(bool relative) { relative_ = relative; return *this; }
+  /// whether each step's tangential motion is removed (the default; `false`: kept, as Bajaj and Xu do)
+  Anisotropic_diffusion_tensor& set_normal_motion_only(bool only) { normal_motion_only_ = only; return *this; }
+  /// @}
+
   /// whether `anisotropic_fairing()` removes the tangential part of each step's displacement
   bool normal_motion_only() const { return normal_motion_only_; }
 

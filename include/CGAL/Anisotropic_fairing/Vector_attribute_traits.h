@@ -149,6 +149,14 @@ struct Vector_attribute_traits<CGAL::IO::Color>
     return CGAL::IO::Color(channel(x[0]), channel(x[1]), channel(x[2]), p.alpha());
   }
 };
+
+namespace internal {
+// whether Vector_attribute_traits<V> is defined (a complete type)
+template <typename V, typename = void>
+struct has_vector_attribute_traits : std::false_type {};
+template <typename V>
+struct has_vector_attribute_traits<V, decltype(void(sizeof(Vector_attribute_traits<V>)))> : std::true_type {};
+} // namespace internal
 /// \endcond
 
 } // namespace Anisotropic_fairing

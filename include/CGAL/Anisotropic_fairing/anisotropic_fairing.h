@@ -20,6 +20,22 @@
 namespace CGAL {
 namespace Anisotropic_fairing {
 
+/// \cond SKIP_IN_MANUAL
+namespace internal {
+// the attribute overloads: one sentence, not pages of template errors, for a value type without traits
+template <typename TriangleMesh, typename VertexPointMap, typename VertexAttributeMap, typename NamedParameters>
+Fairing_report fair_attributes(TriangleMesh& tm, VertexPointMap vpm, VertexAttributeMap attr_map, const NamedParameters& np)
+{
+  typedef typename boost::property_traits<VertexAttributeMap>::value_type Attribute;
+  constexpr bool has_traits = has_vector_attribute_traits<Attribute>::value;
+  static_assert(has_traits, "the attribute map's value type has no CGAL::Anisotropic_fairing::Vector_attribute_traits: "
+                            "specialise it for the type (see Vector_attribute_traits.h) or use a vector type that has one");
+  if constexpr(has_traits) return fair(tm, vpm, attr_map, np);
+  else return Fairing_report();
+}
+} // namespace internal
+/// \endcond
+
 /*!
 \ingroup PkgAnisotropicFairingFunctions
 
@@ -220,7 +236,7 @@ anisotropic_fairing(TriangleMesh& tm, VertexPointMap vpm, VertexAttributeMap att
 {
   static_assert(parameters::is_default_parameter<NamedParameters, CGAL::internal_np::vertex_point_t>::value,
                 "the point map is the second argument: do not also pass vertex_point_map");
-  return internal::fair(tm, vpm, attr_map, np);
+  return internal::fair_attributes(tm, vpm, attr_map, np);
 }
 
 /*!
@@ -241,8 +257,8 @@ anisotropic_fairing(TriangleMesh& tm, VertexAttributeMap attr_map,
 {
   using parameters::choose_parameter;
   using parameters::get_parameter;
-  return internal::fair(tm, choose_parameter(get_parameter(np, CGAL::internal_np::vertex_point),
-                                             get_property_map(CGAL::vertex_point, tm)), attr_map, np);
+  return internal::fair_attributes(tm, choose_parameter(get_parameter(np, CGAL::internal_np::vertex_point),
+                                                        get_property_map(CGAL::vertex_point, tm)), attr_map, np);
 }
 
 /*!

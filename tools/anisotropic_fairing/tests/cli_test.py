@@ -92,6 +92,8 @@ def check_table(spec, work):
         check(len(rows) == spec['rows'], '%s: %d rows, expected %d' % (what, len(rows), spec['rows']))
     for col in spec.get('has_columns', []):
         check(col in columns, '%s: property %s written' % (what, col))
+    if 'columns' in spec:   # exactly these properties, in this order
+        check(columns == spec['columns'], '%s: properties %s, expected %s' % (what, columns, spec['columns']))
     for line in spec.get('header_has', []):   # PLY header lines
         header = [l.strip() for l in read_lines(path)]
         check(line in header[:header.index('end_header')] if 'end_header' in header else False, '%s: header has %r' % (what, line))
@@ -175,7 +177,7 @@ def check_table(spec, work):
 REQUIRED_TOP = ('steps stop_reason total_seconds vertices faces mode attributes attribute_dimension attribute_weight '
                 'automatic_parameters choices noise_level noise_deviation noise_displacement components rejected_steps order '
                 'maximum_deviation relative_maximum_deviation largest_deviation attribute_maximum_deviation '
-                'largest_attribute_deviation bound_fidelity_weight bound_held_vertices bound_uniform_weight bound_retaken_steps clamped_vertices').split()
+                'largest_attribute_deviation bound_fidelity_weight bound_held_vertices bound_uniform_weight bound_retaken_steps clamped_vertices hold held_vertices').split()
 REQUIRED_STEP = ('step time solver_iterations residual area energy H_integral max_displacement assemble_seconds '
                  'solve_seconds time_step noise_displacement').split()
 
@@ -248,6 +250,9 @@ def check_docs(tool, readme, manual):
     helptext = subprocess.run([tool, '--help'], capture_output=True, text=True).stdout
     tool_flags = re.findall(r'^  (--[a-z][a-z-]*)', helptext, re.M)
     check(len(tool_flags) > 10, 'the help lists the options (%d found)' % len(tool_flags))
+    version = subprocess.run([tool, '--version'], capture_output=True, text=True)
+    check(version.returncode == 0 and re.match(r'anisotropic_fairing \d+\.\d+\.\d+ .*\nCGAL \S+, Eigen \d+\.\d+\.\d+, Boost \d+\.\d+\.\d+\n$', version.stdout),
+          '--version prints the versions and exits 0: %r' % version.stdout)
     # README: the first cell of each row of the table under "| option |"
     text = open(readme, encoding='utf-8').read()
     table_text = text[text.index('| option |'):]
