@@ -179,7 +179,8 @@ int run(const Options& o, Run_record& r)
                       .callback(progress);
   try
   {
-    AF::Anisotropic_diffusion_tensor tensor(o.lambda, true, o.epsilon, o.normal_motion_only);
+    AF::Anisotropic_diffusion_tensor tensor = AF::Anisotropic_diffusion_tensor().set_lambda(o.lambda).set_epsilon(o.epsilon)
+                                                .set_normal_motion_only(o.normal_motion_only);
     if(automatic_tensor(o)) tensor = AF::Anisotropic_diffusion_tensor::automatic();
     r.report = o.anisotropic ? with_time_step(base.diffusion_tensor(tensor), o, fair)
                : o.uniform   ? with_time_step(base.diffusion_tensor(AF::Uniform_diffusion_tensor()), o, fair)

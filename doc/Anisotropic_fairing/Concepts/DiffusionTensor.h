@@ -1,6 +1,7 @@
 /*!
 \ingroup PkgAnisotropicFairingConcepts
 \cgalConcept
+\headerfile DiffusionTensor.h <CGAL/Anisotropic_fairing/anisotropic_fairing.h>
 
 The diffusion tensor \f$D\f$ of the fairing equation \f$\partial_t x = \mathrm{div}_M(D\nabla_M x)\f$,
 given to `CGAL::Anisotropic_fairing::anisotropic_fairing()` by the named parameter `diffusion_tensor`.

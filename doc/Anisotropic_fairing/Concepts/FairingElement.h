@@ -1,6 +1,7 @@
 /*!
 \ingroup PkgAnisotropicFairingConcepts
 \cgalConcept
+\headerfile FairingElement.h <CGAL/Anisotropic_fairing/anisotropic_fairing.h>
 
 The finite element the time stepping runs on: for each face of the mesh, the basis functions that are
 non-zero on it and their values and derivatives at the face's quadrature points. This concept is for

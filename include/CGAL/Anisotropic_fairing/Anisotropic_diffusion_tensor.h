@@ -61,7 +61,7 @@ public:
   /// isotropic implicit step of length \f$\varepsilon\f$ from the current one (Bajaj and Xu use
   /// \f$\varepsilon = 0.001\f$), so that noise does not pass for features; in units of \f$\ell^2\f$ if
   /// `relative`, like the time step. The default \f$10^{-3}\f$ did best on the denoising benchmark
-  /// (Fandisk0.3: 3.40 degrees against 4.16 with \f$2\cdot 10^{-3}\f$ and 4.58 with \f$3\cdot 10^{-3}\f$);
+  /// (Fandisk0.3, 40 steps of \f$10^{-4}\ell^2\f$: 3.43 degrees against 4.41 with \f$2\cdot 10^{-3}\f$ and 5.02 with \f$3\cdot 10^{-3}\f$);
   /// each step then costs one more isotropic assembly and solve. 0 reads the curvature on the current surface.
   ///
   /// `normal_motion_only`: move the control points along the surface's normal only (see above).

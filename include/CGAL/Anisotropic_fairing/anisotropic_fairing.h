@@ -72,6 +72,12 @@ of its area per step. `time_step` and `fidelity_weight` give them in model units
 \param np optional named parameters among:
 
 \cgalNamedParamsBegin
+  \cgalParamNBegin{vertex_point_map}
+    \cgalParamDescription{the positions of the vertices, read and written; only in the overloads without a point-map
+                          argument (with one, passing it too is a compile-time error)}
+    \cgalParamType{a `ReadWritePropertyMap` with `vertex_descriptor` key and a point of a CGAL kernel as value}
+    \cgalParamDefault{`get(CGAL::vertex_point, tm)`}
+  \cgalParamNEnd
   \cgalParamNBegin{relative_time_step}
     \cgalParamDescription{the time step \f$\tau\f$ in units of \f$\ell^2\f$}
     \cgalParamType{double > 0} \cgalParamDefault{`1e-3`}
