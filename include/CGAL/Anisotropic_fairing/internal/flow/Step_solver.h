@@ -128,16 +128,9 @@ private:
   // lumped mass
   void held_mass(const std::vector<double>& M, const std::vector<double>& mass_weight, const std::vector<double>& mu)
   {
-    const int* outer = pattern_.outerIndexPtr();
-    const int* inner = pattern_.innerIndexPtr();
-    held_.assign(mu.size(), 0.0);
-    for(std::size_t j = 0; j < mu.size(); ++j)
-      for(int p = outer[j]; p < outer[j + 1]; ++p)
-      {
-        const std::size_t i = std::size_t(inner[p]);
-        held_[i] += M[std::size_t(p)] * (mass_weight.empty() ? 1.0 : mass_weight[i] * mass_weight[j]);
-      }
-    for(std::size_t i = 0; i < mu.size(); ++i) held_[i] *= mu[i];
+    const Eigen::VectorXd D = lumped_mass(pattern_, M, mass_weight);
+    held_.resize(mu.size());
+    for(std::size_t i = 0; i < mu.size(); ++i) held_[i] = mu[i] * D[Eigen::Index(i)];
   }
 
   const Eigen::SparseMatrix<double>& pattern_;

@@ -16,6 +16,7 @@
 #define CGAL_ANISOTROPIC_FAIRING_INTERNAL_SOLVE_FOURTH_ORDER_SYSTEM_H
 
 #include <CGAL/Anisotropic_fairing/internal/solve/Spd_solvers.h>
+#include <CGAL/Anisotropic_fairing/internal/solve/Step_system.h>
 #include <CGAL/Anisotropic_fairing/internal/types/Control_matrix.h>
 
 #include <Eigen/SparseCore>
@@ -51,16 +52,13 @@ public:
     const int* outer = pattern_.outerIndexPtr();
     const int* inner = pattern_.innerIndexPtr();
     const Eigen::Index n = pattern_.rows();
-    Eigen::VectorXd d = Eigen::VectorXd::Zero(n);
     for(Eigen::Index j = 0; j < n; ++j)
       for(int p = outer[j]; p < outer[j + 1]; ++p)
       {
-        double m = M[std::size_t(p)];
-        if(!mass_weight.empty()) m *= mass_weight[std::size_t(inner[p])] * mass_weight[std::size_t(j)];
-        M_.valuePtr()[p] = m;
+        M_.valuePtr()[p] = M[std::size_t(p)] * (mass_weight.empty() ? 1.0 : mass_weight[std::size_t(inner[p])] * mass_weight[std::size_t(j)]);
         L_.valuePtr()[p] = L[std::size_t(p)];
-        d[inner[p]] += m;
       }
+    Eigen::VectorXd d = lumped_mass(pattern_, M, mass_weight);
     // a vertex on no surface (held, isolated) has no mass and no Laplacian row: any positive D will do
     const double largest = d.size() > 0 ? d.maxCoeff() : 1.0;
     for(Eigen::Index i = 0; i < n; ++i) d[i] = is_free_[std::size_t(i)] ? 1 / std::max(d[i], 1e-12 * largest) : 0.0;

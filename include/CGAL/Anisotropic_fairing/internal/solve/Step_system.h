@@ -73,6 +73,19 @@ inline void step_residual(const Eigen::SparseMatrix<double>& pattern, const std:
   }
 }
 
+/// The lumped (row-sum) mass D_i = sum_j M_ij, with the local time scale's weights as in the system.
+inline Eigen::VectorXd lumped_mass(const Eigen::SparseMatrix<double>& pattern, const std::vector<double>& M,
+                                   const std::vector<double>& mass_weight)
+{
+  const int* outer = pattern.outerIndexPtr();
+  const int* inner = pattern.innerIndexPtr();
+  Eigen::VectorXd d = Eigen::VectorXd::Zero(pattern.rows());
+  for(Eigen::Index j = 0; j < pattern.cols(); ++j)
+    for(int p = outer[j]; p < outer[j + 1]; ++p)
+      d[inner[p]] += M[std::size_t(p)] * (mass_weight.empty() ? 1.0 : mass_weight[std::size_t(inner[p])] * mass_weight[std::size_t(j)]);
+  return d;
+}
+
 } // namespace internal
 } // namespace Anisotropic_fairing
 } // namespace CGAL
