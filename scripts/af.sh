@@ -10,6 +10,9 @@
 #                              UndefinedBehaviorSanitizer, then run all CTest tests there; with
 #                              `input`, only the program and the tests of reading and of the
 #                              program (corpus_*, cli_*, test_input_errors)
+#   bash scripts/af.sh figures [ARGS]  deps and the renderer's (VTK, Xvfb), build the program and
+#                              bench/figure_peers into build-figures/, then render the manual's figures
+#                              into doc/Anisotropic_fairing/fig/ (scripts/figures/make_figures.py ARGS)
 #
 # Works from any current directory.
 set -euo pipefail
@@ -21,6 +24,8 @@ BUILD_DIR="build"
 JOBS=2
 DEB_PACKAGES=(libcgal-dev libeigen3-dev libboost-dev libtbb-dev nlohmann-json3-dev cmake g++ python3)   # nlohmann-json: the program's report; python3: the cli_* tests
 DOC_PACKAGES=(doxygen libjs-mathjax)   # the test command's: the manual, checked without warnings, its formulas offline
+RENDER_PACKAGES=(python3-vtk9 xvfb xauth)   # the renderer of --snapshot and of the figures (VTK under a virtual display)
+PYTHON_PACKAGES=(pybind11-dev python3-dev python3-numpy python3-pytest)   # the Python module (python/) and its tests
 
 # The main program: the one place to change what `af.sh main` runs.
 # The default run, no tuning flag: fairs the noisy fandisk of the denoising benchmark (6475 vertices,
@@ -36,7 +41,7 @@ log() { printf '[af] %s\n' "$*" >&2; }
 die() { printf '[af] error: %s\n' "$*" >&2; exit 1; }
 
 usage() {
-  sed -n '2,11p' "${BASH_SOURCE[0]}" | sed 's/^# \{0,1\}//' >&2
+  sed -n '2,15p' "${BASH_SOURCE[0]}" | sed 's/^# \{0,1\}//' >&2
 }
 
 is_installed() {
@@ -81,10 +86,21 @@ cmd_main() {
 }
 
 cmd_test() {
-  DEB_PACKAGES+=("${DOC_PACKAGES[@]}")
+  DEB_PACKAGES+=("${DOC_PACKAGES[@]}" "${RENDER_PACKAGES[@]}" "${PYTHON_PACKAGES[@]}")
   cmd_build
   ctest --test-dir "$BUILD_DIR" --output-on-failure --no-tests=error -j"$JOBS"
   cmd_sanitize input
+}
+
+# The manual's figures, from real runs of the program, rendered with VTK (Debian's python3-vtk9) under
+# Xvfb; in their own build directory, so that they never wait for or disturb the full build.
+cmd_figures() {
+  DEB_PACKAGES+=("${RENDER_PACKAGES[@]}" python3-numpy)
+  cmd_deps
+  cmake -S . -B build-figures -DCMAKE_BUILD_TYPE=Release -DANISOTROPIC_FAIRING_BUILD_BENCHMARKS=ON -DBUILD_TESTING=OFF
+  cmake --build build-figures -j"$JOBS" --target anisotropic_fairing figure_peers
+  /usr/bin/python3 scripts/figures/make_figures.py --program build-figures/bin/anisotropic_fairing \
+    --peers build-figures/bench/figure_peers "$@"
 }
 
 # The suite again, built with AddressSanitizer and UndefinedBehaviorSanitizer (any report fails the
@@ -118,6 +134,7 @@ main() {
     main)  cmd_main "$@" ;;
     test)  cmd_test "$@" ;;
     sanitize) cmd_sanitize "$@" ;;
+    figures) cmd_figures "$@" ;;
     -h|--help|help) usage ;;
     *) usage; die "unknown subcommand: $sub" ;;
   esac

@@ -8,13 +8,16 @@
 //  - every supported value type (and a user type with its own traits) gives the same result through a
 //    Surface_mesh property map; colours are the clamped, rounded values of the same run in doubles;
 //  - coupled mode: trace(X^T L X) = 2 Area in R^kappa, and int |H|^2 equals an independent evaluation
-//    of the mean-curvature vector by the Christoffel symbols, H . t_k = 0.
+//    of the mean-curvature vector by the Christoffel symbols, H . t_k = 0;
+//  - the attribute control values given back (attribute_control_map) have the written values as their
+//    Loop limit values in every mode (default run included); geometry-only writes none.
 
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/Surface_mesh.h>
 #include <CGAL/boost/graph/IO/polygon_mesh_io.h>
 
 #include <CGAL/Anisotropic_fairing/anisotropic_fairing.h>
+#include <CGAL/Anisotropic_fairing/Loop_limit_surface.h>
 #include <CGAL/Anisotropic_fairing/internal/assembly/Fem_assembly.h>
 #include <CGAL/Anisotropic_fairing/internal/mesh/Indexed_mesh.h>
 #include <CGAL/Anisotropic_fairing/internal/element/Patch_cache.h>
@@ -424,6 +427,57 @@ void coupled(const Mesh& bumpy)
   AF_CHECK(normality <= 1e-12, "the mean-curvature vector is normal to the tangent plane");
 }
 
+// The attribute control values given back (attribute_control_map) have the written attribute values as
+// their Loop limit values, in the attributes' own units, in every mode that faires them; in the
+// geometry-only mode the map is left alone
+void attribute_controls_given_back(const Mesh& bumpy)
+{
+  typedef std::array<double, 2> Value;
+  auto run = [&](AF::Attribute_mode mode, bool automatic, const std::string& what) {
+    Mesh m = bumpy;
+    auto c = m.add_property_map<Vertex, Value>("v:c").first;
+    std::mt19937 rng(11);
+    std::normal_distribution<double> noise(0, 0.05);
+    for(auto v : m.vertices()) c[v] = { { std::sin(2 * m.point(v).x()) + noise(rng), 3 * m.point(v).y() * m.point(v).z() } };
+    std::vector<K::Point_3> control(num_vertices(m));
+    const Value untouched = { { -7, -7 } };
+    std::vector<Value> control_values(num_vertices(m), untouched);
+    const auto given_back = AF::parameters::attribute_mode(mode).attribute_weight(0.7)
+                              .control_point_map(CGAL::make_property_map(control))
+                              .attribute_control_map(CGAL::make_property_map(control_values));
+    const AF::Fairing_report r = automatic ? AF::anisotropic_fairing(m, m.points(), c, given_back)
+                                           : AF::anisotropic_fairing(m, m.points(), c, given_back.relative_time_step(1e-3).number_of_iterations(3u)
+                                                                                       .stopping_criteria(AF::Stopping_criteria::none()));
+    if(!AF_CHECK(r.succeeded(), what + ": succeeds")) return;
+    if(mode == AF::Attribute_mode::GEOMETRY_ONLY)
+    {
+      bool alone = true;
+      for(const Value& x : control_values) alone = alone && x == untouched;
+      AF_CHECK(alone, what + ": no attribute control values without faired attributes");
+      return;
+    }
+    Mesh control_mesh = m;
+    for(auto v : control_mesh.vertices()) control_mesh.point(v) = control[std::size_t(v)];
+    std::vector<Value> limit(num_vertices(m));
+    AF::Loop_limit_surface<Mesh>(control_mesh).limit_values(CGAL::make_property_map(control_values), CGAL::make_property_map(limit));
+    double largest = 0, moved = 0;
+    for(auto v : m.vertices())
+      for(int k = 0; k < 2; ++k)
+      {
+        largest = std::max(largest, std::abs(limit[std::size_t(v)][k] - c[v][k]));
+        moved = std::max(moved, std::abs(control_values[std::size_t(v)][k] - c[v][k]));
+      }
+    std::printf("%s: written attributes vs limit of the control values %.3g (control values differ by up to %.3g)\n", what.c_str(), largest, moved);
+    AF_CHECK(largest <= 1e-12, what + ": the written attribute values are the limit values of the control values given back");
+    AF_CHECK(moved > 1e-3, what + ": the control values are not the written values (the check can fail)");
+  };
+  run(AF::Attribute_mode::SEPARATE, false, "attribute control values, separate");
+  run(AF::Attribute_mode::COUPLED, false, "attribute control values, coupled (weight 0.7)");
+  run(AF::Attribute_mode::ATTRIBUTES_ONLY, false, "attribute control values, attributes only");
+  run(AF::Attribute_mode::SEPARATE, true, "attribute control values, default run");
+  run(AF::Attribute_mode::GEOMETRY_ONLY, false, "attribute control values, geometry only");
+}
+
 int main(int argc, char** argv)
 {
   data_dir = argc > 1 ? argv[1] : "data";
@@ -438,5 +492,6 @@ int main(int argc, char** argv)
   constant_attribute(bumpy);
   value_types(bumpy);
   coupled(bumpy);
+  attribute_controls_given_back(bumpy);
   return AF_test::report();
 }

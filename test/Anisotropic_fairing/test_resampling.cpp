@@ -1,6 +1,7 @@
 // Resampling: the k-times refined mesh written by Loop_limit_surface::resample has CGAL's Loop
 // connectivity, its vertices are the exact limit points (CGAL Loop^k + limit mask), its normals are
-// the exact limit normals (tangent masks on the level-k mesh), and attributes follow the same basis.
+// the exact limit normals (tangent masks on the level-k mesh), and attributes follow the same basis;
+// its faces come 4^k per control face, in the control mesh's face order.
 
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/Orthogonal_k_neighbor_search.h>
@@ -161,6 +162,21 @@ int main()
       same = same && min_rotation(ta) == min_rotation(tb);
     }
     AF_CHECK(same, "level 0 keeps the control connectivity");
+    // the faces of the output come 4^k per control face, in the order of faces(): the 16 faces of face f
+    // at level 2 have f's three corners and no other control vertex
+    bool grouped = true;
+    std::vector<Mesh::Face_index> fine(out2.faces().begin(), out2.faces().end());
+    std::size_t index = 0;
+    for(auto f : faces(mixed))
+    {
+      std::set<std::size_t> corners, seen;
+      for(auto v : CGAL::vertices_around_face(halfedge(f, mixed), mixed)) corners.insert(std::size_t(v));
+      for(std::size_t k = 0; k < 16; ++k, ++index)
+        for(auto v : CGAL::vertices_around_face(halfedge(fine[index], out2), out2))
+          if(std::size_t(v) < num_vertices(mixed)) seen.insert(std::size_t(v));
+      grouped = grouped && seen == corners;
+    }
+    AF_CHECK(grouped, "the output faces come 4^k per control face, in the order of faces()");
   }
 
   // attributes: the same basis functions

@@ -27,8 +27,11 @@
 #include "fairing_run.h"
 
 #include "attribute_columns.h"
+#include "fairing_call.h"
 #include "held_vertices.h"
 #include "mesh_io.h"
+#include "resampled_output.h"
+#include "snapshot.h"
 
 #include <CGAL/Polygon_mesh_processing/compute_normal.h>
 
@@ -49,34 +52,6 @@ namespace af_tool {
 namespace fs = std::filesystem;
 
 namespace {
-
-// ------------------------------------------------------------------------------------------------
-// Fairing: the named parameters differ in type with the time step and fidelity flags given
-// ------------------------------------------------------------------------------------------------
-// (the bounds always given, 0 for none, so that they add one variant of the call, not three)
-template <typename NP, typename Run>
-AF::Fairing_report with_bound(const NP& np, const Options& o, Run& run)
-{
-  const auto bounded = np.attribute_maximum_deviation(o.attribute_bound);
-  if(o.has_bound) return run(bounded.absolute_maximum_deviation(o.bound));
-  return run(bounded.maximum_deviation(o.relative_bound));
-}
-
-template <typename NP, typename Run>
-AF::Fairing_report with_fidelity(const NP& np, const Options& o, Run& run)
-{
-  if(o.has_fidelity) return with_bound(np.fidelity_weight(o.fidelity), o, run);
-  if(o.has_relative_fidelity) return with_bound(np.relative_fidelity_weight(o.relative_fidelity), o, run);
-  return with_bound(np, o, run);
-}
-
-template <typename NP, typename Run>
-AF::Fairing_report with_time_step(const NP& np, const Options& o, Run& run)
-{
-  if(o.has_time_step) return with_fidelity(np.time_step(o.time_step), o, run);
-  if(o.has_relative_time_step) return with_fidelity(np.relative_time_step(o.relative_time_step), o, run);
-  return with_fidelity(np, o, run);
-}
 
 std::string strip_library_prefix(const std::string& what)
 {
@@ -105,6 +80,10 @@ int run(const Options& o, Run_record& r)
   };
   check_writable(o.output, "");
   if(!o.report.empty()) check_writable(o.report, "the report ");
+  if(!o.snapshot.empty()) check_writable(o.snapshot, "the snapshot ");
+  const std::string renderer = o.snapshot.empty() ? std::string() : render_script();
+  if(!o.snapshot.empty() && renderer.empty())
+    fail("snapshot_error", "--snapshot: the renderer render_mesh.py was not found (installed next to the program, or set AF_RENDER_SCRIPT)");
 
   Mesh mesh;
   Input_info info;
@@ -112,6 +91,7 @@ int run(const Options& o, Run_record& r)
   r.mesh_read = true;
   r.vertices = mesh.number_of_vertices();
   r.faces = mesh.number_of_faces();
+  if(o.has_resample) check_resample_size(mesh, o.resample);
 
   // --curvature adds three vertex properties; never overwrite the input's own
   static const char* const curvature_properties[3] = { "v:k1", "v:k2", "v:mean_curvature" };
@@ -129,6 +109,7 @@ int run(const Options& o, Run_record& r)
   std::vector<std::vector<double>> attribute_values;   // per vertex, the columns in order
   if(fair_attributes) gather(mesh, columns, attribute_values);
   const Attribute_vectors attribute_map{&attribute_values};
+  std::vector<std::vector<double>> attribute_controls = attribute_values;   // their faired control values (--resample)
   // without attributes to fair, GEOMETRY_ONLY: the attribute map is then neither read nor written
   const AF::Attribute_mode library_mode = fair_attributes ? mode : AF::Attribute_mode::GEOMETRY_ONLY;
 
@@ -156,35 +137,9 @@ int run(const Options& o, Run_record& r)
                    s.assemble_seconds, s.solve_seconds);
     return true;
   };
-  auto fair = [&mesh, &attribute_map, &control_points, &held](const auto& np) {
-    return AF::anisotropic_fairing(mesh, mesh.points(), attribute_map, np.control_point_map(CGAL::make_property_map(control_points))
-                                                                       .vertex_is_constrained_map(CGAL::make_property_map(held)));
-  };
-
-  const AF::Stopping_criteria stop = o.stop == "off" ? AF::Stopping_criteria::none()
-                                  : o.stop == "paper" ? AF::Stopping_criteria()
-                                  : o.stop == "noise" || (automatic_parameters(o) && effective_mode(o) != AF::Attribute_mode::ATTRIBUTES_ONLY)
-                                    ? AF::Stopping_criteria::automatic()
-                                  : AF::Stopping_criteria();
-  const auto base = AF::parameters::number_of_iterations(max_steps)
-                      .stopping_criteria(stop)
-                      .finite_element(o.element)
-                      .output_positions(o.output_positions)
-                      .linear_solver(o.solver)
-                      .boundary_handling(o.boundary)
-                      .quadrature_degree(o.quadrature_degree)
-                      .attribute_mode(library_mode)
-                      .attribute_weight(o.attribute_weight)
-                      .flow_order(o.order)
-                      .callback(progress);
   try
   {
-    AF::Anisotropic_diffusion_tensor tensor = AF::Anisotropic_diffusion_tensor().set_lambda(o.lambda).set_epsilon(o.epsilon)
-                                                .set_normal_motion_only(o.normal_motion_only);
-    if(automatic_tensor(o)) tensor = AF::Anisotropic_diffusion_tensor::automatic();
-    r.report = o.anisotropic ? with_time_step(base.diffusion_tensor(tensor), o, fair)
-               : o.uniform   ? with_time_step(base.diffusion_tensor(AF::Uniform_diffusion_tensor()), o, fair)
-                             : with_time_step(base.diffusion_tensor(AF::Isotropic_diffusion_tensor()), o, fair);
+    r.report = fair_with_options(mesh, o, library_mode, attribute_map, attribute_controls, control_points, held, progress);
   }
   catch(const AF::Input_error& e)
   {
@@ -237,6 +192,14 @@ int run(const Options& o, Run_record& r)
   }
   // back into the input's own properties (rounded, clamped), which are written with the mesh
   if(fair_attributes) scatter(mesh, columns, attribute_values);
+  if(o.has_resample)
+  {
+    const std::vector<Attribute_column> none;
+    resample_output(mesh, info, o.input, o.resample, {&control_points, fair_attributes ? &columns : &none, &attribute_controls},
+                    o.curvature, o.quadrature_degree);
+    r.resampled_vertices = mesh.number_of_vertices();
+    r.resampled_faces = mesh.number_of_faces();
+  }
   if(o.has_attribute_weight && mode != AF::Attribute_mode::COUPLED)
     info.warnings.push_back("--attribute-weight has no effect without --mode coupled");
 
@@ -262,27 +225,52 @@ int run(const Options& o, Run_record& r)
     fs::remove(tmp, ec);
     fail("write_error", "cannot write " + o.output);
   }
+  // the snapshot next to its file, renamed with OUTPUT
+  const fs::path snapshot_tmp = o.snapshot.empty() ? fs::path() : temporary_next_to(o.snapshot);
+  auto remove_temporaries = [&] {
+    std::error_code ec;
+    fs::remove(tmp, ec);
+    if(!o.snapshot.empty()) fs::remove(snapshot_tmp, ec);
+  };
+  if(!o.snapshot.empty())
+  {
+    char result_title[200];
+    std::snprintf(result_title, sizeof result_title, "faired: %s, %zu steps, %s", r.report.selected_tensor.empty() ? "" : r.report.selected_tensor.c_str(),
+                  r.report.steps.size(), AF::to_string(r.report.stop_reason));
+    try
+    {
+      render_snapshot(renderer, o.input, tmp.string(), "input: " + fs::path(o.input).filename().string(), result_title, snapshot_tmp.string(),
+                      o.snapshot);
+    }
+    catch(const Failure&)
+    {
+      remove_temporaries();
+      throw;
+    }
+  }
   r.output_written = true;  // as far as the report is concerned
   if(!o.report.empty())
   {
     // wall time up to here; the rename is negligible
     if(!write_file_atomically(o.report, report_json(o, r, elapsed_seconds())))
     {
-      std::error_code ec;
-      fs::remove(tmp, ec);
+      remove_temporaries();
       r.output_written = false;
       throw Failure{1, "write_error", "cannot write the report " + o.report};
     }
   }
   std::error_code ec;
   fs::rename(tmp, o.output, ec);
+  const bool output_moved = !ec;
+  if(output_moved && !o.snapshot.empty()) fs::rename(snapshot_tmp, o.snapshot, ec);
   if(ec)
   {
     std::error_code ec2;
-    fs::remove(tmp, ec2);
+    remove_temporaries();
+    if(output_moved) fs::remove(o.output, ec2);   // the snapshot could not be put in place: nothing stays
     r.output_written = false;
     if(!o.report.empty()) fs::remove(o.report, ec2);  // it described an output that does not exist
-    fail("write_error", "cannot write " + o.output + ": " + ec.message());
+    fail("write_error", "cannot write " + (output_moved ? o.snapshot : o.output) + ": " + ec.message());
   }
   for(const std::string& w : warnings)
     std::fprintf(stderr, "anisotropic_fairing: warning: %s\n", one_line(w).c_str());
@@ -292,9 +280,9 @@ int run(const Options& o, Run_record& r)
   if(r.report.stop_reason == AF::Stop_reason::STEP_REJECTED)
     std::fprintf(stderr, "anisotropic_fairing: warning: stopped early: %s\n", one_line(r.report.message).c_str());
   if(!quiet)
-    std::fprintf(stderr, "anisotropic_fairing: wrote %s (%zu vertices, %zu steps, stopped: %s, %.3f s)\n",
-                 o.output.c_str(), r.vertices, r.report.steps.size(), AF::to_string(r.report.stop_reason),
-                 r.report.total_seconds);
+    std::fprintf(stderr, "anisotropic_fairing: wrote %s (%zu vertices, %zu steps, stopped: %s, %.3f s)%s%s\n",
+                 o.output.c_str(), mesh.number_of_vertices(), r.report.steps.size(), AF::to_string(r.report.stop_reason),
+                 r.report.total_seconds, o.snapshot.empty() ? "" : " and ", o.snapshot.c_str());
   return 0;
 }
 

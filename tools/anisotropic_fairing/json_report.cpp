@@ -72,6 +72,10 @@ std::string report_json(const Options& o, const Run_record& r, double wall_secon
   j["curvature"] = r.curvature;
   j["hold"] = o.hold.empty() ? Json(nullptr) : Json(o.hold);
   j["held_vertices"] = r.held_vertices;
+  j["resample"] = o.has_resample ? Json(o.resample) : Json(nullptr);
+  j["resampled_vertices"] = o.has_resample && r.resampled_faces > 0 ? Json(r.resampled_vertices) : Json(nullptr);
+  j["resampled_faces"] = o.has_resample && r.resampled_faces > 0 ? Json(r.resampled_faces) : Json(nullptr);
+  j["snapshot"] = o.snapshot.empty() ? Json(nullptr) : Json(o.snapshot);
   j["mode"] = mode_name(effective_mode(o));
   j["attributes"] = o.attributes;
   j["attribute_dimension"] = known(ran, f.attribute_dimension);

@@ -27,6 +27,7 @@ struct Run_record
   std::string normals = "none";
   bool curvature = false;   // k1, k2, mean_curvature were added to the output
   std::size_t held_vertices = 0;   // held by --hold
+  std::size_t resampled_vertices = 0, resampled_faces = 0;   // --resample: what was written
   bool output_written = false;
 };
 

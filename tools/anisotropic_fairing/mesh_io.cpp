@@ -535,7 +535,8 @@ fs::path temporary_next_to(const std::string& path)
 {
   const fs::path p(path);
   const fs::path dir = p.has_parent_path() ? p.parent_path() : fs::path(".");
-  return dir / ("." + p.filename().string() + ".tmp" + std::to_string(long(::getpid())));
+  // the extension kept last, so that a reader (--snapshot's renderer) knows the format
+  return dir / ("." + p.stem().string() + ".tmp" + std::to_string(long(::getpid())) + p.extension().string());
 }
 
 bool write_file_atomically(const std::string& path, const std::string& text)

@@ -1,6 +1,6 @@
 // The options of anisotropic_fairing. The table `option_table` is the one list of the options: the
-// parser reads it, the help text is made from it, and the test cli_option_docs checks that the
-// README's option table and the manual name exactly its flags.
+// parser reads it, the help text is made from it, and scripts/option_docs.py makes the README's
+// option table and the manual's list from the help (the test cli_option_docs checks they agree).
 #include "options.h"
 
 #include <CGAL/Anisotropic_fairing/Fairing_settings.h>
@@ -126,39 +126,50 @@ struct Option_spec
 };
 
 const Option_spec option_table[] = {
-  {"--time-step", nullptr, "T", "time step tau in model units (length^2), as in the paper",
+  {"--time-step", nullptr, "T", "time step tau in model units (length^2), as in the paper (time_step)",
    [](Options& o, const std::string& flag, const std::string& v) { set_number(o.time_step, o.has_time_step, flag, v, false); }},
   {"--relative-time-step", nullptr, "R",
    "time step in units of l^2, l = sqrt(area/4pi) of the input (per connected\n"
-   "component); give at most one of the two (neither: automatic parameters)",
+   "component; relative_time_step); give at most one of the two. Neither:\n"
+   "automatic parameters: the noise is estimated from the mesh, the tensor is\n"
+   "the anisotropic one with its threshold and prefilter chosen from the mesh\n"
+   "(unless --tensor is given), steps of 0.3 h^2 (h: the edge length) until\n"
+   "the surface has moved off the input by the noise",
    [](Options& o, const std::string& flag, const std::string& v) {
      set_number(o.relative_time_step, o.has_relative_time_step, flag, v, false);
    }},
   {"--order", nullptr, "2|4",
    "the flow's order: 2 (default: diffusion, as in the paper) or 4 (dX/dt = -(M^-1 L)^2 X,\n"
    "which removes noise while rounding the shape less; the time step is then in length^4,\n"
-   "--relative-time-step in l^4; automatic: 0.1 h^4). The automatic default run uses the\n"
-   "fourth-order flow itself for its uniform candidate (the report's choices say so)",
+   "--relative-time-step in l^4; automatic: 0.1 h^4; flow_order). The automatic\n"
+   "default run uses the fourth-order flow itself for its uniform candidate\n"
+   "(the report's choices say so)",
    [](Options& o, const std::string& flag, const std::string& v) {
      o.order = choice<int>(flag, v, {{"2", 2}, {"4", 4}});
      o.has_order = true;
    }},
-  {"--steps", nullptr, "N", "the most time steps to run (default 10; with automatic parameters 200)",
+  {"--steps", nullptr, "N", "the most time steps to run (default 10; with automatic parameters 200;\n"
+   "number_of_iterations)",
    [](Options& o, const std::string& flag, const std::string& v) { o.steps = parse_unsigned(flag, v); o.has_steps = true; }},
   {"--stop", nullptr, "auto|noise|paper|off",
    "auto (default): noise with automatic parameters, paper otherwise;\n"
    "noise: stop when the surface has moved off the input by the estimated\n"
    "noise (--order 4: or when that displacement levels off short of it);\n"
    "paper: the criteria (27)-(29) and a steady-state test; off: exactly\n"
-   "N steps. A step that would fold the surface is retried with a smaller\n"
-   "time step, and the run ends on the last sound surface if that fails",
+   "N steps (Stopping_criteria::automatic(), Stopping_criteria(),\n"
+   "Stopping_criteria::none()). Whatever the criteria, a step that would fold\n"
+   "the surface is retried with a quarter of the time step, and the run ends\n"
+   "on the last sound surface (step_rejected, with a warning) if even 1/1024\n"
+   "of it fails",
    [](Options& o, const std::string& flag, const std::string& v) {
      o.stop = v;   // set before the check: a usage error's report shows what was asked
      choice_index(flag, v, {"auto", "noise", "paper", "off"});
    }},
-  {"--fidelity", nullptr, "W", "fidelity weight omega in model units (1/time), as in the paper (default 0)",
+  {"--fidelity", nullptr, "W", "fidelity weight omega in model units (1/time), as in the paper (default 0;\n"
+   "fidelity_weight)",
    [](Options& o, const std::string& flag, const std::string& v) { set_number(o.fidelity, o.has_fidelity, flag, v, true); }},
-  {"--relative-fidelity", nullptr, "W", "fidelity weight in units of 1/l^2; give at most one of the two",
+  {"--relative-fidelity", nullptr, "W", "fidelity weight in units of 1/l^2 (relative_fidelity_weight); give at most\n"
+   "one of the two",
    [](Options& o, const std::string& flag, const std::string& v) {
      set_number(o.relative_fidelity, o.has_relative_fidelity, flag, v, true);
    }},
@@ -166,21 +177,24 @@ const Option_spec option_table[] = {
    "no written vertex moves farther than D (model units) off its input\n"
    "position: the vertices nearing it are held by a fidelity weight of\n"
    "their own, and one it cannot hold is written on the bound (default:\n"
-   "no bound; 0: none)",
+   "no bound; 0: none; absolute_maximum_deviation)",
    [](Options& o, const std::string& flag, const std::string& v) { set_number(o.bound, o.has_bound, flag, v, true); }},
-  {"--relative-maximum-deviation", nullptr, "R", "the same in units of l; give at most one of the two",
+  {"--relative-maximum-deviation", nullptr, "R", "the same in units of l (maximum_deviation); give at most one of the two",
    [](Options& o, const std::string& flag, const std::string& v) { set_number(o.relative_bound, o.has_relative_bound, flag, v, true); }},
   {"--attribute-maximum-deviation", nullptr, "D",
    "no vertex's attribute values move farther than D (their units,\n"
-   "Euclidean over the components) off the input's (default: no bound)",
+   "Euclidean over the components) off the input's (default: no bound;\n"
+   "attribute_maximum_deviation)",
    [](Options& o, const std::string& flag, const std::string& v) { set_number(o.attribute_bound, o.has_attribute_bound, flag, v, true); }},
-  {"--element", nullptr, "loop|linear", "Loop limit-surface elements (default) or linear (P1) elements",
+  {"--element", nullptr, "loop|linear", "Loop limit-surface elements (default) or linear (P1) elements\n"
+   "(finite_element)",
    [](Options& o, const std::string& flag, const std::string& v) {
      o.element = choice<AF::Finite_element>(flag, v, {{"loop", AF::Finite_element::LOOP}, {"linear", AF::Finite_element::LINEAR}});
    }},
   {"--output", nullptr, "limit|control",
    "write the points of the faired limit surface (default) or the faired\n"
-   "control points (the mesh whose Loop limit surface is the faired surface)",
+   "control points (the mesh whose Loop limit surface is the faired surface;\n"
+   "output_positions)",
    [](Options& o, const std::string& flag, const std::string& v) {
      o.output_positions = choice<AF::Output_positions>(flag, v, {{"limit", AF::Output_positions::LIMIT_SURFACE},
                                                                   {"control", AF::Output_positions::CONTROL_POINTS}});
@@ -193,7 +207,8 @@ const Option_spec option_table[] = {
    "isotropic (or uniform) result kept instead when its estimated error at the\n"
    "noise level is lower: the report's tensor and choices say which) or uniform (the\n"
    "uniform Laplacian's weights, Uniform_diffusion_tensor: for noisy scans with a\n"
-   "graded triangulation; it rounds creases like the isotropic tensor)",
+   "graded triangulation; it rounds creases like the isotropic tensor);\n"
+   "diffusion_tensor",
    [](Options& o, const std::string& flag, const std::string& v) {
      o.has_tensor = true;   // set before the check: a usage error's report shows what was asked
      o.anisotropic = v == "anisotropic";
@@ -202,22 +217,25 @@ const Option_spec option_table[] = {
    }},
   {"--lambda", nullptr, "L",
    "the anisotropic tensor's feature threshold, a curvature in units of 1/l\n"
-   "(default 2): principal curvatures above it are diffused less",
+   "(default 2): principal curvatures above it are diffused less\n"
+   "(Anisotropic_diffusion_tensor::set_lambda)",
    [](Options& o, const std::string& flag, const std::string& v) { set_number(o.lambda, o.has_lambda, flag, v, false, true); }},
   {"--epsilon", nullptr, "E",
    "the anisotropic tensor reads curvature on the surface after an isotropic\n"
    "step of E (units of l^2; the paper's prefiltered M_eps); default 1e-3;\n"
-   "0: on the current surface",
+   "0: on the current surface (set_epsilon)",
    [](Options& o, const std::string& flag, const std::string& v) { set_number(o.epsilon, o.has_epsilon, flag, v, true, true); }},
   {"--tangential-motion", nullptr, "remove|keep",
    "the anisotropic flow moves control points along the surface's\n"
    "normal only (remove, the default: the tangential part of div(D grad x)\n"
-   "folds noisy meshes) or also within it, as the paper does (keep)",
+   "folds noisy meshes) or also within it, as the paper does (keep;\n"
+   "set_normal_motion_only)",
    [](Options& o, const std::string& flag, const std::string& v) {
      o.normal_motion_only = choice<bool>(flag, v, {{"remove", true}, {"keep", false}});
      o.has_tangential_motion = true;
    }},
-  {"--solver", nullptr, "auto|cg|cholesky", "linear solver: automatic (default), conjugate gradients, sparse LDL^T",
+  {"--solver", nullptr, "auto|cg|cholesky", "linear solver: automatic (default), conjugate gradients, sparse LDL^T\n"
+   "(linear_solver)",
    [](Options& o, const std::string& flag, const std::string& v) {
      o.solver = choice<AF::Linear_solver>(flag, v, {{"auto", AF::Linear_solver::AUTOMATIC},
                                                     {"cg", AF::Linear_solver::CONJUGATE_GRADIENT},
@@ -226,12 +244,13 @@ const Option_spec option_table[] = {
   {"--boundary", nullptr, "curve|vertices",
    "on a mesh with borders, hold the limit boundary curve (default: the\n"
    "boundary vertices and the interior vertices that shape the curve) or only\n"
-   "the boundary vertices (the paper's choice; the border may slide)",
+   "the boundary vertices (the paper's choice; the border may slide;\n"
+   "boundary_handling). Boundary vertices are written unchanged either way",
    [](Options& o, const std::string& flag, const std::string& v) {
      o.boundary = choice<AF::Boundary_handling>(flag, v, {{"curve", AF::Boundary_handling::HOLD_BOUNDARY_CURVE},
                                                           {"vertices", AF::Boundary_handling::HOLD_BOUNDARY_VERTICES}});
    }},
-  {"--quadrature-degree", nullptr, "4|6|8", "Gauss rule per face for the Loop element (default 8)",
+  {"--quadrature-degree", nullptr, "4|6|8", "Gauss rule per face for the Loop element (default 8; quadrature_degree)",
    [](Options& o, const std::string& flag, const std::string& v) {
      o.quadrature_degree = choice<int>(flag, v, {{"4", 4}, {"6", 6}, {"8", 8}});
    }},
@@ -241,7 +260,9 @@ const Option_spec option_table[] = {
    "...), red, green, blue, alpha, or color (= red,green,blue); OFF: color\n"
    "(COFF), red, green, blue, uv (texture coordinates); OBJ: uv (the vt, if\n"
    "one per vertex). Not x, y, z, nx, ny, nz. A name the input does not have\n"
-   "fails (exit 1) and the message lists the available ones",
+   "fails (exit 1) and the message lists the available ones. They are written\n"
+   "back into their own properties with their own types (integers rounded\n"
+   "and clamped, colours to 0..255)",
    [](Options& o, const std::string&, const std::string& v) { o.attributes = parse_attribute_list(v); }},
   {"--mode", nullptr, "separate|coupled|attributes|geometry",
    "how they are faired: separate (the default with\n"
@@ -249,7 +270,7 @@ const Option_spec option_table[] = {
    "surface with the geometry in R^(3+d); attributes: the geometry is fixed (not\n"
    "written) and only the attributes diffuse on it; geometry (the default\n"
    "without --attributes): the attributes are not faired. coupled and\n"
-   "attributes need --attributes",
+   "attributes need --attributes (attribute_mode)",
    [](Options& o, const std::string& flag, const std::string& v) {
      o.mode = choice<AF::Attribute_mode>(flag, v, {{"separate", AF::Attribute_mode::SEPARATE},
                                                    {"coupled", AF::Attribute_mode::COUPLED},
@@ -257,7 +278,8 @@ const Option_spec option_table[] = {
                                                    {"geometry", AF::Attribute_mode::GEOMETRY_ONLY}});
      o.has_mode = true;
    }},
-  {"--attribute-weight", nullptr, "W", "coupled: the length that one attribute unit counts for (> 0, default 1)",
+  {"--attribute-weight", nullptr, "W", "coupled: the length that one attribute unit counts for (> 0, default 1;\n"
+   "attribute_weight)",
    [](Options& o, const std::string& flag, const std::string& v) {
      set_number(o.attribute_weight, o.has_attribute_weight, flag, v, false);
    }},
@@ -274,8 +296,28 @@ const Option_spec option_table[] = {
    "hold vertices where they are: those whose numeric vertex property NAME\n"
    "of the input (PLY) is not 0, or those listed in FILE, one vertex index\n"
    "(from 0, in the input's order) per line ('#' starts a comment line);\n"
-   "they are written unchanged, attributes included",
+   "they are written unchanged, attributes included (vertex_is_constrained_map).\n"
+   "With --repair, which may drop or split vertices, the indices are those of\n"
+   "the repaired mesh",
    [](Options& o, const std::string&, const std::string& v) { o.hold = v; }},
+  {"--resample", nullptr, "K",
+   "write the faired limit surface at K levels of Loop refinement (4^K\n"
+   "faces per input face, K <= 10): the input's vertices first, exactly as\n"
+   "without --resample, then new vertices on the limit surface with its\n"
+   "normals, curvature (--curvature), the faired attributes' limit values and\n"
+   "the Loop limit of every other vertex property; a new face has the\n"
+   "properties of the input face it lies in. Needs the Loop element and\n"
+   "--output limit",
+   [](Options& o, const std::string& flag, const std::string& v) {
+     o.resample = parse_unsigned(flag, v);
+     o.has_resample = true;
+     if(o.resample > 10) usage_error(flag + " must be at most 10");
+   }},
+  {"--snapshot", nullptr, "FILE.png",
+   "also render the input and the result side by side into FILE.png (VTK,\n"
+   "no display needed: Debian's python3-vtk9 and xvfb; scripts/figures/\n"
+   "render_mesh.py, or the one AF_RENDER_SCRIPT names)",
+   [](Options& o, const std::string&, const std::string& v) { o.snapshot = v; }},
   {"--report", nullptr, "FILE.json", "write per-step statistics (also, with status and message, on failure)",
    [](Options& o, const std::string&, const std::string& v) { o.report = v; }},
   {"--repair", nullptr, nullptr,
@@ -285,7 +327,7 @@ const Option_spec option_table[] = {
    "than positions are then not kept), and on any mesh stitch coinciding\n"
    "borders and remove vertices on no face; each change is printed",
    [](Options& o, const std::string&, const std::string&) { o.repair = true; }},
-  {"--quiet", "-q", nullptr, "no progress line per step on stderr",
+  {"--quiet", "-q", nullptr, "no progress line per step on stderr (the callback named parameter)",
    [](Options& o, const std::string&, const std::string&) { o.quiet = true; }},
   {"--help", "-h", nullptr, "print this help and exit",
    [](Options& o, const std::string&, const std::string&) { o.help = true; }},
@@ -341,7 +383,7 @@ const char* const help_after_options =
 "fidelity_weight, relative_fidelity_weight, mean_edge_length, normals, curvature, mode, attributes,\n"
 "attribute_dimension, attribute_weight, boundary_handling,\n"
 "boundary_vertices, boundary_held_vertices, boundary_loops, isolated_vertices, constrained_vertices,\n"
-"hold, held_vertices, stop_reason, initial {area,\n"
+"hold, held_vertices, resample, resampled_vertices, resampled_faces, snapshot, stop_reason, initial {area,\n"
 "energy, H_integral}, steps [{step, time, solver_iterations, residual, area, energy, H_integral,\n"
 "max_displacement, step_displacement, assemble_seconds, solve_seconds, direct_solve, time_step,\n"
 "noise_displacement}], setup_seconds,\n"
@@ -500,6 +542,18 @@ void parse_arguments(int argc, char** argv, Options& o)
   }
   if(o.curvature && f != Format::PLY)
     usage_error("--curvature needs a .ply OUTPUT (k1, k2 and mean_curvature are written as vertex properties)");
+  if(o.has_resample && o.element != AF::Finite_element::LOOP)
+    usage_error("--resample needs --element loop (it writes the Loop limit surface)");
+  if(o.has_resample && o.output_positions != AF::Output_positions::LIMIT_SURFACE)
+    usage_error("--resample writes the limit surface: not with --output control");
+  if(!o.snapshot.empty())
+  {
+    std::string e = fs::path(o.snapshot).extension().string();
+    std::transform(e.begin(), e.end(), e.begin(), [](unsigned char c) { return char(std::tolower(c)); });
+    if(e != ".png") usage_error("--snapshot needs a .png file: " + o.snapshot);
+    for(const std::string& other : {o.input, o.output, o.report})
+      if(!other.empty() && same_file(o.snapshot, other)) usage_error("--snapshot " + o.snapshot + " is also " + other);
+  }
   if(o.curvature && o.element != AF::Finite_element::LOOP)
     usage_error("--curvature needs --element loop (the linear element has no curvature)");
 }

@@ -44,6 +44,9 @@ struct Options
   bool repair = false;           // --repair: make a non-manifold or inconsistently oriented input usable
   bool report_refused = false;   // the report's path collides with the input or the output: never written
   std::string hold;            // --hold: a vertex property or a file of vertex indices
+  unsigned int resample = 0;   // --resample K: levels of Loop refinement of the written surface
+  bool has_resample = false;
+  std::string snapshot;        // --snapshot FILE.png: input and result side by side
   bool help = false;
   bool version = false;
 };

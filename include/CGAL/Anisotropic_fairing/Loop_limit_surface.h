@@ -357,8 +357,9 @@ public:
   writes into the empty mesh `out` a triangulation of the limit surface at \f$2^{levels}\f$ times the
   resolution of the control mesh: the connectivity of `levels` steps of Loop subdivision, with every
   vertex placed exactly on the limit surface (vertices of the control mesh first, in their order,
-  then the points inside edges, then those inside faces). It covers exactly the faces of the mesh, so
-  it has the same borders; their vertices lie on the limit boundary curve.
+  then the points inside edges, then those inside faces). Its faces come \f$4^{levels}\f$ per face of
+  the mesh, in the order of `faces(tm)`, so face properties carry over. It covers exactly the faces of
+  the mesh, so it has the same borders; their vertices lie on the limit boundary curve.
 
   \tparam OutputMesh a model of `MutableFaceGraph`
   \cgalNamedParamsBegin

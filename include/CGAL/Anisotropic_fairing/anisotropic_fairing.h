@@ -79,8 +79,10 @@ of its area per step. `time_step` and `fidelity_weight` give them in model units
     \cgalParamDefault{`get(CGAL::vertex_point, tm)`}
   \cgalParamNEnd
   \cgalParamNBegin{relative_time_step}
-    \cgalParamDescription{the time step \f$\tau\f$ in units of \f$\ell^2\f$}
-    \cgalParamType{double > 0} \cgalParamDefault{`1e-3`}
+    \cgalParamDescription{the time step \f$\tau\f$ in units of \f$\ell^2\f$. Giving it (or `time_step`) turns the
+                          automatic parameters off: the defaults below marked "with a time step" then apply}
+    \cgalParamType{double > 0} \cgalParamDefault{none: automatic parameters, the time step chosen from the mesh's
+                          noise (Section \ref sec_AF_default)}
   \cgalParamNEnd
   \cgalParamNBegin{time_step}
     \cgalParamDescription{the time step \f$\tau\f$ in model units (length squared); excludes `relative_time_step`}
@@ -97,7 +99,7 @@ of its area per step. `time_step` and `fidelity_weight` give them in model units
   \cgalParamNEnd
   \cgalParamNBegin{number_of_iterations}
     \cgalParamDescription{the largest number of time steps; `stopping_criteria` may end the run earlier}
-    \cgalParamType{unsigned int} \cgalParamDefault{`10`}
+    \cgalParamType{unsigned int} \cgalParamDefault{`automatic_maximum_steps` (200) with automatic parameters, `10` with a time step}
   \cgalParamNEnd
   \cgalParamNBegin{relative_fidelity_weight}
     \cgalParamDescription{\f$\omega\f$ in units of \f$1/\ell^2\f$ (0: pure diffusion). A sphere of radius \f$r_0\f$
@@ -136,12 +138,15 @@ of its area per step. `time_step` and `fidelity_weight` give them in model units
   \cgalParamNBegin{stopping_criteria}
     \cgalParamDescription{the criteria (27)-(29) and a steady-state test, relative to \f$\ell\f$ by default}
     \cgalParamType{`Stopping_criteria`; `Stopping_criteria::none()` runs exactly `number_of_iterations` steps}
-    \cgalParamDefault{`Stopping_criteria()`: the paper's thresholds 0.005, 8 and 0.2 read at unit scale}
+    \cgalParamDefault{`Stopping_criteria::automatic()` (the noise level) with automatic parameters, except in
+                      `Attribute_mode::ATTRIBUTES_ONLY`; otherwise `Stopping_criteria()`: the paper's thresholds 0.005, 8 and 0.2 read at unit scale}
   \cgalParamNEnd
   \cgalParamNBegin{diffusion_tensor}
     \cgalParamDescription{the tensor \f$D\f$}
     \cgalParamType{a model of `DiffusionTensor`}
-    \cgalParamDefault{`Isotropic_diffusion_tensor()`}
+    \cgalParamDefault{`Anisotropic_diffusion_tensor::automatic()` with automatic parameters (the isotropic and uniform
+                      flows' results compared with it, the best kept: `Fairing_report::selected_tensor`);
+                      `Isotropic_diffusion_tensor()` with a time step}
   \cgalParamNEnd
   \cgalParamNBegin{vertex_is_constrained_map}
     \cgalParamDescription{vertices that must not move (their control points and attributes are kept, and
@@ -183,6 +188,16 @@ of its area per step. `time_step` and `fidelity_weight` give them in model units
                           points they come from: what `Loop_limit_surface` needs for the exact normals and curvatures of
                           the result. With the control points or the linear element written, the same points as the point map}
     \cgalParamType{a `WritablePropertyMap` with `vertex_descriptor` key and the point type as value}
+    \cgalParamDefault{none}
+  \cgalParamNEnd
+  \cgalParamNBegin{attribute_control_map}
+    \cgalParamDescription{receives, on success, the faired control values of every vertex's attribute (held vertices:
+                          their input), in the attributes' own units: the function whose Loop limit on the faired
+                          surface gives the attribute values written with `Output_positions::LIMIT_SURFACE`. With
+                          `Loop_limit_surface::resample()` on the faired control mesh (`control_point_map`) it
+                          resamples the faired attributes. Nothing is written without faired attributes
+                          (no attribute map, or `Attribute_mode::GEOMETRY_ONLY`)}
+    \cgalParamType{a `WritablePropertyMap` with `vertex_descriptor` key and the attribute map's value type as value}
     \cgalParamDefault{none}
   \cgalParamNEnd
   \cgalParamNBegin{linear_solver}

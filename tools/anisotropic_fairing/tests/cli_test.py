@@ -247,23 +247,14 @@ def do_run(run, tool, work, data):
 
 # ---- the option lists of the README and the manual against the tool's --help ----------------------
 def check_docs(tool, readme, manual):
-    helptext = subprocess.run([tool, '--help'], capture_output=True, text=True).stdout
-    tool_flags = re.findall(r'^  (--[a-z][a-z-]*)', helptext, re.M)
-    check(len(tool_flags) > 10, 'the help lists the options (%d found)' % len(tool_flags))
     version = subprocess.run([tool, '--version'], capture_output=True, text=True)
     check(version.returncode == 0 and re.match(r'anisotropic_fairing \d+\.\d+\.\d+ .*\nCGAL \S+, Eigen \d+\.\d+\.\d+, Boost \d+\.\d+\.\d+\n$', version.stdout),
           '--version prints the versions and exits 0: %r' % version.stdout)
-    # README: the first cell of each row of the table under "| option |"
-    text = open(readme, encoding='utf-8').read()
-    table_text = text[text.index('| option |'):]
-    table_text = table_text[:table_text.index('\n\n')]
-    readme_flags = re.findall(r'^\| `(--[a-z][a-z-]*)', table_text, re.M)
-    # manual: the items of the option list of its page on the program, "- `--flag ...`"
-    text = open(manual, encoding='utf-8').read()
-    check('\\page af_tool_page' in text, 'the manual page on the program is %s' % manual)
-    manual_flags = re.findall(r'^- `(--[a-z][a-z-]*)', text, re.M)
-    for name, flags in (('README', readme_flags), ('manual', manual_flags)):
-        check(flags == tool_flags, '%s lists the flags of --help in its order:\n  %s\n  --help: %s' % (name, flags, tool_flags))
+    # both are made from --help by scripts/option_docs.py, which says what differs
+    generator = os.path.join(os.path.dirname(os.path.abspath(__file__)), '..', '..', '..', 'scripts', 'option_docs.py')
+    docs = subprocess.run([sys.executable, generator, tool, '--check'], capture_output=True, text=True)
+    check(docs.returncode == 0, 'the README (%s) and the manual (%s) give the options exactly as --help does:\n%s%s' %
+          (readme, manual, docs.stdout, docs.stderr))
 
 
 def main():

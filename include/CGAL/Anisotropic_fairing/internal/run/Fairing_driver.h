@@ -223,6 +223,30 @@ void write_control_points(const Mesh& im, ControlMap map, const Control_matrix& 
 template <typename Mesh>
 void write_control_points(const Mesh&, CGAL::internal_np::Param_not_found, const Control_matrix&, const std::vector<int>&) {}
 
+/// Puts the attribute columns of the control points Z (from column `first`, rows in the private
+/// numbering, in the attributes' own units) into the caller's attribute_control_map, every vertex;
+/// nothing without a map or without faired attributes.
+template <typename Mesh, typename AttributeMap, typename ControlMap>
+void write_attribute_controls(const Indexed_mesh<Mesh>& im, AttributeMap attributes, ControlMap map, const Control_matrix& Z,
+                              Eigen::Index first, const std::vector<int>& old_of_new)
+{
+  typedef typename boost::property_traits<ControlMap>::value_type Value;
+  for(Eigen::Index i = 0; i < Z.rows(); ++i)
+  {
+    const auto v = im.vertex(std::size_t(old_of_new[std::size_t(i)]));
+    put(map, v, Vector_attribute_traits<Value>::make(get(attributes, v), Z.row(i).data() + first));
+  }
+}
+template <typename Mesh, typename AttributeMap>
+void write_attribute_controls(const Indexed_mesh<Mesh>&, AttributeMap, CGAL::internal_np::Param_not_found, const Control_matrix&,
+                              Eigen::Index, const std::vector<int>&) {}
+template <typename Mesh, typename ControlMap>
+void write_attribute_controls(const Indexed_mesh<Mesh>&, No_attributes, ControlMap, const Control_matrix&, Eigen::Index,
+                              const std::vector<int>&) {}
+template <typename Mesh>
+void write_attribute_controls(const Indexed_mesh<Mesh>&, No_attributes, CGAL::internal_np::Param_not_found, const Control_matrix&,
+                              Eigen::Index, const std::vector<int>&) {}
+
 template <typename TriangleMesh, typename VertexPointMap, typename AttributeMap, typename NamedParameters>
 Fairing_report fair(TriangleMesh& tm, VertexPointMap vpm, AttributeMap attributes, const NamedParameters& np)
 {
@@ -376,7 +400,9 @@ Fairing_report fair(TriangleMesh& tm, VertexPointMap vpm, AttributeMap attribute
   const Control_matrix input = X;
   // the control points of the result, for the caller's control_point_map
   auto control_map = get_parameter(np, internal_np::control_point_map);
-  constexpr bool wants_control = !parameters::is_default_parameter<NamedParameters, internal_np::control_point_map_t>::value;
+  auto attribute_control_map = get_parameter(np, internal_np::attribute_control_map);
+  constexpr bool wants_control = !parameters::is_default_parameter<NamedParameters, internal_np::control_point_map_t>::value ||
+                                 !parameters::is_default_parameter<NamedParameters, internal_np::attribute_control_map_t>::value;
   Control_matrix control_points;
   if(element == Finite_element::LOOP)
   {
@@ -451,6 +477,11 @@ Fairing_report fair(TriangleMesh& tm, VertexPointMap vpm, AttributeMap attribute
     }
     if(A.cols() > 0) write_attribute_columns(im, attributes, result, 3, keep);
     write_control_points(im, control_map, control_points, ordering.old_of_new_vertex);
+    if(A.cols() > 0 && control_points.cols() == 3 + A.cols())
+    {
+      if(mode == Attribute_mode::COUPLED) control_points.rightCols(A.cols()) /= attribute_weight;
+      write_attribute_controls(im, attributes, attribute_control_map, control_points, 3, ordering.old_of_new_vertex);
+    }
   }
   report.total_seconds = total.time();
   return report;

@@ -1,0 +1,495 @@
+// The Python module anisotropic_fairing (pybind11): the package's fairing and limit surface on numpy
+// arrays. fair() turns its keyword arguments into the command-line program's options and makes the
+// program's library call (fairing_call.h), so that its defaults, its checks, its result and its report
+// (the program's JSON, as a dict) are the program's.
+#include "fairing_call.h"
+#include "json_report.h"
+#include "mesh_file_check.h"
+#include "options.h"
+
+#include <CGAL/Anisotropic_fairing/Input_error.h>
+#include <CGAL/Anisotropic_fairing/Loop_limit_surface.h>
+#include <CGAL/Real_timer.h>
+
+#include <pybind11/numpy.h>
+#include <pybind11/pybind11.h>
+
+#include <cctype>
+#include <cmath>
+#include <cstring>
+#include <exception>
+#include <stdexcept>
+#include <memory>
+#include <string>
+#include <vector>
+
+namespace py = pybind11;
+using namespace af_tool;
+
+namespace {
+
+struct Fairing_failed : std::runtime_error
+{
+  using std::runtime_error::runtime_error;
+};
+
+// ---- arrays in, arrays out ------------------------------------------------------------------------
+
+std::string describe(const py::array& a)
+{
+  std::string shape = "(";
+  for(py::ssize_t i = 0; i < a.ndim(); ++i) shape += (i ? ", " : "") + std::to_string(a.shape(i));
+  return shape + (a.ndim() == 1 ? ",)" : ")") + " and dtype " + py::str(a.dtype()).cast<std::string>();
+}
+
+// `a` as a C-contiguous float64 array of `rows` x `cols` (rows < 0: any; cols < 0: any, and a 1-D array is
+// one column); integers are converted, anything else is refused with a message that names `name`.
+py::array_t<double, py::array::c_style> real_matrix(py::handle a, const std::string& name, py::ssize_t rows, py::ssize_t cols,
+                                                    bool booleans = false)
+{
+  py::array arr = py::array::ensure(a);
+  if(!arr) throw py::type_error(name + " must be a numpy array (or a nested list) of real numbers");
+  const char kind = arr.dtype().kind();
+  if(kind != 'f' && kind != 'i' && kind != 'u' && !(booleans && kind == 'b'))
+    throw py::type_error(name + (booleans ? " must hold booleans or numbers" : " must hold real numbers (float64)") + ", not an array of " +
+                         describe(arr));
+  const bool column = cols < 0 && arr.ndim() == 1;
+  if(!(arr.ndim() == 2 || column) || (cols > 0 && arr.shape(1) != cols))
+    throw py::value_error(name + " must be an " + (cols > 0 ? "N x " + std::to_string(cols) : std::string("N x d (or N)")) +
+                          " array, not one of " + describe(arr));
+  if(rows >= 0 && arr.shape(0) != rows)
+    throw py::value_error(name + " must have one row per vertex (" + std::to_string(rows) + "), not an array of " + describe(arr));
+  return py::array_t<double, py::array::c_style | py::array::forcecast>::ensure(arr);
+}
+
+// The mesh of V (N x 3 float64) and F (M x 3 integers), checked as the program checks a file: every index,
+// every coordinate, and that the faces form an oriented 2-manifold (the message names the row of F).
+Mesh mesh_from_arrays(py::handle V, py::handle F)
+{
+  const auto points = real_matrix(V, "V", -1, 3);
+  py::array faces_in = py::array::ensure(F);
+  if(!faces_in) throw py::type_error("F must be a numpy array (or a nested list) of vertex indices");
+  const char kind = faces_in.dtype().kind();
+  if(kind != 'i' && kind != 'u') throw py::type_error("F must hold integer vertex indices, not an array of " + describe(faces_in));
+  if(faces_in.ndim() != 2 || faces_in.shape(1) != 3) throw py::value_error("F must be an M x 3 array of triangles, not one of " + describe(faces_in));
+  const auto faces = py::array_t<long long, py::array::c_style | py::array::forcecast>::ensure(faces_in);
+  const py::ssize_t n = points.shape(0), m = faces.shape(0);
+  if(m == 0) throw py::value_error("F has no face: nothing to fair");
+
+  Polygon_soup soup;
+  soup.path = "F";
+  auto p = points.unchecked<2>();
+  for(py::ssize_t i = 0; i < n; ++i)
+  {
+    for(int c = 0; c < 3; ++c)
+      if(!std::isfinite(p(i, c))) throw py::value_error("V row " + std::to_string(i) + " is not finite");
+    soup.points.push_back({ p(i, 0), p(i, 1), p(i, 2) });
+  }
+  auto f = faces.unchecked<2>();
+  for(py::ssize_t k = 0; k < m; ++k)
+  {
+    std::vector<std::size_t> face;
+    for(int c = 0; c < 3; ++c)
+    {
+      if(f(k, c) < 0 || f(k, c) >= n)
+        throw py::value_error("F row " + std::to_string(k) + " refers to vertex " + std::to_string(f(k, c)) + ", but V has " +
+                              std::to_string(n) + " vertices (0.." + std::to_string(n - 1) + ")");
+      face.push_back(std::size_t(f(k, c)));
+    }
+    soup.faces.push_back(face);
+    soup.face_place.push_back("row " + std::to_string(k));
+  }
+  try
+  {
+    check_oriented_manifold(soup);
+  }
+  catch(const File_problem& e)
+  {
+    throw py::value_error(e.what());
+  }
+  Mesh mesh;
+  for(const auto& q : soup.points) mesh.add_vertex(Point(q[0], q[1], q[2]));
+  for(const auto& face : soup.faces)
+    if(mesh.add_face(Vertex_index(Mesh::size_type(face[0])), Vertex_index(Mesh::size_type(face[1])),
+                     Vertex_index(Mesh::size_type(face[2]))) == Mesh::null_face())
+      throw py::value_error("F: the triangles cannot form a 2-manifold mesh");
+  return mesh;
+}
+
+py::array_t<double> points_array(const Mesh& mesh)
+{
+  py::array_t<double> out({ py::ssize_t(mesh.number_of_vertices()), py::ssize_t(3) });
+  auto o = out.mutable_unchecked<2>();
+  for(Vertex_index v : mesh.vertices())
+    for(int c = 0; c < 3; ++c) o(py::ssize_t(v), c) = mesh.point(v)[c];
+  return out;
+}
+
+template <typename Vectors>
+py::array_t<double> vectors_array(const Vectors& values)
+{
+  py::array_t<double> out({ py::ssize_t(values.size()), py::ssize_t(3) });
+  auto o = out.mutable_unchecked<2>();
+  for(std::size_t i = 0; i < values.size(); ++i)
+    for(int c = 0; c < 3; ++c) o(py::ssize_t(i), c) = values[i][c];
+  return out;
+}
+
+// ---- fair() ----------------------------------------------------------------------------------------
+
+// A keyword argument of fair() and the program's option it is: the argument's value, as text, is the
+// option's value (True for a flag).
+struct Keyword
+{
+  const char* name;
+  const char* flag;
+};
+const Keyword keywords[] = {
+  {"time_step", "--time-step"}, {"relative_time_step", "--relative-time-step"}, {"flow_order", "--order"},
+  {"number_of_iterations", "--steps"}, {"stopping_criteria", "--stop"}, {"fidelity_weight", "--fidelity"},
+  {"relative_fidelity_weight", "--relative-fidelity"}, {"absolute_maximum_deviation", "--maximum-deviation"},
+  {"maximum_deviation", "--relative-maximum-deviation"}, {"attribute_maximum_deviation", "--attribute-maximum-deviation"},
+  {"finite_element", "--element"}, {"output_positions", "--output"}, {"tensor", "--tensor"}, {"lambda_", "--lambda"},
+  {"epsilon", "--epsilon"}, {"tangential_motion", "--tangential-motion"}, {"linear_solver", "--solver"},
+  {"boundary_handling", "--boundary"}, {"quadrature_degree", "--quadrature-degree"}, {"attribute_mode", "--mode"},
+  {"attribute_weight", "--attribute-weight"},
+};
+
+std::string option_text(py::handle value)
+{
+  if(py::isinstance<py::bool_>(value)) throw py::type_error("expects a number or a name, not a bool");
+  if(py::isinstance<py::float_>(value)) return py::repr(value).cast<std::string>();   // repr: every digit
+  return py::str(value).cast<std::string>();
+}
+
+// The program's options for these keyword arguments, read and checked by the program's own parser.
+Options options_of(const py::kwargs& kwargs, py::ssize_t attribute_columns)
+{
+  std::vector<std::string> args = { "anisotropic_fairing", "input.off", "output.off" };
+  for(const auto& item : kwargs)
+  {
+    const std::string name = py::str(item.first).cast<std::string>();
+    const Keyword* k = nullptr;
+    for(const Keyword& w : keywords)
+      if(name == w.name) k = &w;
+    if(!k)
+    {
+      std::string list;
+      for(const Keyword& w : keywords) list += (list.empty() ? "" : ", ") + std::string(w.name);
+      throw py::type_error("fair() got an unexpected keyword argument '" + name + "' (it takes: attributes, vertex_is_constrained, callback, " + list + ")");
+    }
+    if(item.second.is_none()) continue;   // None: the default
+    try
+    {
+      args.push_back(k->flag);
+      args.push_back(option_text(item.second));
+    }
+    catch(const py::type_error& e)
+    {
+      throw py::type_error(name + " " + e.what());
+    }
+  }
+  if(attribute_columns > 0)
+  {
+    std::string names;
+    for(py::ssize_t c = 0; c < attribute_columns; ++c) names += (c ? "," : "") + std::to_string(c);
+    args.push_back("--attributes");
+    args.push_back(names);
+  }
+  std::vector<char*> argv;
+  for(std::string& a : args) argv.push_back(&a[0]);
+  Options o;
+  try
+  {
+    parse_arguments(int(argv.size()), argv.data(), o);
+  }
+  catch(const Failure& f)
+  {
+    std::string message = f.message;
+    const std::string see = " (see --help)";
+    if(message.size() > see.size() && message.compare(message.size() - see.size(), see.size(), see) == 0)
+      message.resize(message.size() - see.size());
+    // the keyword's name, not the program's flag (a whole flag: not followed by a letter or a dash)
+    for(const Keyword& w : keywords)
+    {
+      const std::size_t length = std::strlen(w.flag);
+      for(std::string::size_type at = message.find(w.flag); at != std::string::npos; at = message.find(w.flag, at + 1))
+      {
+        const char next = at + length < message.size() ? message[at + length] : ' ';
+        if(!std::isalnum((unsigned char)next) && next != '-') message.replace(at, length, w.name);
+      }
+    }
+    throw py::value_error(message);
+  }
+  o.quiet = true;
+  return o;
+}
+
+py::object json_loads(const std::string& text) { return py::module_::import("json").attr("loads")(text); }
+
+py::tuple fair(py::handle V, py::handle F, py::handle attributes, py::handle vertex_is_constrained, py::handle callback,
+               const py::kwargs& kwargs)
+{
+  CGAL::Real_timer wall;
+  wall.start();
+  Mesh mesh = mesh_from_arrays(V, F);
+  const std::size_t n = mesh.number_of_vertices();
+  py::array_t<double, py::array::c_style> A;
+  bool one_column = false;
+  if(!attributes.is_none())
+  {
+    A = real_matrix(attributes, "attributes", py::ssize_t(n), -1);
+    one_column = A.ndim() == 1;
+    if(A.ndim() == 2 && A.shape(1) == 0) throw py::value_error("attributes has no column");
+  }
+  const py::ssize_t d = attributes.is_none() ? 0 : one_column ? 1 : A.shape(1);
+  const Options o = options_of(kwargs, d);
+
+  std::vector<std::vector<double>> values(n, std::vector<double>(std::size_t(d)));
+  if(d > 0)
+  {
+    const double* a = A.data();
+    for(std::size_t i = 0; i < n; ++i)
+      for(py::ssize_t c = 0; c < d; ++c)
+      {
+        values[i][std::size_t(c)] = a[i * std::size_t(d) + std::size_t(c)];
+        if(!std::isfinite(values[i][std::size_t(c)])) throw py::value_error("attributes row " + std::to_string(i) + " is not finite");
+      }
+  }
+  std::vector<unsigned char> held(n, 0);
+  Run_record r;
+  if(!vertex_is_constrained.is_none())
+  {
+    const auto h = real_matrix(vertex_is_constrained, "vertex_is_constrained", py::ssize_t(n), -1, true);
+    if(h.ndim() != 1) throw py::value_error("vertex_is_constrained must be one value per vertex, not an array of " + describe(h));
+    for(std::size_t i = 0; i < n; ++i) r.held_vertices += (held[i] = h.data()[i] != 0);
+  }
+
+  const AF::Attribute_mode mode = effective_mode(o);
+  const AF::Attribute_mode library_mode = d > 0 ? mode : AF::Attribute_mode::GEOMETRY_ONLY;
+  std::vector<std::vector<double>> controls = values;
+  std::vector<Point> control_points(n);
+  r.mesh_read = true;
+  r.vertices = n;
+  r.faces = mesh.number_of_faces();
+
+  // the run without the GIL; a Python callback takes it for its call, and an exception it raises ends the
+  // run (as returning False does) and is raised again afterwards
+  std::exception_ptr raised;
+  Step_callback step = [](const AF::Fairing_step&) { return true; };
+  if(!callback.is_none())
+    step = [&callback, &raised](const AF::Fairing_step& s) {
+      py::gil_scoped_acquire gil;
+      try
+      {
+        py::dict info;
+        info["step"] = s.step;
+        info["time"] = s.time;
+        info["time_step"] = s.time_step;
+        info["area"] = s.area;
+        info["energy"] = s.energy;
+        info["H_integral"] = s.H_integral;
+        info["max_displacement"] = s.max_displacement;
+        info["solver_iterations"] = s.solver_iterations;
+        const py::object go_on = callback(info);
+        return go_on.is_none() || bool(py::bool_(go_on));   // None (a progress printer) goes on
+      }
+      catch(...)
+      {
+        raised = std::current_exception();
+        return false;
+      }
+    };
+  {
+    py::gil_scoped_release no_gil;
+    try
+    {
+      r.report = fair_with_options(mesh, o, library_mode, Attribute_vectors{&values}, controls, control_points, held, step);
+    }
+    catch(const AF::Input_error& e)
+    {
+      py::gil_scoped_acquire gil;
+      throw py::value_error(e.what());
+    }
+  }
+  if(raised) std::rethrow_exception(raised);
+  r.fairing_ran = true;
+  if(!r.report.succeeded())
+  {
+    r.status = AF::to_string(r.report.status);
+    r.message = r.report.message;
+  }
+  py::object report = json_loads(report_json(o, r, wall.time()));
+  if(!r.report.succeeded())
+  {
+    py::object error = py::module_::import("anisotropic_fairing").attr("FairingError")(
+        "fairing failed (" + r.status + "): " + (r.message.empty() ? std::string("no detail") : r.message));
+    error.attr("report") = report;
+    PyErr_SetObject(error.get_type().ptr(), error.ptr());
+    throw py::error_already_set();
+  }
+  py::object out_attributes = py::none();
+  if(d > 0)
+  {
+    py::array_t<double> a = one_column ? py::array_t<double>({ py::ssize_t(n) }) : py::array_t<double>({ py::ssize_t(n), d });
+    double* p = a.mutable_data();
+    for(std::size_t i = 0; i < n; ++i)
+      for(py::ssize_t c = 0; c < d; ++c) p[i * std::size_t(d) + std::size_t(c)] = values[i][std::size_t(c)];
+    out_attributes = a;
+  }
+  return py::make_tuple(points_array(mesh), out_attributes, report);
+}
+
+// ---- limit_surface() -------------------------------------------------------------------------------
+
+// The Loop limit surface of a mesh given as arrays (it keeps its own copy of the mesh).
+class Limit_surface
+{
+public:
+  typedef AF::Loop_limit_surface<Mesh> Limit;
+
+  Limit_surface(py::handle V, py::handle F, int quadrature_degree) : mesh_(new Mesh(mesh_from_arrays(V, F)))
+  {
+    try
+    {
+      limit_.reset(new Limit(*mesh_, AF::parameters::quadrature_degree(quadrature_degree)));
+    }
+    catch(const AF::Input_error& e)
+    {
+      throw py::value_error(e.what());
+    }
+  }
+
+  py::array_t<double> positions() const
+  {
+    Mesh m = *mesh_;
+    limit_->limit_positions(m.points());
+    return points_array(m);
+  }
+
+  py::array_t<double> normals() const
+  {
+    std::vector<Vector> n(mesh_->number_of_vertices());
+    limit_->limit_normals(CGAL::make_property_map(n));
+    return vectors_array(n);
+  }
+
+  py::dict curvatures() const
+  {
+    std::vector<Limit::Curvature> c(mesh_->number_of_vertices());
+    limit_->vertex_curvatures(CGAL::make_property_map(c));
+    py::array_t<double> k1(py::ssize_t(c.size())), k2(py::ssize_t(c.size())), h(py::ssize_t(c.size()));
+    std::vector<Vector> d1, d2;
+    for(std::size_t i = 0; i < c.size(); ++i)
+    {
+      k1.mutable_data()[i] = c[i].k1;
+      k2.mutable_data()[i] = c[i].k2;
+      h.mutable_data()[i] = 0.5 * (c[i].k1 + c[i].k2);
+      d1.push_back(c[i].d1);
+      d2.push_back(c[i].d2);
+    }
+    py::dict out;
+    out["k1"] = k1;
+    out["k2"] = k2;
+    out["mean_curvature"] = h;
+    out["d1"] = vectors_array(d1);
+    out["d2"] = vectors_array(d2);
+    return out;
+  }
+
+  py::tuple resample(unsigned levels, py::handle attributes) const
+  {
+    Mesh fine;
+    std::vector<std::vector<double>> in, out;
+    bool one_column = false;
+    py::ssize_t d = 0;
+    if(!attributes.is_none())
+    {
+      const auto A = real_matrix(attributes, "attributes", py::ssize_t(mesh_->number_of_vertices()), -1);
+      one_column = A.ndim() == 1;
+      d = one_column ? 1 : A.shape(1);
+      for(std::size_t i = 0; i < mesh_->number_of_vertices(); ++i)
+        in.emplace_back(A.data() + i * std::size_t(d), A.data() + (i + 1) * std::size_t(d));
+    }
+    try
+    {
+      if(d == 0) limit_->resample(levels, fine);
+      else
+      {
+        out.resize(mesh_->number_of_vertices() << (2 * std::min(levels, 10u)));   // more than enough rows
+        limit_->resample(levels, fine, Attribute_vectors{&in}, Attribute_vectors{&out});
+      }
+    }
+    catch(const AF::Input_error& e)
+    {
+      throw py::value_error(e.what());
+    }
+    py::array_t<long long> faces({ py::ssize_t(fine.number_of_faces()), py::ssize_t(3) });
+    auto f = faces.mutable_unchecked<2>();
+    for(Face_index face : fine.faces())
+    {
+      int c = 0;
+      for(Vertex_index v : CGAL::vertices_around_face(fine.halfedge(face), fine)) f(py::ssize_t(face), c++) = (long long)v;
+    }
+    if(d == 0) return py::make_tuple(points_array(fine), faces);
+    const py::ssize_t nv = py::ssize_t(fine.number_of_vertices());
+    py::array_t<double> a = one_column ? py::array_t<double>({ nv }) : py::array_t<double>({ nv, d });
+    for(py::ssize_t i = 0; i < nv; ++i)
+      for(py::ssize_t c = 0; c < d; ++c) a.mutable_data()[i * d + c] = out[std::size_t(i)][std::size_t(c)];
+    return py::make_tuple(points_array(fine), faces, a);
+  }
+
+  double area() const { return limit_->area(); }
+
+private:
+  std::unique_ptr<Mesh> mesh_;   // the limit surface refers to it: it must not move
+  std::unique_ptr<Limit> limit_;
+};
+
+} // namespace
+
+PYBIND11_MODULE(anisotropic_fairing, m)
+{
+  m.doc() = "Anisotropic fairing of triangle meshes and of functions on them (Bajaj & Xu 2003) with Loop-subdivision "
+            "finite elements: the Anisotropic_fairing package for numpy arrays.";
+  m.attr("__version__") = AF_VERSION;
+  // raised with the report attached (fair()); the C++ type only names it
+  static py::exception<Fairing_failed> fairing_error(m, "FairingError", PyExc_RuntimeError);
+  m.def("fair", &fair, py::arg("V"), py::arg("F"), py::kw_only(), py::arg("attributes") = py::none(),
+        py::arg("vertex_is_constrained") = py::none(), py::arg("callback") = py::none(),
+        R"doc(fair(V, F, *, attributes=None, vertex_is_constrained=None, callback=None, **parameters) -> (V2, attributes2, report)
+
+Fairs the triangle mesh (V: N x 3 float64 positions, F: M x 3 integer vertex indices) and, if given, the
+per-vertex attributes (N x d or N float64), as the command-line program anisotropic_fairing does with the
+same settings. Without parameters: the default run (the parameters are chosen from the mesh).
+
+parameters, the library's named parameters (None: the default): time_step, relative_time_step, flow_order,
+number_of_iterations, stopping_criteria ('auto', 'noise', 'paper', 'off'), fidelity_weight,
+relative_fidelity_weight, maximum_deviation (units of l), absolute_maximum_deviation,
+attribute_maximum_deviation, finite_element ('loop', 'linear'), output_positions ('limit', 'control'),
+tensor ('isotropic', 'anisotropic', 'uniform'), lambda_, epsilon, tangential_motion ('remove', 'keep'),
+linear_solver ('auto', 'cg', 'cholesky'), boundary_handling ('curve', 'vertices'), quadrature_degree,
+attribute_mode ('separate', 'coupled', 'attributes', 'geometry'), attribute_weight.
+vertex_is_constrained: N values, non-zero holds the vertex. callback(step: dict) is called after each step
+(step, time, time_step, area, energy, H_integral, max_displacement, solver_iterations); returning False
+ends the run, an exception it raises ends it and is raised again.
+
+Returns the faired positions (N x 3), the faired attributes (None without) and the report: a dict with the
+keys of the program's JSON report. Raises ValueError for invalid input or parameters (the message names
+the row or the parameter), TypeError for arrays of the wrong type, FairingError (with .report) if the
+fairing fails; the input arrays are never modified. The GIL is released during the run.)doc");
+  py::class_<Limit_surface>(m, "LimitSurface", "The Loop limit surface of a triangle mesh (see limit_surface()).")
+      .def_property_readonly("positions", &Limit_surface::positions, "the limit points of the vertices (N x 3)")
+      .def_property_readonly("normals", &Limit_surface::normals, "the unit normals of the limit surface at the vertices (N x 3)")
+      .def_property_readonly("area", &Limit_surface::area, "the area of the limit surface")
+      .def("curvatures", &Limit_surface::curvatures,
+           "dict: k1, k2 (principal curvatures, k1 <= k2, negative on a convex surface oriented outward), mean_curvature, "
+           "d1, d2 (unit principal directions, N x 3), averaged over each vertex's faces (Loop_limit_surface::vertex_curvatures)")
+      .def("resample", &Limit_surface::resample, py::arg("levels"), py::arg("attributes") = py::none(),
+           "resample(levels, attributes=None) -> (V, F) or (V, F, attributes): the limit surface at 2^levels times the "
+           "resolution (levels <= 10), every vertex on it, the mesh's vertices first; with attributes (N x d), their limit values");
+  m.def("limit_surface", [](py::handle V, py::handle F, int quadrature_degree) { return Limit_surface(V, F, quadrature_degree); },
+        py::arg("V"), py::arg("F"), py::kw_only(), py::arg("quadrature_degree") = 8,
+        "limit_surface(V, F, *, quadrature_degree=8) -> LimitSurface: the Loop limit surface of the mesh, with limit "
+        "positions, normals, curvatures and resample(levels)");
+}

@@ -1,0 +1,245 @@
+"""Tests of the Python module anisotropic_fairing (pytest; run by CTest as python_module).
+
+The environment gives the module (PYTHONPATH), the command-line program (AF_TOOL) and the data
+(AF_DATA: examples/Anisotropic_fairing/data). The module must give the program's results (to 1e-12) and
+the program's report keys; bad input raises, never crashes; the GIL is released during a run.
+"""
+import json
+import math
+import os
+import subprocess
+import threading
+import time
+
+import numpy as np
+import pytest
+
+import anisotropic_fairing as af
+
+TOOL = os.environ.get('AF_TOOL', '')
+DATA = os.environ.get('AF_DATA', '')
+
+
+def read_obj(path):
+    V, F = [], []
+    for line in open(path):
+        t = line.split()
+        if t and t[0] == 'v':
+            V.append([float(x) for x in t[1:4]])
+        elif t and t[0] == 'f':
+            F.append([int(x.split('/')[0]) - 1 for x in t[1:4]])
+    return np.array(V), np.array(F)
+
+
+def read_off(path):
+    words = [l.split() for l in open(path) if l.strip() and not l.startswith('#')]
+    n, m = int(words[1][0]), int(words[1][1])
+    return np.array([[float(x) for x in w[:3]] for w in words[2:2 + n]])
+
+
+def write_ply(path, V, F, q):
+    with open(path, 'w') as f:
+        f.write('ply\nformat ascii 1.0\nelement vertex %d\nproperty double x\nproperty double y\nproperty double z\n'
+                'property double q\nelement face %d\nproperty list uchar int vertex_indices\nend_header\n' % (len(V), len(F)))
+        for p, value in zip(V, q):
+            f.write('%r %r %r %r\n' % (float(p[0]), float(p[1]), float(p[2]), float(value)))
+        for t in F:
+            f.write('3 %d %d %d\n' % tuple(t))
+
+
+def read_ply_xyzq(path):
+    header, body = open(path).read().split('end_header\n', 1)
+    n = int(header.split('element vertex ')[1].split()[0])
+    rows = [r.split() for r in body.splitlines()[:n]]
+    return np.array([[float(x) for x in r[:3]] for r in rows]), np.array([float(r[3]) for r in rows])
+
+
+def run_tool(args, cwd):
+    p = subprocess.run([TOOL] + args + ['--quiet'], cwd=cwd, capture_output=True, text=True)
+    assert p.returncode == 0, p.stderr
+    return p
+
+
+@pytest.fixture(scope='module')
+def fandisk():
+    return read_obj(os.path.join(DATA, 'fandisk_noisy.obj'))
+
+
+def grid(n=8, z=None):
+    """a bordered (n+1) x (n+1) grid in the plane z = 0 (or z(x, y)), two triangles per square"""
+    V = np.array([[i / n, j / n, 0.0] for j in range(n + 1) for i in range(n + 1)])
+    if z is not None:
+        V[:, 2] = z(V[:, 0], V[:, 1])
+    F = []
+    for j in range(n):
+        for i in range(n):
+            a, b, c, d = j * (n + 1) + i, j * (n + 1) + i + 1, (j + 1) * (n + 1) + i, (j + 1) * (n + 1) + i + 1
+            F += [[a, b, d], [a, d, c]]
+    return V, np.array(F)
+
+
+def test_default_run_equals_the_program(fandisk, tmp_path):
+    V, F = fandisk
+    run_tool([os.path.join(DATA, 'fandisk_noisy.obj'), 'out.off', '--report', 'out.json'], tmp_path)
+    expected = read_off(tmp_path / 'out.off')
+    program_report = json.load(open(tmp_path / 'out.json'))
+    V0, F0 = V.copy(), F.copy()
+    V2, attributes, report = af.fair(V, F)
+    assert attributes is None
+    scale = np.ptp(V, axis=0).max()
+    assert np.abs(V2 - expected).max() <= 1e-12 * scale
+    assert np.array_equal(V, V0) and np.array_equal(F, F0), 'the input arrays are not modified'
+    assert set(report) == set(program_report), 'the report has the keys of the program\'s JSON report'
+    for key in ('status', 'stop_reason', 'tensor', 'automatic_parameters', 'vertices', 'faces', 'noise_level', 'choices'):
+        assert report[key] == program_report[key], key
+    assert len(report['steps']) == len(program_report['steps']) > 0
+    assert report['status'] == 'success' and report['stop_reason'] == 'noise_level'
+
+
+def test_attributes_coupled_equal_the_program(fandisk, tmp_path):
+    V, F = fandisk
+    rng = np.random.default_rng(3)
+    q = np.sin(V[:, 0]) + 0.1 * rng.standard_normal(len(V))
+    write_ply(tmp_path / 'in.ply', V, F, q)
+    settings = ['--attributes', 'q', '--mode', 'coupled', '--attribute-weight', '0.5', '--relative-time-step', '1e-3',
+                '--steps', '3', '--stop', 'off']
+    run_tool(['in.ply', 'out.ply'] + settings, tmp_path)
+    expected_V, expected_q = read_ply_xyzq(tmp_path / 'out.ply')
+    V2, q2, report = af.fair(V, F, attributes=q, attribute_mode='coupled', attribute_weight=0.5, relative_time_step=1e-3,
+                             number_of_iterations=3, stopping_criteria='off')
+    assert q2.shape == q.shape, 'a 1-D attribute comes back 1-D'
+    assert np.abs(V2 - expected_V).max() <= 1e-12 * np.ptp(V, axis=0).max()
+    assert np.abs(q2 - expected_q).max() <= 1e-12 * np.ptp(q)
+    assert np.abs(q2 - q).max() > 1e-3, 'the attribute was faired'
+    assert report['mode'] == 'coupled' and report['attribute_dimension'] == 1 and len(report['steps']) == 3
+
+
+def test_every_mode_and_setting_runs(fandisk):
+    V, F = grid(10, lambda x, y: 0.05 * np.sin(6 * x) * np.cos(5 * y))
+    C = np.column_stack([V[:, 0], V[:, 1] ** 2])
+    for mode in ('separate', 'coupled', 'attributes', 'geometry'):
+        V2, C2, report = af.fair(V, F, attributes=C, attribute_mode=mode, relative_time_step=1e-3, number_of_iterations=2)
+        assert report['status'] == 'success' and C2.shape == C.shape
+        if mode == 'attributes':
+            assert np.array_equal(V2, V), 'attributes only: the geometry is not written'
+        if mode == 'geometry':
+            assert np.array_equal(C2, C), 'geometry only: the attributes are not written'
+    for extra in (dict(tensor='anisotropic'), dict(flow_order=4, relative_time_step=1e-4), dict(finite_element='linear'),
+                  dict(maximum_deviation=0.001), dict(boundary_handling='vertices'), dict(output_positions='control'),
+                  dict(tensor='uniform'), dict(linear_solver='cholesky')):
+        settings = dict(relative_time_step=1e-3, number_of_iterations=2)
+        settings.update(extra)
+        V2, _, report = af.fair(V, F, **settings)
+        assert report['status'] == 'success', extra
+        if 'maximum_deviation' in extra:
+            assert np.linalg.norm(V2 - V, axis=1).max() <= report['maximum_deviation'] * (1 + 1e-12)
+    held = np.zeros(len(V), dtype=bool)
+    held[::3] = True
+    V2, _, report = af.fair(V, F, vertex_is_constrained=held, relative_time_step=1e-3, number_of_iterations=2)
+    assert np.array_equal(V2[held], V[held]) and report['held_vertices'] == held.sum()
+
+
+def test_bad_input_raises():
+    V, F = grid(3)
+    cases = [
+        (lambda: af.fair(V[:, :2], F), ValueError, 'V must be an N x 3 array'),
+        (lambda: af.fair(V.astype(str), F), TypeError, 'V must hold real numbers'),
+        (lambda: af.fair(V, F.astype(float)), TypeError, 'F must hold integer vertex indices'),
+        (lambda: af.fair(V, F[:, :2]), ValueError, 'F must be an M x 3 array'),
+        (lambda: af.fair(V, np.vstack([F, [[0, 1, 99]]])), ValueError, 'refers to vertex 99, but V has 16 vertices'),
+        (lambda: af.fair(V, np.vstack([F, [[0, -1, 2]]])), ValueError, 'refers to vertex -1'),
+        (lambda: af.fair(V, F[:0]), ValueError, 'no face'),
+        (lambda: af.fair(np.where(np.arange(48).reshape(16, 3) == 7, np.nan, V), F), ValueError, 'V row 2 is not finite'),
+        (lambda: af.fair(V, np.vstack([F, F[:1]])), ValueError, 'row'),   # a face twice: not a 2-manifold
+        (lambda: af.fair(V, F, attributes=np.zeros((5, 2))), ValueError, 'attributes must have one row per vertex (16)'),
+        (lambda: af.fair(V, F, time_step=1e-3, relative_time_step=1e-3), ValueError, 'give either time_step or relative_time_step'),
+        (lambda: af.fair(V, F, tensor='bilateral'), ValueError, 'tensor expects isotropic, anisotropic or uniform'),
+        (lambda: af.fair(V, F, relative_time_step=-1), ValueError, 'relative_time_step must be positive'),
+        (lambda: af.fair(V, F, lambda_=2), ValueError, 'lambda_ needs tensor anisotropic'),
+        (lambda: af.fair(V, F, steps=3), TypeError, "unexpected keyword argument 'steps'"),
+        (lambda: af.fair(V, F, relative_time_step=True), TypeError, 'relative_time_step expects a number'),
+        (lambda: af.limit_surface(V, F).resample(11), ValueError, 'must not exceed 10'),
+    ]
+    for call, error, text in cases:
+        with pytest.raises(error) as e:
+            call()
+        assert text in str(e.value), (text, str(e.value))
+
+
+def test_a_failed_run_raises_with_its_report():
+    # a tiny closed mesh run far past its collapse: the library reports the failure, the module raises it
+    V = np.array([[1, 0, 0], [-1, 0, 0], [0, 1, 0], [0, -1, 0], [0, 0, 1], [0, 0, -1]], dtype=float)
+    F = np.array([[0, 2, 4], [2, 1, 4], [1, 3, 4], [3, 0, 4], [2, 0, 5], [1, 2, 5], [3, 1, 5], [0, 3, 5]])
+    with pytest.raises(af.FairingError) as e:
+        af.fair(V, F, relative_time_step=10, number_of_iterations=50, stopping_criteria='off')
+    assert e.value.report['status'] != 'success' and 'fairing failed' in str(e.value)
+    assert isinstance(e.value, RuntimeError)
+
+
+def test_callback_and_gil(fandisk):
+    V, F = fandisk
+    seen = []
+    _, _, report = af.fair(V, F, relative_time_step=1e-4, number_of_iterations=10, stopping_criteria='off',
+                           callback=lambda s: seen.append(s['step']) or s['step'] < 3)
+    assert seen == [1, 2, 3] and report['stop_reason'] == 'callback'
+
+    def boom(step):
+        raise KeyError('from the callback')
+    with pytest.raises(KeyError):
+        af.fair(V, F, relative_time_step=1e-4, number_of_iterations=5, callback=boom)
+
+    # another Python thread runs while the fairing does: the GIL is released. Without that it would run
+    # for a few switch intervals (5 ms each) at most; with it, about as often as while this one sleeps.
+    count, running = [0], [True]
+
+    def spin():
+        while running[0]:
+            count[0] += 1
+    t = threading.Thread(target=spin)
+    t.start()
+    try:
+        start, t0 = count[0], time.perf_counter()
+        time.sleep(0.3)
+        rate = (count[0] - start) / (time.perf_counter() - t0)
+        start, t0 = count[0], time.perf_counter()
+        af.fair(V, F, relative_time_step=1e-4, number_of_iterations=5, stopping_criteria='off')
+        seconds = time.perf_counter() - t0
+        during = count[0] - start
+    finally:
+        running[0] = False
+        t.join()
+    assert seconds > 0.2, 'the run takes long enough to tell (%.3f s)' % seconds
+    assert during > 0.25 * rate * seconds, 'the other thread ran %d times in %.2f s (%.0f per s alone)' % (during, seconds, rate)
+
+
+def test_limit_surface():
+    # a plane: limit points on it, normals along z, resampling keeps the vertices first and the plane
+    V, F = grid(6)
+    s = af.limit_surface(V, F)
+    P, N = s.positions, s.normals
+    assert P.shape == V.shape and np.abs(P[:, 2]).max() == 0 and np.allclose(np.abs(N[:, 2]), 1, atol=1e-15)
+    V1, F1 = s.resample(2)
+    assert len(F1) == 16 * len(F) and np.array_equal(V1[:len(V)], P) and np.abs(V1[:, 2]).max() == 0
+    affine = 2 * V[:, 0] - V[:, 1] + 3
+    V1, F1, a1 = s.resample(1, attributes=affine)
+    assert np.abs(a1 - (2 * V1[:, 0] - V1[:, 1] + 3)).max() < 1e-13, 'an affine attribute stays affine'
+    assert abs(s.area - 1) < 1e-12 or s.area < 1, 'the limit surface of a held grid lies within it'
+
+    # an octahedron refined 3 times, pushed onto the unit sphere: a convex surface whose median mean curvature
+    # is -1, principal curvatures near -1 at its regular (valence 6) vertices (next to the six valence-4
+    # vertices, where the Loop limit surface has no finite curvature, they stray by up to a fifth), principal
+    # directions orthogonal and tangent
+    V = np.array([[1, 0, 0], [-1, 0, 0], [0, 1, 0], [0, -1, 0], [0, 0, 1], [0, 0, -1]], dtype=float)
+    F = np.array([[0, 2, 4], [2, 1, 4], [1, 3, 4], [3, 0, 4], [2, 0, 5], [1, 2, 5], [3, 1, 5], [0, 3, 5]])
+    for _ in range(3):
+        V, F, _ = af.limit_surface(V, F).resample(1, attributes=V)
+    V = V / np.linalg.norm(V, axis=1)[:, None]
+    c = af.limit_surface(V, F).curvatures()
+    assert set(c) == {'k1', 'k2', 'mean_curvature', 'd1', 'd2'}
+    regular = np.bincount(F.ravel(), minlength=len(V)) == 6
+    assert regular.sum() == len(V) - 6 and np.all(c['k1'] <= c['k2'])
+    assert abs(np.median(c['mean_curvature']) + 1) < 0.01
+    assert np.all((c['k1'][regular] > -1.25) & (c['k2'][regular] < -0.95))
+    normals = af.limit_surface(V, F).normals
+    for a, b in ((c['d1'], c['d2']), (c['d1'], normals), (c['d2'], normals)):
+        assert np.abs(np.einsum('ij,ij->i', a, b)).max() < 1e-9
