@@ -139,9 +139,10 @@ const Option_spec option_table[] = {
      set_number(o.relative_time_step, o.has_relative_time_step, flag, v, false);
    }},
   {"--order", nullptr, "2|4",
-   "the flow's order: 2 (default: diffusion, as in the paper) or 4 (dX/dt = -(M^-1 L)^2 X,\n"
-   "which removes noise while rounding the shape less; the time step is then in length^4,\n"
-   "--relative-time-step in l^4; automatic: 0.1 h^4; flow_order). The automatic\n"
+   "the flow's order: 2 (default: diffusion, as in the paper) or 4\n"
+   "(dX/dt = -(M^-1 L)^2 X, which removes noise while rounding the shape less;\n"
+   "the time step is then in length^4, --relative-time-step in l^4; automatic:\n"
+   "0.1 h^4; flow_order). The automatic\n"
    "default run uses the fourth-order flow itself for its uniform candidate\n"
    "(the report's choices say so)",
    [](Options& o, const std::string& flag, const std::string& v) {
