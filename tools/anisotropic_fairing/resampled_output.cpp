@@ -78,10 +78,9 @@ bool copy_values(const Mesh& from, Mesh& to, const std::string& name, const std:
 template <typename Index>
 void copy_property(const Mesh& from, Mesh& to, const std::string& name, const std::vector<Index>& source)
 {
-  const bool done = for_numeric_type([&](auto zero) { return copy_values<Index, decltype(zero)>(from, to, name, source); }) ||
-                    copy_values<Index, CGAL::IO::Color>(from, to, name, source) ||
-                    copy_values<Index, Vector>(from, to, name, source) || copy_values<Index, Texcoord>(from, to, name, source);
-  (void)done;
+  for_numeric_type([&](auto zero) { return copy_values<Index, decltype(zero)>(from, to, name, source); }) ||
+      copy_values<Index, CGAL::IO::Color>(from, to, name, source) || copy_values<Index, Vector>(from, to, name, source) ||
+      copy_values<Index, Texcoord>(from, to, name, source);
 }
 
 // Adds to `to` every property of `from` with key Index, of a type the files hold; returns their names.

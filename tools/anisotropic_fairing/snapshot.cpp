@@ -37,8 +37,6 @@ void render_snapshot(const std::string& script, const std::string& input, const 
                      const std::string& input_title, const std::string& result_title, const std::string& png,
                      const std::string& name)
 {
-  if(script.empty())
-    fail("snapshot_error", "--snapshot: the renderer render_mesh.py was not found (installed next to the program, or set AF_RENDER_SCRIPT)");
   std::string python = "python3";
   std::error_code ec;
   if(const char* env = std::getenv("AF_PYTHON")) python = env;

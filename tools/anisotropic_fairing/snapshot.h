@@ -12,7 +12,8 @@ namespace af_tool {
 // program, else the source tree's; empty if none exists.
 std::string render_script();
 
-// Renders `input` and `result` (titled as given) into `png`, which messages call `name`; throws Failure (status snapshot_error) with the
+// Renders `input` and `result` (titled as given) into `png`, which messages call `name`, with the renderer
+// `script` (render_script(), found); throws Failure (status snapshot_error) with the
 // renderer's last message line if it fails. The interpreter is $AF_PYTHON, else /usr/bin/python3 (Debian's,
 // where python3-vtk9 installs), else python3 from PATH.
 void render_snapshot(const std::string& script, const std::string& input, const std::string& result,
