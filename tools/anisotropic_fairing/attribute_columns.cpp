@@ -114,11 +114,19 @@ std::vector<Attribute_column> resolve_attributes(Mesh& mesh, const Input_info& i
   return columns;
 }
 
-void gather(const Mesh& mesh, const std::vector<Attribute_column>& columns, std::vector<std::vector<double>>& values)
+void gather(const Mesh& mesh, const std::vector<Attribute_column>& columns, std::vector<std::vector<double>>& values, bool faired)
 {
   values.assign(mesh.num_vertices(), std::vector<double>(columns.size()));
   for(Vertex_index v : mesh.vertices())
-    for(std::size_t c = 0; c < columns.size(); ++c) values[std::size_t(v)][c] = columns[c].get(v);
+    for(std::size_t c = 0; c < columns.size(); ++c)
+    {
+      const double x = columns[c].get(v);
+      // a property that is not faired may hold anything (it is written as it was); a faired one may not
+      if(faired && !std::isfinite(x))
+        fail("attribute_error", "--attributes " + columns[c].name + ": vertex " + std::to_string(std::size_t(v)) + " holds " +
+                                (std::isnan(x) ? "NaN" : "an infinite value") + ", which cannot be faired");
+      values[std::size_t(v)][c] = x;
+    }
 }
 
 void scatter(const Mesh& mesh, const std::vector<Attribute_column>& columns, const std::vector<std::vector<double>>& values)

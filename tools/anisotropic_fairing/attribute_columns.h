@@ -43,7 +43,10 @@ struct Attribute_vectors
   friend void put(const Attribute_vectors& m, Vertex_index v, const value_type& x) { (*m.values)[std::size_t(v)] = x; }
 };
 
-void gather(const Mesh& mesh, const std::vector<Attribute_column>& columns, std::vector<std::vector<double>>& values);
+// The columns' values per vertex. `faired`: they are to be faired, so a NaN or infinite value fails
+// (attribute_error, naming the attribute and the vertex); otherwise they are read as they are.
+void gather(const Mesh& mesh, const std::vector<Attribute_column>& columns, std::vector<std::vector<double>>& values,
+            bool faired = true);
 void scatter(const Mesh& mesh, const std::vector<Attribute_column>& columns, const std::vector<std::vector<double>>& values);
 
 } // namespace af_tool

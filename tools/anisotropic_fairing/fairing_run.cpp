@@ -123,18 +123,18 @@ int run(const Options& o, Run_record& r)
 
   const unsigned int max_steps = o.steps;
   const bool quiet = o.quiet;
-  std::size_t last_step = 0;
-  auto progress = [max_steps, quiet, &last_step](const AF::Fairing_step& s) {
-    // with automatic parameters the library also runs the isotropic and the uniform fourth-order flow, and
-    // each flow once more on a perturbed copy of the input (to estimate its error), to keep the best result
-    if(!quiet && s.step <= last_step)
-      std::fprintf(stderr, "another run of the comparison (anisotropic, isotropic, uniform fourth-order flow; then each on a perturbed copy):\n");
-    last_step = s.step;
-    if(!quiet)
-      std::fprintf(stderr, "step %zu/%u  t=%.6g  area=%.6g  int|H|^2=%.6g  max disp=%.6g  %d %s  %.3fs+%.3fs\n",
-                   s.step, max_steps, s.time, s.area, s.H_integral, s.max_displacement, s.solver_iterations,
-                   s.direct_solve ? "factorisation" : "its",
-                   s.assemble_seconds, s.solve_seconds);
+  std::size_t last_run = 0, steps_in_all = 0;
+  auto progress = [max_steps, quiet, &last_run, &steps_in_all](const AF::Fairing_step& s) {
+    // the default run compares flows, each also on a probed copy of the input: say which runs, and how
+    // much of the step budget (--steps bounds all runs together) is spent
+    ++steps_in_all;
+    if(quiet) return true;
+    if(s.runs > 1 && s.run != last_run)
+      std::fprintf(stderr, "anisotropic_fairing: run %zu of at most %zu: the %s\n", s.run, s.runs, s.run_name.c_str());
+    last_run = s.run;
+    std::fprintf(stderr, "anisotropic_fairing: step %zu (%zu/%u in all)  t=%.6g  area=%.6g  int|H|^2=%.6g  max disp=%.6g  %d %s  %.3fs+%.3fs\n",
+                 s.step, steps_in_all, max_steps, s.time, s.area, s.H_integral, s.max_displacement, s.solver_iterations,
+                 s.direct_solve ? "factorisation" : "its", s.assemble_seconds, s.solve_seconds);
     return true;
   };
   try

@@ -73,8 +73,11 @@ int main(int argc, char** argv)
   int code = exit_code;
   std::string line = "anisotropic_fairing: " + r.message;
   const bool report_failed = r.status == "write_error" && r.message.rfind("cannot write the report ", 0) == 0;
-  if(!o.report.empty() && !o.report_refused && !report_failed && !write_file_atomically(o.report, report_json(o, r, elapsed_seconds())))
-    line += " (and cannot write the report " + o.report + ")";
+  const std::string refused = report_refused_on_failure(o);
+  if(!o.report.empty() && !o.report_refused && !refused.empty())
+    line += " (the report " + one_line(o.report) + " is not written: " + refused + ")";
+  else if(!o.report.empty() && refused.empty() && !report_failed && !write_file_atomically(o.report, report_json(o, r, elapsed_seconds())))
+    line += " (and cannot write the report " + one_line(o.report) + ")";
   std::fprintf(stderr, "%s\n", line.c_str());
   return code;
 }

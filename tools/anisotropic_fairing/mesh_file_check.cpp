@@ -156,7 +156,7 @@ Polygon_soup read_checked_off(const std::string& path, const std::string& text)
     return true;
   };
   const bool texcoords = flag("ST"), colors = flag("C"), normals = flag("N"), homogeneous = flag("4"), any_dim = flag("n");
-  if(key != "OFF") lines.fail("the header '" + std::string(t[0]) + "' is not an OFF keyword ([ST][C][N][4][n]OFF)");
+  if(key != "OFF") lines.fail("the header " + quoted_excerpt(t[0]) + " is not an OFF keyword ([ST][C][N][4][n]OFF)");
   std::size_t used = 1;
   int dim = homogeneous ? 4 : 3;
   const auto next_number = [&](const char* what) {
@@ -184,7 +184,7 @@ Polygon_soup read_checked_off(const std::string& path, const std::string& text)
   // need be, taking a coordinate for it) and doubles it in an int
   const long long ne = next_number("the edge count");
   if(ne < 0 || ne > 1073741823) lines.fail("the edge count " + std::to_string(ne) + " is out of range (0..2^30-1)");
-  if(used < t.size()) lines.fail("unexpected '" + std::string(t[used]) + "' after the counts");
+  if(used < t.size()) lines.fail("unexpected " + quoted_excerpt(t[used]) + " after the counts");
   if(nv < 0 || nf < 0) lines.fail("negative counts");
   check_count(path, "the header declares", static_cast<unsigned long long>(nv), "vertices", text.size(), 2 * std::size_t(dim));
   check_count(path, "the header declares", static_cast<unsigned long long>(nf), "faces", text.size(), 8);
@@ -278,7 +278,7 @@ Polygon_soup read_checked_obj(const std::string& path, const std::string& text)
       std::array<double, 3> p;
       for(std::size_t k = 0; k < 3; ++k)
         try { p[k] = numbers.real(t[k + 1], "the coordinate"); }
-        catch(const File_problem&) { fail("the coordinate '" + std::string(t[k + 1]) + "' is not a finite number"); }
+        catch(const File_problem&) { fail("the coordinate " + quoted_excerpt(t[k + 1]) + " is not a finite number"); }
       soup.points.push_back(p);
     }
     else if(key == "f")
@@ -349,7 +349,7 @@ Polygon_soup read_checked_stl(const std::string& path, const std::string& text)
         in_facet = 0;
       }
       else if(t[0] != "facet" && t[0] != "outer" && t[0] != "endloop" && t[0] != "endsolid" && t[0] != "solid")
-        lines.fail("'" + std::string(t[0]) + "' is not an STL keyword");
+        lines.fail(quoted_excerpt(t[0]) + " is not an STL keyword");
     }
     if(in_facet != 0) throw File_problem(path + ": the file ends inside a facet");
   }

@@ -39,6 +39,17 @@ struct Polygon_soup
   bool ply_strips = false;                // the faces came from a PLY "tristrips" element
   std::size_t merged_points = 0;          // STL: corners merged into a point they coincide with
   std::vector<std::string> warnings;      // what the file holds that will not be kept
+  // NaN or infinite values of the properties of an ASCII PLY file that are not coordinates: carried
+  // through as they are, though CGAL's ASCII reader cannot read them (mesh_io.cpp reads them so)
+  struct Nonfinite_value
+  {
+    std::size_t offset, length;   // of the token in the file
+    bool vertex;                  // of a vertex, else of a face
+    std::size_t index;
+    std::string property;
+    double value;
+  };
+  std::vector<Nonfinite_value> nonfinite;
 };
 
 /// Reads `path` as `format` into a soup, checking it as described above; throws File_problem.

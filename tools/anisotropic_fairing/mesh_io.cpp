@@ -16,6 +16,7 @@
 #include <cstring>
 #include <fstream>
 #include <iostream>
+#include <iterator>
 #include <sstream>
 #include <string>
 #include <vector>
@@ -114,7 +115,7 @@ Obj_texcoords read_obj_texcoords(const std::string& path, std::size_t mesh_verti
       {
         const std::string::size_type s1 = token.find('/');
         const long v = index(token.substr(0, s1), nv);
-        if(v < 0) { set_problem("line " + std::to_string(line_number) + ": bad vertex index '" + token + "'"); continue; }
+        if(v < 0) { set_problem("line " + std::to_string(line_number) + ": bad vertex index " + quoted_excerpt(token)); continue; }
         std::string tex;
         if(s1 != std::string::npos)
         {
@@ -123,7 +124,7 @@ Obj_texcoords read_obj_texcoords(const std::string& path, std::size_t mesh_verti
         }
         if(tex.empty()) { corner_without_vt = true; continue; }
         const long ti = index(tex, vt.size());
-        if(ti < 0) { set_problem("line " + std::to_string(line_number) + ": bad texture index '" + token + "'"); continue; }
+        if(ti < 0) { set_problem("line " + std::to_string(line_number) + ": bad texture index " + quoted_excerpt(token)); continue; }
         long& used = vt_of[std::size_t(v)];
         if(used < 0) used = ti;
         else if(used != ti && vt[std::size_t(used)] != vt[std::size_t(ti)])
@@ -176,6 +177,34 @@ bool ply_is_binary(const std::string& path)
   for(int i = 0; i < 4 && std::getline(in, line); ++i)
     if(line.compare(0, 6, "format") == 0) return line.find("binary") != std::string::npos;
   return false;
+}
+
+// An ASCII PLY file whose properties hold NaN or infinity (never its coordinates: the check refuses
+// those): CGAL's ASCII reader cannot read them, so it reads the text with 0 in their place, and the
+// values are then put back into their properties, to be written as they were.
+bool read_ply_with_nonfinite_values(const std::string& path, const Polygon_soup& soup, Mesh& mesh, std::string& comments)
+{
+  std::ifstream file(path, std::ios::binary);
+  std::string text((std::istreambuf_iterator<char>(file)), std::istreambuf_iterator<char>());
+  for(const Polygon_soup::Nonfinite_value& x : soup.nonfinite) text.replace(x.offset, x.length, std::string(x.length, ' ')).at(x.offset) = '0';
+  std::istringstream in(text);
+  if(!CGAL::IO::read_PLY(in, mesh, comments, false)) return false;
+  for(const Polygon_soup::Nonfinite_value& x : soup.nonfinite)
+  {
+    const std::string name = (x.vertex ? "v:" : "f:") + x.property;
+    const auto put_back_as = [&](auto index, auto zero) {
+      typedef decltype(index) Index;
+      auto map = mesh.property_map<Index, decltype(zero)>(name);
+      const std::size_t count = x.vertex ? mesh.number_of_vertices() : mesh.number_of_faces();
+      if(!map.second || x.index >= count) return false;
+      map.first[Index(Mesh::size_type(x.index))] = decltype(zero)(x.value);
+      return true;
+    };
+    const bool put_back = x.vertex ? put_back_as(Vertex_index(), 0.f) || put_back_as(Vertex_index(), 0.0)
+                                   : put_back_as(Face_index(), 0.f) || put_back_as(Face_index(), 0.0);
+    if(!put_back) return false;
+  }
+  return true;
 }
 
 // PLY files with red/green/blue/alpha: CGAL's reader puts rgb into "v:color" (alpha 255) and alpha
@@ -334,8 +363,13 @@ void read_input(const std::string& path, Mesh& mesh, Input_info& info, bool repa
     else if(info.format == Format::PLY)
     {
       info.ply_binary = ply_is_binary(path);
-      std::ifstream in(path, std::ios::binary);
-      ok = CGAL::IO::read_PLY(in, mesh, info.ply_comments, false);  // keeps every property as v:<name>, f:<name>
+      if(soup.nonfinite.empty())
+      {
+        std::ifstream in(path, std::ios::binary);
+        ok = CGAL::IO::read_PLY(in, mesh, info.ply_comments, false);  // keeps every property as v:<name>, f:<name>
+      }
+      else
+        ok = read_ply_with_nonfinite_values(path, soup, mesh, info.ply_comments);
       if(soup.ply_strips && mesh.number_of_faces() == 0 && mesh.number_of_vertices() == soup.points.size())
       {
         // CGAL reads the vertices and their properties of a file of triangle strips, but not the strips

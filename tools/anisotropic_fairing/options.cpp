@@ -15,6 +15,7 @@
 #include <cmath>
 #include <cstdlib>
 #include <filesystem>
+#include <fstream>
 #include <initializer_list>
 #include <limits>
 #include <string>
@@ -37,7 +38,7 @@ std::vector<std::string> parse_attribute_list(const std::string& text)
     std::string name = text.substr(start, comma == std::string::npos ? std::string::npos : comma - start);
     const std::string::size_type b = name.find_first_not_of(" \t"), e = name.find_last_not_of(" \t");
     name = b == std::string::npos ? std::string() : name.substr(b, e - b + 1);
-    if(name.empty()) usage_error("--attributes expects NAME,NAME,..., not '" + text + "'");
+    if(name.empty()) usage_error("--attributes expects NAME,NAME,..., not " + quoted_excerpt(text));
     if(std::find(names.begin(), names.end(), name) != names.end())
       usage_error("--attributes names '" + name + "' twice");
     names.push_back(name);
@@ -53,7 +54,7 @@ double parse_double(const std::string& flag, const std::string& text)
   char* end = nullptr;
   const double v = std::strtod(text.c_str(), &end);
   if(text.empty() || end != text.c_str() + text.size() || (errno != ERANGE && !std::isfinite(v)))
-    usage_error(flag + " expects a finite number, not '" + text + "'");
+    usage_error(flag + " expects a finite number, not " + quoted_excerpt(text));
   if(errno == ERANGE && std::abs(v) > 1) usage_error(flag + " " + text + " is beyond the range of double precision");
   if(errno == ERANGE)   // strtod says so below the smallest normal double, where the arithmetic loses its digits
     usage_error(flag + " " + text + " is below the smallest normal double (2.2e-308), too small to compute with");
@@ -67,7 +68,7 @@ unsigned int parse_unsigned(const std::string& flag, const std::string& text)
   const unsigned long long v = std::strtoull(text.c_str(), &end, 10);
   if(text.empty() || text[0] == '-' || text[0] == '+' || end != text.c_str() + text.size() || errno == ERANGE ||
      v > (std::numeric_limits<unsigned int>::max)())
-    usage_error(flag + " expects a non-negative integer, not '" + text + "'");
+    usage_error(flag + " expects a non-negative integer, not " + quoted_excerpt(text));
   return static_cast<unsigned int>(v);
 }
 
@@ -89,7 +90,7 @@ std::size_t choice_index(const std::string& flag, const std::string& text, const
     if(text == names[i]) return i;
   std::string list;
   for(std::size_t i = 0; i < names.size(); ++i) list += std::string(i == 0 ? "" : i + 1 == names.size() ? " or " : ", ") + names[i];
-  usage_error(flag + " expects " + list + ", not '" + text + "'");
+  usage_error(flag + " expects " + list + ", not " + quoted_excerpt(text));
 }
 
 // The value that `text` names among `choices` (name, value); for any other text that usage error.
@@ -149,8 +150,8 @@ const Option_spec option_table[] = {
      o.order = choice<int>(flag, v, {{"2", 2}, {"4", 4}});
      o.has_order = true;
    }},
-  {"--steps", nullptr, "N", "the most time steps to run (default 10; with automatic parameters 200;\n"
-   "number_of_iterations)",
+  {"--steps", nullptr, "N", "the most time steps to run, all runs of the automatic comparison\n"
+   "together (default 10; with automatic parameters 200; number_of_iterations)",
    [](Options& o, const std::string& flag, const std::string& v) { o.steps = parse_unsigned(flag, v); o.has_steps = true; }},
   {"--stop", nullptr, "auto|noise|paper|off",
    "auto (default): noise with automatic parameters, paper otherwise;\n"
@@ -471,6 +472,26 @@ std::string help_text()
   return text + help_after_options;
 }
 
+std::string report_refused_on_failure(const Options& o)
+{
+  if(o.report.empty() || o.report_refused) return "refused";
+  for(const std::string& p : o.positional)
+    if(same_file(o.report, p)) return "it is also the argument " + quoted_excerpt(p, 200) + " of the command line";
+  for(const std::string& p : {o.hold, o.snapshot})
+    if(!p.empty() && same_file(o.report, p)) return "it is also " + quoted_excerpt(p, 200) + " of the command line";
+  std::error_code ec;
+  if(!fs::exists(o.report, ec)) return std::string();
+  // an existing file is replaced only if it is a report: a JSON object with a "status"
+  std::ifstream in(o.report, std::ios::binary);
+  std::string head(4096, '\0');
+  in.read(&head[0], std::streamsize(head.size()));
+  head.resize(std::size_t(in.gcount()));
+  const std::size_t first = head.find_first_not_of(" \t\r\n");
+  if(!fs::is_regular_file(o.report, ec) || first == std::string::npos || head[first] != '{' || head.find("\"status\"") == std::string::npos)
+    return "it exists and is not a report of this program";
+  return std::string();
+}
+
 void parse_arguments(int argc, char** argv, Options& o)
 {
   std::vector<std::string> positional;
@@ -508,10 +529,11 @@ void parse_arguments(int argc, char** argv, Options& o)
       if(!has_error) { first_error = f; has_error = true; }
     }
   }
+  o.positional = positional;
   if(o.help || o.version) return;
   if(has_error) throw first_error;
   if(positional.size() < 2) usage_error("INPUT and OUTPUT are required");
-  if(positional.size() > 2) usage_error("unexpected argument '" + positional[2] + "'");
+  if(positional.size() > 2) usage_error("unexpected argument " + quoted_excerpt(positional[2], 200));
   o.input = positional[0];
   o.output = positional[1];
   if(o.has_time_step && o.has_relative_time_step) usage_error("give either --time-step or --relative-time-step, not both");
@@ -540,6 +562,11 @@ void parse_arguments(int argc, char** argv, Options& o)
   {
     o.report_refused = true;
     usage_error("the report " + o.report + " is the OUTPUT: one would overwrite the other");
+  }
+  if(!o.report.empty() && !o.hold.empty() && fs::is_regular_file(o.hold) && same_file(o.report, o.hold))
+  {
+    o.report_refused = true;
+    usage_error("the report " + o.report + " is --hold's file: it would be overwritten");
   }
   if(o.curvature && f != Format::PLY)
     usage_error("--curvature needs a .ply OUTPUT (k1, k2 and mean_curvature are written as vertex properties)");

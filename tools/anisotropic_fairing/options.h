@@ -43,6 +43,7 @@ struct Options
   bool quiet = false;
   bool repair = false;           // --repair: make a non-manifold or inconsistently oriented input usable
   bool report_refused = false;   // the report's path collides with the input or the output: never written
+  std::vector<std::string> positional;   // the arguments that are not options, as given (even after a usage error)
   std::string hold;            // --hold: a vertex property or a file of vertex indices
   unsigned int resample = 0;   // --resample K: levels of Loop refinement of the written surface
   bool has_resample = false;
@@ -59,6 +60,12 @@ void parse_arguments(int argc, char** argv, Options& o);
 std::string help_text();
 // The text of --version: the program's version and those of the libraries it was built with.
 std::string version_text();
+
+// Why a failed run must not write its report to `o.report` (empty: it may). A failure may write only
+// where it cannot destroy anything: not over any path on the command line (INPUT, OUTPUT, a stray
+// argument, --hold's file, --snapshot), and not over an existing file that is not a report of this
+// program.
+std::string report_refused_on_failure(const Options& o);
 
 bool automatic_parameters(const Options& o);
 // the anisotropic tensor whose threshold and prefilter are chosen from the mesh

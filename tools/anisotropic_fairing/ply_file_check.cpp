@@ -49,7 +49,9 @@ public:
   Ply_values(const std::string& path, const std::string& text, std::size_t start, Ply_encoding encoding)
     : path_(path), text_(text), at_(start), encoding_(encoding), lines_(std::string_view(text).substr(start), path, false) {}
 
-  double value(int size, bool is_float, bool is_signed, const std::string& where)
+  // `finite`: a float must be finite (the coordinates); the other properties are carried through as
+  // they are, NaN included, and checked only where they are faired (attribute_columns.cpp)
+  double value(int size, bool is_float, bool is_signed, const std::string& where, bool finite = true)
   {
     if(encoding_ == Ply_encoding::ASCII)
     {
@@ -59,11 +61,12 @@ public:
         used_ = 0;
       }
       const std::string_view t = tokens_[used_++];
-      if(is_float) return lines_.real(t, where.c_str());
+      last_token_ = t;
+      if(is_float) return lines_.real(t, finite ? (where + ": the coordinate").c_str() : where.c_str(), finite);
       const long long v = lines_.integer(t, where.c_str());
       const long long low = is_signed ? -(1LL << (8 * size - 1)) : 0, high = is_signed ? (1LL << (8 * size - 1)) - 1 : (1LL << (8 * size)) - 1;
       if(v < low || v > high)
-        fail(where + ": " + std::string(t) + " is outside the range of its " + std::to_string(8 * size) + "-bit " +
+        fail(where + ": " + quoted_excerpt(t) + " is outside the range of its " + std::to_string(8 * size) + "-bit " +
              (is_signed ? "signed" : "unsigned") + " type");
       return double(v);
     }
@@ -77,7 +80,7 @@ public:
       double v;
       if(size == 4) { float f; std::memcpy(&f, b, 4); v = f; }
       else std::memcpy(&v, b, 8);
-      if(!std::isfinite(v)) fail(where + " is not a finite number");
+      if(finite && !std::isfinite(v)) fail(where + " has a coordinate that is not a finite number");
       return v;
     }
     unsigned long long u = 0;
@@ -98,6 +101,10 @@ public:
 
   [[noreturn]] void fail(const std::string& what) const { throw File_problem(path_ + ": " + what); }
 
+  // ASCII: where the last value read stands in the file
+  std::size_t last_offset() const { return std::size_t(last_token_.data() - text_.data()); }
+  std::size_t last_length() const { return last_token_.size(); }
+
 private:
   const std::string& path_;
   const std::string& text_;
@@ -105,6 +112,7 @@ private:
   Ply_encoding encoding_;
   Text_lines lines_;
   std::vector<std::string_view> tokens_;
+  std::string_view last_token_;
   std::size_t used_ = 0;
 };
 
@@ -177,7 +185,7 @@ Polygon_soup read_checked_ply(const std::string& path, const std::string& text)
       if(t[1] == "ascii") encoding = Ply_encoding::ASCII;
       else if(t[1] == "binary_little_endian") encoding = Ply_encoding::LITTLE;
       else if(t[1] == "binary_big_endian") encoding = Ply_encoding::BIG;
-      else header.fail("unknown encoding '" + std::string(t[1]) + "'");
+      else header.fail("unknown encoding " + quoted_excerpt(t[1]));
       format_seen = true;
     }
     else if(t[0] == "element")
@@ -197,19 +205,19 @@ Polygon_soup read_checked_ply(const std::string& path, const std::string& text)
       {
         bool count_float = false;
         if(!scalar_type(t[2], p.count_size, count_float, p.count_signed) || count_float)
-          header.fail("the count type '" + std::string(t[2]) + "' of a list is not an integer type");
-        if(!scalar_type(t[3], p.size, p.is_float, p.is_signed)) header.fail("unknown type '" + std::string(t[3]) + "'");
+          header.fail("the count type " + quoted_excerpt(t[2]) + " of a list is not an integer type");
+        if(!scalar_type(t[3], p.size, p.is_float, p.is_signed)) header.fail("unknown type " + quoted_excerpt(t[3]));
         p.name = std::string(t[4]);
       }
       else if(t.size() == 3)
       {
-        if(!scalar_type(t[1], p.size, p.is_float, p.is_signed)) header.fail("unknown type '" + std::string(t[1]) + "'");
+        if(!scalar_type(t[1], p.size, p.is_float, p.is_signed)) header.fail("unknown type " + quoted_excerpt(t[1]));
         p.name = std::string(t[2]);
       }
       else header.fail("a property needs a type and a name");
       elements.back().properties.push_back(p);
     }
-    else header.fail("'" + std::string(t[0]) + "' is not a PLY header keyword");
+    else header.fail(quoted_excerpt(t[0]) + " is not a PLY header keyword");
   }
   if(!format_seen) throw File_problem(path + ": the header has no 'format' line");
   check_types_cgal_reads(path, elements);
@@ -247,7 +255,10 @@ Polygon_soup read_checked_ply(const std::string& path, const std::string& text)
         const Ply_property& p = e.properties[k];
         if(!p.count_size)
         {
-          const double v = values.value(p.size, p.is_float, p.is_signed, where);
+          const bool is_coordinate = int(k) == coordinate[0] || int(k) == coordinate[1] || int(k) == coordinate[2];
+          const double v = values.value(p.size, p.is_float, p.is_signed, where, is_coordinate);
+          if(!std::isfinite(v) && encoding == Ply_encoding::ASCII && (is_vertex || is_face))
+            soup.nonfinite.push_back({values.last_offset(), values.last_length(), is_vertex, std::size_t(i), p.name, v});
           for(int c = 0; c < 3; ++c)
             if(int(k) == coordinate[c]) soup.points[std::size_t(i)][std::size_t(c)] = v;
           continue;

@@ -8,6 +8,7 @@
 
 #include <cmath>
 #include <cstdio>
+#include <limits>
 #include <string>
 #include <vector>
 
@@ -123,12 +124,20 @@ void resample_output(Mesh& mesh, const Input_info& info, const std::string& inpu
   Mesh& coarse = mesh;
   const std::vector<Attribute_column> columns = resolve_attributes(coarse, info, input, function_properties(coarse, info, curvature));
   std::vector<Values> written, controls;
-  gather(coarse, columns, written);
+  gather(coarse, columns, written, false);
   controls = written;
   for(std::size_t c = 0; c < columns.size(); ++c)
     for(std::size_t f = 0; f < faired.columns->size(); ++f)
       if(columns[c].name == (*faired.columns)[f].name)
         for(std::size_t i = 0; i < controls.size(); ++i) controls[i][c] = (*faired.values)[i][f];
+  // a property holding NaN or infinity (never a faired one) has no limit where those values reach:
+  // resampled with 0 in their place and beside it their indicator, whose limit is positive exactly
+  // where they reach (Loop's weights are positive), NaN is written there
+  const std::size_t d = columns.size();
+  for(Values& row : controls) row.resize(2 * d, 0.0);
+  for(Values& row : controls)
+    for(std::size_t c = 0; c < d; ++c)
+      if(!std::isfinite(row[c])) { row[c] = 0; row[d + c] = 1; }
 
   Mesh fine;
   const std::vector<std::string> vertex_properties = add_properties<Vertex_index>(coarse, fine, "v:");
@@ -171,6 +180,12 @@ void resample_output(Mesh& mesh, const Input_info& info, const std::string& inpu
     same[i] = Vertex_index(Mesh::size_type(i));
     fine.point(same[i]) = coarse.point(same[i]);
     values[i] = written[i];
+  }
+  for(std::size_t i = n; i < values.size(); ++i)
+  {
+    for(std::size_t c = 0; c < d; ++c)
+      if(values[i][d + c] > 0) values[i][c] = std::numeric_limits<double>::quiet_NaN();
+    values[i].resize(d);
   }
   for(const std::string& p : vertex_properties) copy_property(coarse, fine, p, same);
   scatter(fine, resolve_attributes(fine, info, input, function_properties(coarse, info, curvature)), values);

@@ -5,6 +5,7 @@
 #define AF_TOOL_TEXT_TOKENS_H
 
 #include "mesh_file_check.h"
+#include "message_text.h"
 
 #include <charconv>
 #include <cmath>
@@ -52,16 +53,17 @@ public:
     throw File_problem(path_ + " line " + std::to_string(line_) + ": " + what);
   }
 
-  /// A finite double; fails naming `what` otherwise.
-  double real(std::string_view t, const char* what) const
+  /// A double, finite unless `finite` is false (nan and inf are then read as they are); fails naming
+  /// `what` otherwise.
+  double real(std::string_view t, const char* what, bool finite = true) const
   {
     double v = 0;
     if(!t.empty() && t.front() == '+') t.remove_prefix(1);
     const auto r = std::from_chars(t.data(), t.data() + t.size(), v);
     if(r.ec == std::errc::result_out_of_range)
-      fail(std::string(what) + " '" + std::string(t) + "' is outside the range of double precision");
-    if(r.ec != std::errc() || r.ptr != t.data() + t.size()) fail(std::string(what) + " '" + std::string(t) + "' is not a number");
-    if(!std::isfinite(v)) fail(std::string(what) + " '" + std::string(t) + "' is not a finite number");
+      fail(std::string(what) + " " + quoted_excerpt(t) + " is outside the range of double precision");
+    if(r.ec != std::errc() || r.ptr != t.data() + t.size()) fail(std::string(what) + " " + quoted_excerpt(t) + " is not a number");
+    if(finite && !std::isfinite(v)) fail(std::string(what) + " " + quoted_excerpt(t) + " is not a finite number");
     return v;
   }
 
@@ -71,7 +73,7 @@ public:
     long long v = 0;
     if(!t.empty() && t.front() == '+') t.remove_prefix(1);
     const auto r = std::from_chars(t.data(), t.data() + t.size(), v);
-    if(r.ec != std::errc() || r.ptr != t.data() + t.size()) fail(std::string(what) + " '" + std::string(t) + "' is not an integer");
+    if(r.ec != std::errc() || r.ptr != t.data() + t.size()) fail(std::string(what) + " " + quoted_excerpt(t) + " is not an integer");
     return v;
   }
 

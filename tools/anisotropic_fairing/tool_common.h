@@ -6,6 +6,8 @@
 #ifndef AF_TOOL_TOOL_COMMON_H
 #define AF_TOOL_TOOL_COMMON_H
 
+#include "message_text.h"
+
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/Surface_mesh.h>
 
@@ -42,15 +44,6 @@ struct Failure
 
 [[noreturn]] inline void usage_error(const std::string& message) { throw Failure{2, "usage_error", message + " (see --help)"}; }
 [[noreturn]] inline void fail(const std::string& status, const std::string& message) { throw Failure{1, status, message}; }
-
-// the message on one line: the failure contract is one line on stderr
-inline std::string one_line(std::string s)
-{
-  for(char& c : s)
-    if(c == '\n' || c == '\r' || c == '\t') c = ' ';
-  while(!s.empty() && s.back() == ' ') s.pop_back();
-  return s;
-}
 
 // seconds since the program started (the report's wall_seconds)
 double elapsed_seconds();

@@ -100,6 +100,9 @@ struct Fairing_step
   double solve_seconds = 0;     ///< wall time to solve it
   bool direct_solve = false;    ///< solved by the sparse factorisation (else by conjugate gradients)
   double noise_displacement = 0;///< how far the written surface moved off the input along the input's normals, in units of the local edge length (robust deviation; see `Fairing_report::noise_level`); 0 without the noise criterion
+  std::size_t run = 1;          ///< which run of the call the step belongs to: the default run compares several flows, each also on a probed copy of the input (`runs` at most), and `number_of_iterations` bounds their steps in all
+  std::size_t runs = 1;         ///< the most runs the call makes
+  std::string run_name;         ///< what the run is, e.g. "isotropic flow", "anisotropic flow on the probed input"
 };
 
 /*!

@@ -98,7 +98,9 @@ of its area per step. `time_step` and `fidelity_weight` give them in model units
     \cgalParamType{int, 2 or 4} \cgalParamDefault{`2`}
   \cgalParamNEnd
   \cgalParamNBegin{number_of_iterations}
-    \cgalParamDescription{the largest number of time steps; `stopping_criteria` may end the run earlier}
+    \cgalParamDescription{the largest number of time steps of the whole call: the default run's comparison of flows
+                          counts every step of every run it makes, and makes no run once they are spent;
+                          `stopping_criteria` may end a run earlier}
     \cgalParamType{unsigned int} \cgalParamDefault{`automatic_maximum_steps` (200) with automatic parameters, `10` with a time step}
   \cgalParamNEnd
   \cgalParamNBegin{relative_fidelity_weight}

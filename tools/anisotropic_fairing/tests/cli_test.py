@@ -8,7 +8,7 @@ Each run of a group lists the arguments and what must hold afterwards; the check
 named check_<key> below, one per key of a run (see the comment at the top of cli_cases.json).
 Python 3 standard library only. Exits 1 if any check failed, naming each.
 """
-import argparse, glob, json, math, os, re, shutil, subprocess, sys
+import argparse, glob, hashlib, json, math, os, re, shutil, subprocess, sys
 
 failures = []
 checks = [0]
@@ -218,8 +218,18 @@ def temporaries(work):
     return glob.glob(os.path.join(work, '**', '.*.tmp*'), recursive=True)
 
 
+def file_digests(work):
+    digests = {}
+    for path in glob.glob(os.path.join(work, '**', '*'), recursive=True):
+        if os.path.isfile(path):
+            with open(path, 'rb') as f:
+                digests[path] = hashlib.sha256(f.read()).hexdigest()
+    return digests
+
+
 def do_run(run, tool, work, data):
     args = [a.replace('@DATA@', data) for a in run['args']]
+    before = file_digests(work)
     p = subprocess.run([tool] + args, cwd=work, capture_output=True, text=True, timeout=120)
     print('anisotropic_fairing %s\n  -> exit %d\n  stderr: %s' % (' '.join(args), p.returncode, p.stderr.rstrip()))
     what = run.get('what', ' '.join(run['args']))
@@ -233,8 +243,16 @@ def do_run(run, tool, work, data):
     elif output:
         check(os.path.exists(output), '%s: %s written' % (what, run['output']))
     check(not temporaries(work), '%s: no temporary file left (%s)' % (what, temporaries(work)))
+    if p.returncode != 0:   # a failure changes no file that existed, but the report it was asked for
+        after = file_digests(work)
+        asked = os.path.join(work, run['report']) if 'report' in run else None
+        for path, digest in before.items():
+            check(path == asked or after.get(path) == digest, '%s: %s unchanged by the failure' % (what, os.path.relpath(path, work)))
     for pattern in run.get('stderr', []):
         check(re.search(pattern, p.stderr), '%s: stderr matches %s' % (what, pattern))
+    if 'stderr_lines' in run:   # every line of stderr matches
+        for line in p.stderr.splitlines():
+            check(re.search(run['stderr_lines'], line), '%s: stderr line %r matches %s' % (what, line, run['stderr_lines']))
     for pattern in run.get('stderr_not', []):
         check(not re.search(pattern, p.stderr), '%s: stderr does not match %s' % (what, pattern))
     if 'report' in run:

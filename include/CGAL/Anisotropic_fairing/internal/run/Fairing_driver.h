@@ -134,8 +134,9 @@ inline Stepper_settings with_order(Stepper_settings s, int order)
   return s;
 }
 
-/// Runs the isotropic and the uniform fourth-order flow too (`run(tensor, Y, order, start, Z)` runs from
-/// `start` and writes Y, and its control points in *Z unless null) and keeps, in X, *control and `report`,
+/// Runs the isotropic and the uniform fourth-order flow too (`run(name, tensor, Y, order, start, Z)` runs from
+/// `start` and writes Y, and its control points in *Z unless null; `steps_left` is the call's step budget:
+/// a run it cannot pay for is not made) and keeps, in X, *control and `report`,
 /// the result at the noise level whose estimated
 /// error is lowest (Tensor_selection.h: each candidate runs once more on the probed input), or the first
 /// that succeeded. `sigma`: the noise's deviation at each vertex (0 where there is none to estimate).
@@ -143,7 +144,7 @@ inline Stepper_settings with_order(Stepper_settings s, int order)
 template <typename Run, typename Tensor>
 void select_smoother(Run& run, const Tensor& tensor, const Ghost_layer& layer, const Control_matrix& input,
                      const std::vector<double>& sigma, Control_matrix& X, Control_matrix* control, Fairing_report& report,
-                     std::string& choices)
+                     std::string& choices, const std::size_t& steps_left)
 {
   report.selected_tensor = "anisotropic";
   if(report.succeeded() && report.stop_reason != Stop_reason::NOISE_LEVEL)
@@ -151,12 +152,29 @@ void select_smoother(Run& run, const Tensor& tensor, const Ghost_layer& layer, c
     choices += "; kept the anisotropic result (it did not end at the noise level, where the results are compared)";
     return;
   }
+  if(report.succeeded() && report.steps.empty())
+  {
+    // every flow stops there before its first step, with the same result: nothing to compare
+    choices += "; kept the anisotropic result (the input's limit surface is at the noise level already: every flow stops before its first step)";
+    return;
+  }
   struct Candidate { const char* name; Fairing_report report; Control_matrix Y, Z; double risk = std::nan(""); };
   std::vector<Candidate> c(3);
   c[0].name = "anisotropic"; c[0].report = report; c[0].Y = X;
   if(control) c[0].Z = *control;
-  c[1].name = "isotropic"; c[1].report = run(Isotropic_diffusion_tensor(), c[1].Y, 2, input, control ? &c[1].Z : nullptr);
-  c[2].name = "uniform"; c[2].report = run(Uniform_diffusion_tensor(), c[2].Y, 4, input, control ? &c[2].Z : nullptr);
+  c[1].name = "isotropic";
+  c[2].name = "uniform";
+  // a run the step budget cannot pay for is not made: a failed report, never kept
+  const auto not_run = [] {
+    Fairing_report r;
+    r.status = Fairing_status::SOLVER_FAILED;
+    r.stop_reason = Stop_reason::FAILURE;
+    r.message = "not run: the call's step budget (number_of_iterations) was spent";
+    return r;
+  };
+  c[1].report = steps_left > 0 ? run("isotropic flow", Isotropic_diffusion_tensor(), c[1].Y, 2, input, control ? &c[1].Z : nullptr) : not_run();
+  c[2].report = steps_left > 0 ? run("uniform fourth-order flow", Uniform_diffusion_tensor(), c[2].Y, 4, input, control ? &c[2].Z : nullptr)
+                               : not_run();
   auto at_noise_level = [](const Fairing_report& r) {
     return r.succeeded() && (r.stop_reason == Stop_reason::NOISE_LEVEL || r.stop_reason == Stop_reason::NOISE_REMOVED ||
                              r.stop_reason == Stop_reason::DEVIATION_BOUND);
@@ -174,12 +192,12 @@ void select_smoother(Run& run, const Tensor& tensor, const Ghost_layer& layer, c
     const Control_matrix probed = probed_input(input, N, sigma, b);
     for(std::size_t k = 0; k < c.size(); ++k)
     {
-      if(!at_noise_level(c[k].report)) continue;
+      if(!at_noise_level(c[k].report) || steps_left == 0) continue;
       Control_matrix Yp;
-      const Fairing_report rp = k == 0 ? run(tensor, Yp, c[0].report.flow_order, probed, nullptr)
-                              : k == 1 ? run(Isotropic_diffusion_tensor(), Yp, 2, probed, nullptr)
-                                       : run(Uniform_diffusion_tensor(), Yp, 4, probed, nullptr);
-      if(!rp.succeeded()) continue;
+      const Fairing_report rp = k == 0 ? run("anisotropic flow on the probed input", tensor, Yp, c[0].report.flow_order, probed, nullptr)
+                              : k == 1 ? run("isotropic flow on the probed input", Isotropic_diffusion_tensor(), Yp, 2, probed, nullptr)
+                                       : run("uniform fourth-order flow on the probed input", Uniform_diffusion_tensor(), Yp, 4, probed, nullptr);
+      if(!rp.succeeded() || (rp.stop_reason == Stop_reason::MAXIMUM_STEPS && steps_left == 0)) continue;   // cut short by the budget
       c[k].risk = risk_estimate(input, c[k].Y, Yp, N, sigma, b);
       if(!std::isfinite(c[k].risk)) continue;
       any_risk = true;
@@ -281,6 +299,17 @@ Fairing_report fair(TriangleMesh& tm, VertexPointMap vpm, AttributeMap attribute
   Control_matrix P = im.read_points(vpm);
   const Control_matrix A = mode == Attribute_mode::GEOMETRY_ONLY ? Control_matrix() : read_attribute_columns(im, attributes);
   const std::size_t n = im.number_of_vertices();
+  if(mode == Attribute_mode::COUPLED && A.size() > 0)
+  {
+    // coupled, the weighted attributes are coordinates of the manifold: the same range as the points
+    const double largest = A.cwiseAbs().maxCoeff();
+    if(attribute_weight * largest > Indexed_mesh<TriangleMesh>::coordinate_limit)
+      throw Input_error(Input_error::INVALID_PARAMETER, Input_error::no_element,
+                        "the attribute weight " + Indexed_mesh<TriangleMesh>::to_text(attribute_weight) + " times the largest attribute value " +
+                        Indexed_mesh<TriangleMesh>::to_text(largest) + " is a coordinate beyond 1e70 in the coupled manifold, where the fairing's "
+                        "fourth powers of lengths overflow; give a weight of at most " +
+                        Indexed_mesh<TriangleMesh>::to_text(Indexed_mesh<TriangleMesh>::coordinate_limit / largest));
+  }
 
   CGAL::Real_timer setup;
   setup.start();
@@ -404,16 +433,36 @@ Fairing_report fair(TriangleMesh& tm, VertexPointMap vpm, AttributeMap attribute
   constexpr bool wants_control = !parameters::is_default_parameter<NamedParameters, internal_np::control_point_map_t>::value ||
                                  !parameters::is_default_parameter<NamedParameters, internal_np::attribute_control_map_t>::value;
   Control_matrix control_points;
+  // number_of_iterations bounds the steps of the whole call, the comparison's runs included; the
+  // callback learns which run a step belongs to
+  std::size_t steps_left = s.maximum_steps, run_number = 0;
+  const std::size_t planned_runs = select_tensor ? 6 : 1;
+  std::string run_name = select_tensor ? "anisotropic flow" : "";
+  auto counted_callback = [&](const Fairing_step& step) {
+    Fairing_step tagged = step;
+    tagged.run = run_number;
+    tagged.runs = planned_runs;
+    tagged.run_name = run_name;
+    return callback(tagged);
+  };
+  auto begin_run = [&](const char* name, int order) {
+    if(run_number > 0) run_name = name;
+    ++run_number;
+    Stepper_settings settings = with_order(s, order);
+    settings.maximum_steps = steps_left;
+    return settings;
+  };
   if(element == Finite_element::LOOP)
   {
     Ghosted_patch_cache cache(layer, spec);
     boundary_held = hold(boundary_constrained_vertices(layer, cache, boundary == Boundary_handling::HOLD_BOUNDARY_CURVE));
     setup_seconds = setup.time();
-    auto run = [&](const auto& t, Control_matrix& Y, int order, const Control_matrix& start, Control_matrix* control) {
+    auto run = [&](const char* name, const auto& t, Control_matrix& Y, int order, const Control_matrix& start, Control_matrix* control) {
       Y = start;
       double limit_weight = 1;
-      Fairing_report r = run_stepper(cache, ordering, components, component_edge, mean_edge, Y, mode, constrained, border, t, with_order(s, order),
-                                     callback, setup_seconds, limit_weight);
+      Fairing_report r = run_stepper(cache, ordering, components, component_edge, mean_edge, Y, mode, constrained, border, t,
+                                     begin_run(name, order), counted_callback, setup_seconds, limit_weight);
+      steps_left -= (std::min)(steps_left, r.steps.size());
       r.limit_weight = limit_weight;
       if(control) *control = Y;
       if(r.succeeded() && output == Output_positions::LIMIT_SURFACE)
@@ -427,27 +476,34 @@ Fairing_report fair(TriangleMesh& tm, VertexPointMap vpm, AttributeMap attribute
       if(control && output == Output_positions::CONTROL_POINTS) *control = Y;   // as written, within the bounds
       return r;
     };
-    report = run(tensor, X, s.order, input, wants_control ? &control_points : nullptr);
-    if(select_tensor) select_smoother(run, tensor, layer, input, noise_sigma, X, wants_control ? &control_points : nullptr, report, choices);
+    report = run("", tensor, X, s.order, input, wants_control ? &control_points : nullptr);
+    if(select_tensor)
+      select_smoother(run, tensor, layer, input, noise_sigma, X, wants_control ? &control_points : nullptr, report, choices, steps_left);
   }
   else
   {
     Linear_element_cache cache(*layer.topology, layer.real_faces);
     boundary_held = hold(border);
     setup_seconds = setup.time();
-    auto run = [&](const auto& t, Control_matrix& Y, int order, const Control_matrix& start, Control_matrix* control) {
+    auto run = [&](const char* name, const auto& t, Control_matrix& Y, int order, const Control_matrix& start, Control_matrix* control) {
       Y = start;
       double limit_weight = 1;   // the linear element writes its control points: no limit surface to approach
-      Fairing_report r = run_stepper(cache, ordering, components, component_edge, mean_edge, Y, mode, constrained, border, t, with_order(s, order),
-                                     callback, setup_seconds, limit_weight);
+      Fairing_report r = run_stepper(cache, ordering, components, component_edge, mean_edge, Y, mode, constrained, border, t,
+                                     begin_run(name, order), counted_callback, setup_seconds, limit_weight);
+      steps_left -= (std::min)(steps_left, r.steps.size());
       bound_written(Y, start, r);
       if(control) *control = Y;
       return r;
     };
-    report = run(tensor, X, s.order, input, wants_control ? &control_points : nullptr);
-    if(select_tensor) select_smoother(run, tensor, layer, input, noise_sigma, X, wants_control ? &control_points : nullptr, report, choices);
+    report = run("", tensor, X, s.order, input, wants_control ? &control_points : nullptr);
+    if(select_tensor)
+      select_smoother(run, tensor, layer, input, noise_sigma, X, wants_control ? &control_points : nullptr, report, choices, steps_left);
   }
   if(mode == Attribute_mode::COUPLED && A.cols() > 0) X.rightCols(A.cols()) /= attribute_weight;
+  if(mode == Attribute_mode::COUPLED && A.cols() > 0 && report.status == Fairing_status::DEGENERATE_METRIC)
+    report.message += "; in the coupled mode the surface is that of the points and the attributes times the attribute weight (" +
+                      Indexed_mesh<TriangleMesh>::to_text(attribute_weight) + "): a weight that makes the attributes dwarf or "
+                      "drown the coordinates leaves no surface, try a weight near 1 / (the attributes' range per edge length)";
   report.faces = im.number_of_faces();
   report.boundary_vertices = layer.boundary_vertices.size();
   report.boundary_held_vertices = boundary_held;
