@@ -337,4 +337,68 @@ std::vector<Case> held_out_cases(const std::string& dir)
   return cases;
 }
 
+// The noise kinds users meet, for the comparison with the strongest peers (bench/gmnf): per model of
+// <dir> (CAD parts, an organic closed model, scans with borders), Gaussian noise of 0.3 h along the
+// normals and in random directions, impulsive noise (a tenth of the vertices moved by 1 h along the
+// normal, either way), quantisation to 8 and 10 bits, and a range scanner's depth noise: along one
+// viewing direction, of deviation 0.2 h / max(|n . d|, 0.25), so that it grows where the surface is
+// seen at a grazing angle. Seeds depend on the model's place and the kind only.
+std::vector<Case> peer_cases(const std::string& dir)
+{
+  std::vector<Case> cases;
+  const std::vector<std::string> models = {"fandisk.off", "rocker-arm.obj", "bunny-closed.off", "camelhead.off", "face.obj"};
+  for(std::size_t i = 0; i < models.size(); ++i)
+  {
+    const std::string file = models[i], stem = file.substr(0, file.rfind('.'));
+    const unsigned seed = 4100u + 16u * unsigned(i);
+    const auto kind = [&](const std::string& name, std::function<void(Case&)> add) {
+      cases.push_back({stem + " " + name, [dir, file, add](Case& c) {
+                         if(!read_clean(dir + "/" + file, c.original, c.note)) return false;
+                         add(c);
+                         return true;
+                       }});
+    };
+    kind("gauss0.3", [seed](Case& c) { add_gaussian(c, 0.3, seed); });
+    kind("random-direction0.3", [seed](Case& c) {
+      const double sigma = 0.3 * mean_edge_length(c.original);
+      std::mt19937 rng(seed + 1);
+      std::normal_distribution<double> gauss(0.0, sigma);
+      c.noisy = c.original;
+      for(Mesh::Vertex_index v : c.noisy.vertices())
+      {
+        const double x = gauss(rng), y = gauss(rng), z = gauss(rng);
+        c.noisy.point(v) = c.noisy.point(v) + Vector(x, y, z);
+      }
+      c.note += "Gaussian sigma 0.3 h in random directions";
+    });
+    kind("impulsive", [seed](Case& c) {
+      const std::vector<Vector> n = area_weighted_normals(c.original);
+      const double h = mean_edge_length(c.original);
+      std::mt19937 rng(seed + 2);
+      std::uniform_real_distribution<double> unit(0.0, 1.0);
+      c.noisy = c.original;
+      for(Mesh::Vertex_index v : c.noisy.vertices())
+        if(unit(rng) < 0.1) c.noisy.point(v) = c.noisy.point(v) + (unit(rng) < 0.5 ? -h : h) * n[v.idx()];
+      c.note += "impulsive: a tenth of the vertices moved by 1 h along the normal";
+    });
+    kind("quant8", [](Case& c) { add_quantisation(c, 8); });
+    kind("quant10", [](Case& c) { add_quantisation(c, 10); });
+    kind("scan-depth", [seed](Case& c) {
+      const std::vector<Vector> n = area_weighted_normals(c.original);
+      const double h = mean_edge_length(c.original);
+      const Vector d(0.36, 0.48, 0.8);   // unit viewing direction
+      std::mt19937 rng(seed + 3);
+      std::normal_distribution<double> gauss(0.0, 1.0);
+      c.noisy = c.original;
+      for(Mesh::Vertex_index v : c.noisy.vertices())
+      {
+        const double facing = std::abs(n[v.idx()] * d);
+        c.noisy.point(v) = c.noisy.point(v) + gauss(rng) * 0.2 * h / std::max(facing, 0.25) * d;
+      }
+      c.note += "depth noise along one viewing direction, 0.2 h / max(|n.d|, 0.25)";
+    });
+  }
+  return cases;
+}
+
 #endif // AF_BENCH_CASES_H

@@ -18,7 +18,7 @@
 #include <CGAL/Anisotropic_fairing/Anisotropic_diffusion_tensor.h>
 #include <CGAL/Anisotropic_fairing/internal/run/Automatic_parameters.h>
 #include <CGAL/Anisotropic_fairing/internal/run/Fairing_parameters.h>
-#include <CGAL/Anisotropic_fairing/internal/run/Tensor_selection.h>
+#include <CGAL/Anisotropic_fairing/internal/run/Smoother_selection.h>
 #include <CGAL/Anisotropic_fairing/internal/flow/Boundary_constraints.h>
 #include <CGAL/Anisotropic_fairing/internal/flow/Deviation_bound.h>
 #include <CGAL/Anisotropic_fairing/internal/element/Ghosted_patch_cache.h>
@@ -132,101 +132,6 @@ inline Stepper_settings with_order(Stepper_settings s, int order)
     s.time_step = order == 4 ? Automatic_parameters().time_step4 : Automatic_parameters().time_step;
   s.order = order;
   return s;
-}
-
-/// Runs the isotropic and the uniform fourth-order flow too (`run(name, tensor, Y, order, start, Z)` runs from
-/// `start` and writes Y, and its control points in *Z unless null; `steps_left` is the call's step budget:
-/// a run it cannot pay for is not made) and keeps, in X, *control and `report`,
-/// the result at the noise level whose estimated
-/// error is lowest (Tensor_selection.h: each candidate runs once more on the probed input), or the first
-/// that succeeded. `sigma`: the noise's deviation at each vertex (0 where there is none to estimate).
-/// Says which in `choices`. (The user's callback sees every run.)
-template <typename Run, typename Tensor>
-void select_smoother(Run& run, const Tensor& tensor, const Ghost_layer& layer, const Control_matrix& input,
-                     const std::vector<double>& sigma, Control_matrix& X, Control_matrix* control, Fairing_report& report,
-                     std::string& choices, const std::size_t& steps_left)
-{
-  report.selected_tensor = "anisotropic";
-  if(report.succeeded() && report.stop_reason != Stop_reason::NOISE_LEVEL)
-  {
-    choices += "; kept the anisotropic result (it did not end at the noise level, where the results are compared)";
-    return;
-  }
-  if(report.succeeded() && report.steps.empty())
-  {
-    // every flow stops there before its first step, with the same result: nothing to compare
-    choices += "; kept the anisotropic result (the input's limit surface is at the noise level already: every flow stops before its first step)";
-    return;
-  }
-  struct Candidate { const char* name; Fairing_report report; Control_matrix Y, Z; double risk = std::nan(""); };
-  std::vector<Candidate> c(3);
-  c[0].name = "anisotropic"; c[0].report = report; c[0].Y = X;
-  if(control) c[0].Z = *control;
-  c[1].name = "isotropic";
-  c[2].name = "uniform";
-  // a run the step budget cannot pay for is not made: a failed report, never kept
-  const auto not_run = [] {
-    Fairing_report r;
-    r.status = Fairing_status::SOLVER_FAILED;
-    r.stop_reason = Stop_reason::FAILURE;
-    r.message = "not run: the call's step budget (number_of_iterations) was spent";
-    return r;
-  };
-  c[1].report = steps_left > 0 ? run("isotropic flow", Isotropic_diffusion_tensor(), c[1].Y, 2, input, control ? &c[1].Z : nullptr) : not_run();
-  c[2].report = steps_left > 0 ? run("uniform fourth-order flow", Uniform_diffusion_tensor(), c[2].Y, 4, input, control ? &c[2].Z : nullptr)
-                               : not_run();
-  auto at_noise_level = [](const Fairing_report& r) {
-    return r.succeeded() && (r.stop_reason == Stop_reason::NOISE_LEVEL || r.stop_reason == Stop_reason::NOISE_REMOVED ||
-                             r.stop_reason == Stop_reason::DEVIATION_BOUND);
-  };
-  // the normals of the risk: the isotropic result's, or the first sound one's
-  const Candidate* base = &c[1];
-  for(std::size_t k : { 1, 0, 2 })
-    if(c[k].report.succeeded()) { base = &c[k]; break; }
-  std::size_t kept = 3;   // none yet
-  bool any_risk = false;
-  if(base->report.succeeded())
-  {
-    const Control_matrix N = vertex_normals(*layer.topology, layer.real_faces, base->Y);
-    const std::vector<double> b = risk_probe_values(std::size_t(input.rows()));
-    const Control_matrix probed = probed_input(input, N, sigma, b);
-    for(std::size_t k = 0; k < c.size(); ++k)
-    {
-      if(!at_noise_level(c[k].report) || steps_left == 0) continue;
-      Control_matrix Yp;
-      const Fairing_report rp = k == 0 ? run("anisotropic flow on the probed input", tensor, Yp, c[0].report.flow_order, probed, nullptr)
-                              : k == 1 ? run("isotropic flow on the probed input", Isotropic_diffusion_tensor(), Yp, 2, probed, nullptr)
-                                       : run("uniform fourth-order flow on the probed input", Uniform_diffusion_tensor(), Yp, 4, probed, nullptr);
-      if(!rp.succeeded() || (rp.stop_reason == Stop_reason::MAXIMUM_STEPS && steps_left == 0)) continue;   // cut short by the budget
-      c[k].risk = risk_estimate(input, c[k].Y, Yp, N, sigma, b);
-      if(!std::isfinite(c[k].risk)) continue;
-      any_risk = true;
-      if(kept == 3 || c[k].risk < c[kept].risk) kept = k;
-    }
-  }
-  char text[300];
-  if(any_risk)
-  {
-    std::snprintf(text, sizeof text, "; kept the %s result, whose estimated error is the lowest (Stein's unbiased risk estimate "
-                  "per vertex, in units of the noise: anisotropic %.4g, isotropic %.4g, uniform fourth-order %.4g)", c[kept].name,
-                  at_noise_level(c[0].report) ? c[0].risk / double(input.rows()) - 1 : std::nan(""),
-                  at_noise_level(c[1].report) ? c[1].risk / double(input.rows()) - 1 : std::nan(""),
-                  at_noise_level(c[2].report) ? c[2].risk / double(input.rows()) - 1 : std::nan(""));
-    choices += text;
-  }
-  else
-  {
-    // nothing to compare: the first result that succeeded
-    for(std::size_t k = 0; k < c.size() && kept == 3; ++k)
-      if(c[k].report.succeeded()) kept = k;
-    if(kept == 3) return;   // all failed: the anisotropic report says why
-    choices += std::string("; kept the ") + c[kept].name + " result (no other could be compared at the noise level)";
-  }
-  if(kept == 0) return;
-  X.swap(c[kept].Y);
-  if(control) control->swap(c[kept].Z);
-  report = c[kept].report;
-  report.selected_tensor = c[kept].name;
 }
 
 /// Puts the control points Z (rows in the private numbering) into the caller's control_point_map, every
@@ -445,11 +350,17 @@ Fairing_report fair(TriangleMesh& tm, VertexPointMap vpm, AttributeMap attribute
     tagged.run_name = run_name;
     return callback(tagged);
   };
-  auto begin_run = [&](const char* name, int order) {
+  // `fixed_steps` > 0: exactly that many steps, no stopping rule (a probe replaying a run: Smoother_selection.h)
+  auto begin_run = [&](const char* name, int order, std::size_t fixed_steps) {
     if(run_number > 0) run_name = name;
     ++run_number;
     Stepper_settings settings = with_order(s, order);
     settings.maximum_steps = steps_left;
+    if(fixed_steps > 0)
+    {
+      settings.maximum_steps = (std::min)(steps_left, fixed_steps);
+      settings.stopping = Stopping_criteria::none();
+    }
     return settings;
   };
   if(element == Finite_element::LOOP)
@@ -457,11 +368,12 @@ Fairing_report fair(TriangleMesh& tm, VertexPointMap vpm, AttributeMap attribute
     Ghosted_patch_cache cache(layer, spec);
     boundary_held = hold(boundary_constrained_vertices(layer, cache, boundary == Boundary_handling::HOLD_BOUNDARY_CURVE));
     setup_seconds = setup.time();
-    auto run = [&](const char* name, const auto& t, Control_matrix& Y, int order, const Control_matrix& start, Control_matrix* control) {
+    auto run = [&](const char* name, const auto& t, Control_matrix& Y, int order, const Control_matrix& start, Control_matrix* control,
+                   std::size_t fixed_steps = 0) {
       Y = start;
       double limit_weight = 1;
       Fairing_report r = run_stepper(cache, ordering, components, component_edge, mean_edge, Y, mode, constrained, border, t,
-                                     begin_run(name, order), counted_callback, setup_seconds, limit_weight);
+                                     begin_run(name, order, fixed_steps), counted_callback, setup_seconds, limit_weight);
       steps_left -= (std::min)(steps_left, r.steps.size());
       r.limit_weight = limit_weight;
       if(control) *control = Y;
@@ -485,11 +397,12 @@ Fairing_report fair(TriangleMesh& tm, VertexPointMap vpm, AttributeMap attribute
     Linear_element_cache cache(*layer.topology, layer.real_faces);
     boundary_held = hold(border);
     setup_seconds = setup.time();
-    auto run = [&](const char* name, const auto& t, Control_matrix& Y, int order, const Control_matrix& start, Control_matrix* control) {
+    auto run = [&](const char* name, const auto& t, Control_matrix& Y, int order, const Control_matrix& start, Control_matrix* control,
+                   std::size_t fixed_steps = 0) {
       Y = start;
       double limit_weight = 1;   // the linear element writes its control points: no limit surface to approach
       Fairing_report r = run_stepper(cache, ordering, components, component_edge, mean_edge, Y, mode, constrained, border, t,
-                                     begin_run(name, order), counted_callback, setup_seconds, limit_weight);
+                                     begin_run(name, order, fixed_steps), counted_callback, setup_seconds, limit_weight);
       steps_left -= (std::min)(steps_left, r.steps.size());
       bound_written(Y, start, r);
       if(control) *control = Y;

@@ -1,0 +1,151 @@
+// Copyright (c) 2026 Anisotropic_fairing developers.
+// SPDX-License-Identifier: GPL-3.0-or-later
+//
+// The default run's choice among its flows: the anisotropic result is compared with the isotropic and
+// the uniform fourth-order flow's by the risk estimate of Tensor_selection.h, and the lowest kept.
+// Every candidate is judged by the same estimate. One that ends at the noise level is estimated as it
+// runs (its stopping rule is part of the estimator); one that ends short of it (its later steps rejected,
+// the budget spent, a steady state) is estimated at the state it reached: its probe run replays the
+// same number of steps with no stopping rule, since a probe that stopped elsewhere would measure the
+// stopping rule's jump instead of the flow. A candidate that stops early is judged, never preferred.
+
+#ifndef CGAL_ANISOTROPIC_FAIRING_INTERNAL_RUN_SMOOTHER_SELECTION_H
+#define CGAL_ANISOTROPIC_FAIRING_INTERNAL_RUN_SMOOTHER_SELECTION_H
+
+#include <CGAL/Anisotropic_fairing/Fairing_report.h>
+#include <CGAL/Anisotropic_fairing/Isotropic_diffusion_tensor.h>
+#include <CGAL/Anisotropic_fairing/Uniform_diffusion_tensor.h>
+#include <CGAL/Anisotropic_fairing/internal/mesh/Ghost_layer.h>
+#include <CGAL/Anisotropic_fairing/internal/run/Tensor_selection.h>
+
+#include <cmath>
+#include <cstdio>
+#include <string>
+#include <vector>
+
+namespace CGAL {
+namespace Anisotropic_fairing {
+namespace internal {
+
+/// Whether a run ended where its own stopping rule wanted it: at the noise level.
+inline bool ended_at_noise_level(const Fairing_report& r)
+{
+  return r.succeeded() && (r.stop_reason == Stop_reason::NOISE_LEVEL || r.stop_reason == Stop_reason::NOISE_REMOVED ||
+                           r.stop_reason == Stop_reason::DEVIATION_BOUND);
+}
+
+/// Runs the isotropic and the uniform fourth-order flow too (`run(name, tensor, Y, order, start, Z, steps)`
+/// runs from `start` and writes Y, and its control points in *Z unless null; `steps` > 0: exactly that
+/// many steps, no stopping rule) and keeps, in X, *control and `report`, the result whose estimated error
+/// is lowest, or the first that succeeded. `steps_left` is the call's step budget: a run it cannot pay
+/// for is not made. `sigma`: the noise's deviation at each vertex (0 where there is none to estimate).
+/// Says which in `choices`. (The user's callback sees every run.)
+template <typename Run, typename Tensor>
+void select_smoother(Run& run, const Tensor& tensor, const Ghost_layer& layer, const Control_matrix& input,
+                     const std::vector<double>& sigma, Control_matrix& X, Control_matrix* control, Fairing_report& report,
+                     std::string& choices, const std::size_t& steps_left)
+{
+  report.selected_tensor = "anisotropic";
+  if(report.succeeded() && report.stop_reason == Stop_reason::CALLBACK)
+  {
+    choices += "; kept the anisotropic result (the callback ended the run)";
+    return;
+  }
+  if(report.succeeded() && report.stop_reason == Stop_reason::NOISE_LEVEL && report.steps.empty())
+  {
+    // every flow stops there before its first step, with the same result: nothing to compare
+    choices += "; kept the anisotropic result (the input's limit surface is at the noise level already: every flow stops before its first step)";
+    return;
+  }
+  if(steps_left == 0)
+  {
+    if(report.succeeded()) choices += "; kept the anisotropic result (the step budget, number_of_iterations, is spent: no other flow runs)";
+    return;
+  }
+  struct Candidate { const char* name; const char* label; const char* flow; Fairing_report report; Control_matrix Y, Z; double risk = std::nan(""); };
+  std::vector<Candidate> c(3);
+  c[0].name = c[0].label = "anisotropic"; c[0].flow = "anisotropic flow"; c[0].report = report; c[0].Y = X;
+  if(control) c[0].Z = *control;
+  c[1].name = c[1].label = "isotropic"; c[1].flow = "isotropic flow";
+  c[2].name = "uniform"; c[2].label = "uniform fourth-order"; c[2].flow = "uniform fourth-order flow";
+  // a run the step budget cannot pay for is not made: a failed report, never kept
+  const auto not_run = [] {
+    Fairing_report r;
+    r.status = Fairing_status::SOLVER_FAILED;
+    r.stop_reason = Stop_reason::FAILURE;
+    r.message = "not run: the call's step budget (number_of_iterations) was spent";
+    return r;
+  };
+  const auto run_candidate = [&](std::size_t k, Control_matrix& Y, const Control_matrix& start, Control_matrix* Z, std::size_t steps,
+                                 const char* name) {
+    if(k == 0) return run(name, tensor, Y, c[0].report.flow_order, start, Z, steps);
+    if(k == 1) return run(name, Isotropic_diffusion_tensor(), Y, 2, start, Z, steps);
+    return run(name, Uniform_diffusion_tensor(), Y, 4, start, Z, steps);
+  };
+  for(std::size_t k : {1, 2})
+    c[k].report = steps_left > 0 ? run_candidate(k, c[k].Y, input, control ? &c[k].Z : nullptr, 0, c[k].flow) : not_run();
+  // judged: every candidate that ran to its end, whatever stopped it, but the user's callback
+  const auto judged = [](const Fairing_report& r) { return r.succeeded() && r.stop_reason != Stop_reason::CALLBACK; };
+  // the normals of the risk: the isotropic result's, or the first sound one's
+  const Candidate* base = &c[1];
+  for(std::size_t k : {1, 0, 2})
+    if(c[k].report.succeeded()) { base = &c[k]; break; }
+  std::size_t kept = 3;   // none yet
+  if(base->report.succeeded())
+  {
+    const Control_matrix N = vertex_normals(*layer.topology, layer.real_faces, base->Y);
+    const std::vector<double> b = risk_probe_values(std::size_t(input.rows()));
+    const Control_matrix probed = probed_input(input, N, sigma, b);
+    for(std::size_t k = 0; k < c.size(); ++k)
+    {
+      if(!judged(c[k].report) || steps_left == 0) continue;
+      // a candidate that ended short of the noise level: its probe takes exactly its steps
+      const bool at_noise = ended_at_noise_level(c[k].report);
+      const std::size_t replay = at_noise ? 0 : c[k].report.steps.size();
+      if(!at_noise && replay == 0) continue;   // it took no step: nothing to estimate
+      const std::string probe_name = std::string(c[k].flow) + " on the probed input";
+      Control_matrix Yp;
+      const Fairing_report rp = run_candidate(k, Yp, probed, nullptr, replay, probe_name.c_str());
+      if(!rp.succeeded() || (rp.stop_reason == Stop_reason::MAXIMUM_STEPS && steps_left == 0 && replay == 0)) continue;   // cut short by the budget
+      if(replay > 0 && rp.steps.size() != replay) continue;   // the probe could not take the same steps
+      c[k].risk = risk_estimate(input, c[k].Y, Yp, N, sigma, b);
+      if(std::isfinite(c[k].risk) && (kept == 3 || c[k].risk < c[kept].risk)) kept = k;
+    }
+  }
+  if(kept < 3)
+  {
+    std::string list;
+    for(const Candidate& x : c)
+    {
+      char text[160];
+      if(std::isfinite(x.risk))
+        std::snprintf(text, sizeof text, "%s %.4g%s", x.label, x.risk / double(input.rows()) - 1,
+                      ended_at_noise_level(x.report) ? "" : (std::string(" (stopped early: ") + to_string(x.report.stop_reason) + ")").c_str());
+      else
+        std::snprintf(text, sizeof text, "%s not compared (%s)", x.label,
+                      x.report.succeeded() ? to_string(x.report.stop_reason) : to_string(x.report.status));
+      list += (list.empty() ? "" : ", ") + std::string(text);
+    }
+    choices += std::string("; kept the ") + c[kept].name + " result, whose estimated error is the lowest (Stein's unbiased risk "
+               "estimate per vertex, in units of the noise: " + list + ")";
+  }
+  else
+  {
+    // nothing to compare: the first result that succeeded
+    for(std::size_t k = 0; k < c.size() && kept == 3; ++k)
+      if(c[k].report.succeeded()) kept = k;
+    if(kept == 3) return;   // all failed: the anisotropic report says why
+    choices += std::string("; kept the ") + c[kept].name + " result (no other could be compared)";
+  }
+  if(kept == 0) return;
+  X.swap(c[kept].Y);
+  if(control) control->swap(c[kept].Z);
+  report = c[kept].report;
+  report.selected_tensor = c[kept].name;
+}
+
+} // namespace internal
+} // namespace Anisotropic_fairing
+} // namespace CGAL
+
+#endif // CGAL_ANISOTROPIC_FAIRING_INTERNAL_RUN_SMOOTHER_SELECTION_H

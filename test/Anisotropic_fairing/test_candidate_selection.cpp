@@ -1,0 +1,107 @@
+// The default run's choice among its candidates (internal/run/Fairing_driver.h, select_smoother) cannot be
+// fooled by a candidate that stops early: every candidate is judged by the same risk estimate, at a state
+// its own estimate can be compared at, and one that ended short of the noise level is judged, not preferred.
+//
+// Constructed case: a noisy icosphere and stand-in flows whose results are known exactly. The truth is
+// the unit sphere; "isotropic" returns it (projection onto the sphere: error about 0, divergence 0),
+// "uniform" returns its input unchanged (error 0 along the normals but divergence N: risk 1 per vertex,
+// the noise itself), and the anisotropic candidate is forced to stop early, as a run whose later steps
+// are rejected does: it moves a tenth of the way toward the sphere and reports STEP_REJECTED. Kept must be
+// the isotropic result, with the risks in `choices`; a candidate stopped by the callback is not compared.
+
+#include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
+#include <CGAL/Surface_mesh.h>
+
+#include <CGAL/Anisotropic_fairing/internal/run/Fairing_driver.h>
+
+#include "test_support/check.h"
+#include "test_support/mesh_generators.h"
+
+#include <cmath>
+#include <random>
+#include <string>
+#include <type_traits>
+#include <vector>
+
+typedef CGAL::Exact_predicates_inexact_constructions_kernel K;
+typedef CGAL::Surface_mesh<K::Point_3> Mesh;
+namespace AF = CGAL::Anisotropic_fairing;
+namespace AFI = CGAL::Anisotropic_fairing::internal;
+
+namespace {
+
+// the point moved a fraction `w` of the way onto the unit sphere
+AFI::Control_matrix toward_sphere(const AFI::Control_matrix& Y, double w)
+{
+  AFI::Control_matrix Z = Y;
+  for(Eigen::Index i = 0; i < Y.rows(); ++i) Z.row(i) = Y.row(i) + w * (Y.row(i) / Y.row(i).norm() - Y.row(i));
+  return Z;
+}
+
+struct Stand_in_flows
+{
+  AF::Stop_reason anisotropic_stop;
+  std::vector<std::string> calls;
+
+  template <typename Tensor>
+  AF::Fairing_report operator()(const char* name, const Tensor&, AFI::Control_matrix& Y, int, const AFI::Control_matrix& start,
+                                AFI::Control_matrix* control, std::size_t fixed_steps = 0)
+  {
+    calls.push_back(std::string(name) + (fixed_steps > 0 ? " (fixed)" : ""));
+    AF::Fairing_report r;
+    r.steps.resize(3);
+    if(std::is_same<Tensor, AF::Isotropic_diffusion_tensor>::value) { Y = toward_sphere(start, 1.0); r.stop_reason = AF::Stop_reason::NOISE_LEVEL; }
+    else if(std::is_same<Tensor, AF::Uniform_diffusion_tensor>::value) { Y = start; r.stop_reason = AF::Stop_reason::NOISE_LEVEL; }
+    else { Y = toward_sphere(start, 0.1); r.stop_reason = anisotropic_stop; }
+    if(control) *control = Y;
+    return r;
+  }
+};
+
+} // namespace
+
+int main()
+{
+  Mesh mesh;
+  AF_test::soup_to_mesh(AF_test::icosphere_soup(3), mesh);   // 642 vertices on the unit sphere
+  const AFI::Indexed_mesh<Mesh> im(mesh, AFI::Borders::GHOSTED, true);
+  const AFI::Ghost_layer& layer = im.ghost_layer();
+  const double sigma = 0.02;
+  AFI::Control_matrix input = im.read_points(get(CGAL::vertex_point, mesh));
+  std::mt19937 rng(7);
+  std::normal_distribution<double> gauss(0.0, sigma);
+  for(Eigen::Index i = 0; i < input.rows(); ++i) input.row(i) *= 1 + gauss(rng);
+  const std::vector<double> sigmas(std::size_t(input.rows()), sigma);
+
+  for(const AF::Stop_reason stop : {AF::Stop_reason::STEP_REJECTED, AF::Stop_reason::MAXIMUM_STEPS, AF::Stop_reason::CALLBACK})
+  {
+    Stand_in_flows flows{stop, {}};
+    const AF::Anisotropic_diffusion_tensor tensor = AF::Anisotropic_diffusion_tensor::automatic();
+    AFI::Control_matrix X, control;
+    AF::Fairing_report report = flows("", tensor, X, 2, input, &control);
+    std::string choices;
+    const std::size_t steps_left = 100;
+    AFI::select_smoother(flows, tensor, layer, input, sigmas, X, &control, report, choices, steps_left);
+    std::printf("anisotropic candidate stopped by %s: kept the %s result; runs:", AF::to_string(stop), report.selected_tensor.c_str());
+    for(const std::string& c : flows.calls) std::printf(" [%s]", c.c_str());
+    std::printf("\n  choices%s\n", choices.c_str());
+    const double moved_to_sphere = (X - toward_sphere(input, 1.0)).norm();
+    if(stop == AF::Stop_reason::CALLBACK)
+    {
+      // the user ended the run: nothing else is run, the anisotropic result is kept
+      AF_CHECK(report.selected_tensor == "anisotropic", "a run the callback ended is kept as it is");
+      AF_CHECK(flows.calls.size() == 1, "and no other candidate runs");
+      continue;
+    }
+    AF_CHECK(report.selected_tensor == "isotropic", std::string("the candidate that stopped early (") + AF::to_string(stop) +
+                                                      ") is judged, not preferred: the isotropic result is kept");
+    AF_CHECK(moved_to_sphere < 1e-12 && (control - X).norm() < 1e-12, "X and the control points are the kept candidate's");
+    AF_CHECK(choices.find("anisotropic") != std::string::npos && choices.find("stopped early") != std::string::npos,
+             "choices names the candidate that stopped early");
+    // the early candidate's probe replays its steps (no stopping rule of its own), the others' stop as they do
+    bool replayed = false;
+    for(const std::string& c : flows.calls) replayed = replayed || c == "anisotropic flow on the probed input (fixed)";
+    AF_CHECK(replayed, "the early candidate's probe run takes the same steps");
+  }
+  return AF_test::report();
+}
