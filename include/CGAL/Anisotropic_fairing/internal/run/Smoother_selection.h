@@ -7,7 +7,9 @@
 // runs (its stopping rule is part of the estimator); one that ends short of it (its later steps rejected,
 // the budget spent, a steady state) is estimated at the state it reached: its probe run replays the
 // same number of steps with no stopping rule, since a probe that stopped elsewhere would measure the
-// stopping rule's jump instead of the flow. A candidate that stops early is judged, never preferred.
+// stopping rule's jump instead of the flow. A candidate that stops early is judged, never preferred: it
+// is kept over the best of those that reached the noise level only if its estimate is lower by more
+// than twice the standard error of the difference (from the spread of the per-vertex terms).
 
 #ifndef CGAL_ANISOTROPIC_FAIRING_INTERNAL_RUN_SMOOTHER_SELECTION_H
 #define CGAL_ANISOTROPIC_FAIRING_INTERNAL_RUN_SMOOTHER_SELECTION_H
@@ -62,7 +64,14 @@ void select_smoother(Run& run, const Tensor& tensor, const Ghost_layer& layer, c
     if(report.succeeded()) choices += "; kept the anisotropic result (the step budget, number_of_iterations, is spent: no other flow runs)";
     return;
   }
-  struct Candidate { const char* name; const char* label; const char* flow; Fairing_report report; Control_matrix Y, Z; double risk = std::nan(""); };
+  struct Candidate
+  {
+    const char* name; const char* label; const char* flow;
+    Fairing_report report;
+    Control_matrix Y, Z;
+    double risk = std::nan("");
+    std::vector<double> terms;   // of the risk estimate, per vertex
+  };
   std::vector<Candidate> c(3);
   c[0].name = c[0].label = "anisotropic"; c[0].flow = "anisotropic flow"; c[0].report = report; c[0].Y = X;
   if(control) c[0].Z = *control;
@@ -108,8 +117,20 @@ void select_smoother(Run& run, const Tensor& tensor, const Ghost_layer& layer, c
       const Fairing_report rp = run_candidate(k, Yp, probed, nullptr, replay, probe_name.c_str());
       if(!rp.succeeded() || (rp.stop_reason == Stop_reason::MAXIMUM_STEPS && steps_left == 0 && replay == 0)) continue;   // cut short by the budget
       if(replay > 0 && rp.steps.size() != replay) continue;   // the probe could not take the same steps
-      c[k].risk = risk_estimate(input, c[k].Y, Yp, N, sigma, b);
-      if(std::isfinite(c[k].risk) && (kept == 3 || c[k].risk < c[kept].risk)) kept = k;
+      c[k].terms = risk_terms(input, c[k].Y, Yp, N, sigma, b);
+      double risk = 0;
+      for(double x : c[k].terms) risk += x;
+      c[k].risk = risk;
+    }
+    // the lowest estimate among the runs that reached the noise level; one that stopped early replaces
+    // it only by a clear margin
+    for(std::size_t k = 0; k < c.size(); ++k)
+      if(std::isfinite(c[k].risk) && ended_at_noise_level(c[k].report) && (kept == 3 || c[k].risk < c[kept].risk)) kept = k;
+    for(std::size_t k = 0; k < c.size(); ++k)
+    {
+      if(!std::isfinite(c[k].risk) || ended_at_noise_level(c[k].report)) continue;
+      const double margin = kept == 3 ? 0.0 : 2 * risk_difference_error(c[k].terms, c[kept].terms);
+      if(kept == 3 || c[k].risk < c[kept].risk - margin) kept = k;
     }
   }
   if(kept < 3)
@@ -126,8 +147,12 @@ void select_smoother(Run& run, const Tensor& tensor, const Ghost_layer& layer, c
                       x.report.succeeded() ? to_string(x.report.stop_reason) : to_string(x.report.status));
       list += (list.empty() ? "" : ", ") + std::string(text);
     }
-    choices += std::string("; kept the ") + c[kept].name + " result, whose estimated error is the lowest (Stein's unbiased risk "
-               "estimate per vertex, in units of the noise: " + list + ")";
+    bool lowest = true;
+    for(const Candidate& x : c) lowest = lowest && !(x.risk < c[kept].risk);
+    choices += std::string("; kept the ") + c[kept].name +
+               (lowest ? " result, whose estimated error is the lowest" : " result, whose estimated error is the lowest of the runs that "
+                "reached the noise level; a run that stopped early is not lower by twice the estimate's standard error") +
+               " (Stein's unbiased risk estimate per vertex, in units of the noise: " + list + ")";
   }
   else
   {

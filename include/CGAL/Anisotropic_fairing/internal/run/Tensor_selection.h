@@ -22,6 +22,7 @@
 #include <CGAL/Anisotropic_fairing/internal/flow/Step_safety.h>
 #include <CGAL/Anisotropic_fairing/internal/mesh/Triangle_topology.h>
 
+#include <cmath>
 #include <cstddef>
 #include <random>
 #include <vector>
@@ -68,21 +69,34 @@ inline Control_matrix probed_input(const Control_matrix& Y, const Control_matrix
   return P;
 }
 
-/// SURE of a result f of y (f_probed: of the probed input), per vertex in units of sigma_i^2, without the
-/// constant -1 per vertex: sum_i ((n_i . (y_i - f_i)) / sigma_i)^2 + 2 div_i.
-inline double risk_estimate(const Control_matrix& y, const Control_matrix& f, const Control_matrix& f_probed,
-                            const Control_matrix& N, const std::vector<double>& sigma, const std::vector<double>& b)
+/// The terms of SURE of a result f of y (f_probed: of the probed input), one per vertex in units of
+/// sigma_i^2, without the constant -1 per vertex: ((n_i . (y_i - f_i)) / sigma_i)^2 + 2 div_i (0 where
+/// sigma_i is 0). Their sum is the estimate; their spread says how far it can be trusted.
+inline std::vector<double> risk_terms(const Control_matrix& y, const Control_matrix& f, const Control_matrix& f_probed,
+                                      const Control_matrix& N, const std::vector<double>& sigma, const std::vector<double>& b)
 {
-  double risk = 0;
+  std::vector<double> t(std::size_t(y.rows()), 0.0);
   for(Eigen::Index i = 0; i < y.rows(); ++i)
   {
     const double s = sigma[std::size_t(i)];
     if(!(s > 0)) continue;
     const double residual = N.row(i).dot(y.row(i).head(3) - f.row(i).head(3)) / s;
     const double divergence = b[std::size_t(i)] * N.row(i).dot(f_probed.row(i).head(3) - f.row(i).head(3)) / (risk_probe * s);
-    risk += residual * residual + 2 * divergence;
+    t[std::size_t(i)] = residual * residual + 2 * divergence;
   }
-  return risk;
+  return t;
+}
+
+/// The standard error of the difference of two estimates from their terms: sqrt(N var(a_i - b_i)).
+inline double risk_difference_error(const std::vector<double>& a, const std::vector<double>& b)
+{
+  const std::size_t n = a.size();
+  if(n < 2) return 0;
+  double mean = 0, square = 0;
+  for(std::size_t i = 0; i < n; ++i) mean += a[i] - b[i];
+  mean /= double(n);
+  for(std::size_t i = 0; i < n; ++i) square += (a[i] - b[i] - mean) * (a[i] - b[i] - mean);
+  return std::sqrt(square / double(n - 1) * double(n));
 }
 
 } // namespace internal
