@@ -60,6 +60,24 @@ struct Stand_in_flows
   }
 };
 
+// The default run's first run (the stand-in anisotropic flow), then its choice.
+struct Selection
+{
+  AF::Fairing_report report;
+  AFI::Control_matrix X, control;
+  std::string choices;
+};
+
+Selection select(Stand_in_flows& flows, const AFI::Ghost_layer& layer, const AFI::Control_matrix& input, const std::vector<double>& sigmas)
+{
+  const AF::Anisotropic_diffusion_tensor tensor = AF::Anisotropic_diffusion_tensor::automatic();
+  Selection s;
+  s.report = flows("", tensor, s.X, 2, input, &s.control);
+  const std::size_t steps_left = 100;
+  AFI::select_smoother(flows, tensor, layer, input, sigmas, s.X, &s.control, s.report, s.choices, steps_left);
+  return s;
+}
+
 } // namespace
 
 int main()
@@ -78,12 +96,10 @@ int main()
   for(const AF::Stop_reason stop : {AF::Stop_reason::STEP_REJECTED, AF::Stop_reason::MAXIMUM_STEPS, AF::Stop_reason::CALLBACK})
   {
     Stand_in_flows flows{stop, 0.1, 1.0, {}};
-    const AF::Anisotropic_diffusion_tensor tensor = AF::Anisotropic_diffusion_tensor::automatic();
-    AFI::Control_matrix X, control;
-    AF::Fairing_report report = flows("", tensor, X, 2, input, &control);
-    std::string choices;
-    const std::size_t steps_left = 100;
-    AFI::select_smoother(flows, tensor, layer, input, sigmas, X, &control, report, choices, steps_left);
+    const Selection chosen = select(flows, layer, input, sigmas);
+    const AF::Fairing_report& report = chosen.report;
+    const AFI::Control_matrix &X = chosen.X, &control = chosen.control;
+    const std::string& choices = chosen.choices;
     std::printf("anisotropic candidate stopped by %s: kept the %s result; runs:", AF::to_string(stop), report.selected_tensor.c_str());
     for(const std::string& c : flows.calls) std::printf(" [%s]", c.c_str());
     std::printf("\n  choices%s\n", choices.c_str());
@@ -114,15 +130,10 @@ int main()
   for(const auto& m : margins)
   {
     Stand_in_flows flows{AF::Stop_reason::STEP_REJECTED, m.early, m.other, {}};
-    const AF::Anisotropic_diffusion_tensor tensor = AF::Anisotropic_diffusion_tensor::automatic();
-    AFI::Control_matrix X, control;
-    AF::Fairing_report report = flows("", tensor, X, 2, input, &control);
-    std::string choices;
-    const std::size_t steps_left = 100;
-    AFI::select_smoother(flows, tensor, layer, input, sigmas, X, &control, report, choices, steps_left);
+    const Selection chosen = select(flows, layer, input, sigmas);
     std::printf("stopped early at w = %g against w = %g at the noise level: kept the %s result%s\n", m.early, m.other,
-                report.selected_tensor.c_str(), choices.c_str());
-    AF_CHECK(report.selected_tensor == m.kept, std::string("kept the ") + m.kept + " result");
+                chosen.report.selected_tensor.c_str(), chosen.choices.c_str());
+    AF_CHECK(chosen.report.selected_tensor == m.kept, std::string("kept the ") + m.kept + " result");
   }
   return AF_test::report();
 }

@@ -62,7 +62,7 @@ public:
       }
       const std::string_view t = tokens_[used_++];
       last_token_ = t;
-      if(is_float) return lines_.real(t, finite ? (where + ": the coordinate").c_str() : where.c_str(), finite);
+      if(is_float) return lines_.real(t, where.c_str(), finite);
       const long long v = lines_.integer(t, where.c_str());
       const long long low = is_signed ? -(1LL << (8 * size - 1)) : 0, high = is_signed ? (1LL << (8 * size - 1)) - 1 : (1LL << (8 * size)) - 1;
       if(v < low || v > high)

@@ -342,7 +342,7 @@ Fairing_report fair(TriangleMesh& tm, VertexPointMap vpm, AttributeMap attribute
   // callback learns which run a step belongs to
   std::size_t steps_left = s.maximum_steps, run_number = 0;
   const std::size_t planned_runs = select_tensor ? 6 : 1;
-  std::string run_name = select_tensor ? "anisotropic flow" : "";
+  std::string run_name;
   auto counted_callback = [&](const Fairing_step& step) {
     Fairing_step tagged = step;
     tagged.run = run_number;
@@ -352,7 +352,7 @@ Fairing_report fair(TriangleMesh& tm, VertexPointMap vpm, AttributeMap attribute
   };
   // `fixed_steps` > 0: exactly that many steps, no stopping rule (a probe replaying a run: Smoother_selection.h)
   auto begin_run = [&](const char* name, int order, std::size_t fixed_steps) {
-    if(run_number > 0) run_name = name;
+    run_name = name;
     ++run_number;
     Stepper_settings settings = with_order(s, order);
     settings.maximum_steps = steps_left;
@@ -388,7 +388,7 @@ Fairing_report fair(TriangleMesh& tm, VertexPointMap vpm, AttributeMap attribute
       if(control && output == Output_positions::CONTROL_POINTS) *control = Y;   // as written, within the bounds
       return r;
     };
-    report = run("", tensor, X, s.order, input, wants_control ? &control_points : nullptr);
+    report = run(select_tensor ? "anisotropic flow" : "", tensor, X, s.order, input, wants_control ? &control_points : nullptr);
     if(select_tensor)
       select_smoother(run, tensor, layer, input, noise_sigma, X, wants_control ? &control_points : nullptr, report, choices, steps_left);
   }
@@ -408,7 +408,7 @@ Fairing_report fair(TriangleMesh& tm, VertexPointMap vpm, AttributeMap attribute
       if(control) *control = Y;
       return r;
     };
-    report = run("", tensor, X, s.order, input, wants_control ? &control_points : nullptr);
+    report = run(select_tensor ? "anisotropic flow" : "", tensor, X, s.order, input, wants_control ? &control_points : nullptr);
     if(select_tensor)
       select_smoother(run, tensor, layer, input, noise_sigma, X, wants_control ? &control_points : nullptr, report, choices, steps_left);
   }
