@@ -30,6 +30,7 @@
 #include "fairing_call.h"
 #include "held_vertices.h"
 #include "mesh_io.h"
+#include "progress_heartbeat.h"
 #include "resampled_output.h"
 #include "snapshot.h"
 
@@ -85,6 +86,8 @@ int run(const Options& o, Run_record& r)
   if(!o.snapshot.empty() && renderer.empty())
     fail("snapshot_error", "--snapshot: the renderer render_mesh.py was not found (installed next to the program, or set AF_RENDER_SCRIPT)");
 
+  Progress_heartbeat heartbeat(o.quiet ? 0.0 : o.progress_interval);
+  heartbeat.phase("reading " + o.input);
   Mesh mesh;
   Input_info info;
   read_input(o.input, mesh, info, o.repair);
@@ -124,7 +127,7 @@ int run(const Options& o, Run_record& r)
   const unsigned int max_steps = o.steps;
   const bool quiet = o.quiet;
   std::size_t last_run = 0, steps_in_all = 0;
-  auto progress = [max_steps, quiet, &last_run, &steps_in_all](const AF::Fairing_step& s) {
+  auto progress = [max_steps, quiet, &last_run, &steps_in_all, &heartbeat](const AF::Fairing_step& s) {
     // the default run compares flows, each also on a probed copy of the input: say which runs, and how
     // much of the step budget (--steps bounds all runs together) is spent
     ++steps_in_all;
@@ -135,8 +138,12 @@ int run(const Options& o, Run_record& r)
     std::fprintf(stderr, "anisotropic_fairing: step %zu (%zu/%u in all)  t=%.6g  area=%.6g  int|H|^2=%.6g  max disp=%.6g  %d %s  %.3fs+%.3fs\n",
                  s.step, steps_in_all, max_steps, s.time, s.area, s.H_integral, s.max_displacement, s.solver_iterations,
                  s.direct_solve ? "factorisation" : "its", s.assemble_seconds, s.solve_seconds);
+    heartbeat.phase("still working after step " + std::to_string(s.step) +
+                    (s.runs > 1 ? " of run " + std::to_string(s.run) + " (the " + s.run_name + ")" : std::string()) +
+                    ": the next step, retried smaller when rejected, or the next run");
     return true;
   };
+  heartbeat.phase("setting up " + o.input + " (topology, ghost layer, noise estimate) and its first step");
   try
   {
     r.report = fair_with_options(mesh, o, library_mode, attribute_map, attribute_controls, control_points, held, progress);
@@ -152,6 +159,7 @@ int run(const Options& o, Run_record& r)
          "fairing " + o.input + " failed (" + AF::to_string(r.report.status) + "): " +
          (r.report.message.empty() ? std::string("no detail") : r.report.message));
 
+  heartbeat.phase("writing the result back (limit normals, curvature, attributes, resampling)");
   if(o.curvature || exact_limit_normals)
   {
     // The limit surface of the faired control points serves the curvature and the normals. Only the
@@ -215,6 +223,7 @@ int run(const Options& o, Run_record& r)
 
   // write next to OUTPUT, then write the report, then rename: OUTPUT appears only if all succeeded
   const fs::path tmp = temporary_next_to(o.output);
+  heartbeat.phase("writing " + o.output);
   try
   {
     write_mesh(tmp.string(), out_format, mesh, info, info.has_normals);
@@ -237,6 +246,7 @@ int run(const Options& o, Run_record& r)
     char result_title[200];
     std::snprintf(result_title, sizeof result_title, "faired: %s, %zu steps, %s", r.report.selected_tensor.empty() ? "" : r.report.selected_tensor.c_str(),
                   r.report.steps.size(), AF::to_string(r.report.stop_reason));
+    heartbeat.phase("rendering the snapshot " + o.snapshot);
     try
     {
       render_snapshot(renderer, o.input, tmp.string(), "input: " + fs::path(o.input).filename().string(), result_title, snapshot_tmp.string(),

@@ -331,6 +331,12 @@ const Option_spec option_table[] = {
    [](Options& o, const std::string&, const std::string&) { o.repair = true; }},
   {"--quiet", "-q", nullptr, "no progress line per step on stderr (the callback named parameter)",
    [](Options& o, const std::string&, const std::string&) { o.quiet = true; }},
+  {"--progress-interval", nullptr, "SECONDS", "after this many seconds without a line on stderr, say what the\n"
+   "program is doing and for how long (reading, set-up, a step retried\n"
+   "after rejections, writing; default 2, 0: never)",
+   [](Options& o, const std::string& flag, const std::string& v) {
+     set_number(o.progress_interval, o.has_progress_interval, flag, v, true);
+   }},
   {"--help", "-h", nullptr, "print this help and exit",
    [](Options& o, const std::string&, const std::string&) { o.help = true; }},
   {"--version", nullptr, nullptr, "print the versions of the program, CGAL, Eigen and Boost and exit",

@@ -41,6 +41,8 @@ struct Options
   double attribute_weight = 1;
   bool curvature = false;   // --curvature: k1, k2, mean_curvature written as PLY vertex properties
   bool quiet = false;
+  double progress_interval = 2;   // seconds of silence before a line says what the program is doing (0: never)
+  bool has_progress_interval = false;
   bool repair = false;           // --repair: make a non-manifold or inconsistently oriented input usable
   bool report_refused = false;   // the report's path collides with the input or the output: never written
   std::vector<std::string> positional;   // the arguments that are not options, as given (even after a usage error)
