@@ -33,7 +33,6 @@ struct Stepper_settings
   bool verbose = false;
   bool limit_output = false;        // the positions measured are the Loop limit points of the control points
   bool limit_written = false;       // the positions written are (a bound holds them: Deviation_bound.h)
-  const Control_matrix* reference = nullptr;   // the input positions, when the start's control points are not
   const Noise_estimate* noise = nullptr;   // of the input, in the stepper's numbering (noise criterion)
   int maximum_rejections = 5;       // retries of a step, each with a quarter of the time step
   bool local_time_scale = false;    // the time step follows the mesh's density (Local_time_scale.h)

@@ -119,12 +119,9 @@ private:
     if(!set_units(X, metric_columns, s, tensor, report, a, total)) return report;
     double assemble_seconds = clock.time();
     const Control_matrix Z0 = Z;
-    // what the written surface is measured against: the input positions (the start's control points
-    // unless they were made to interpolate them)
-    const Control_matrix& R = !fixed && s.reference ? *s.reference : Z0;
     // automatic isotropic runs: a time step that follows the mesh's density (Local_time_scale.h)
     const std::vector<double> none, mass_weight = s.local_time_scale && !fixed
-      ? mass_weights(local_time_scale(*layer_.topology, layer_.real_faces, R, components_, component_edge_)) : none;
+      ? mass_weights(local_time_scale(*layer_.topology, layer_.real_faces, Z0, components_, component_edge_)) : none;
     const std::vector<double>& unknown_scale = fixed ? none : unknown_scale_;
     const double time_unit = s.stopping.relative_units ? std::pow(report.scale, s.order) : 1.0;   // (28), steady speed
 
@@ -154,7 +151,7 @@ private:
     {
       output_positions(Z, Y);
       count_folds(layer_, Cache::has_second_derivatives, components_.of_face, component_edge_, Z, initial);
-      input_folds = count_folded_edges(*layer_.topology, layer_.real_faces, R, components_.of_face, component_edge_);
+      input_folds = count_folded_edges(*layer_.topology, layer_.real_faces, Z0, components_.of_face, component_edge_);
     }
     // the user's bound on the written positions (Deviation_bound.h), Yb, held by the vertices' own fidelity
     Deviation_bound bound = make_bound(s, Z, fixed, !noise_stop, report);
@@ -172,11 +169,11 @@ private:
     Surface_soundness accepted = initial;
     Lowest_curvature lowest_H(a);
     const double target = noise_stop ? s.stopping.noise_discrepancy * s.noise->relative_sigma() : 0.0;
-    double discrepancy = noise_stop ? s.noise->relative_displacement(Y, R, {}) : 0.0;
+    double discrepancy = noise_stop ? s.noise->relative_displacement(Y, Z0, {}) : 0.0;
     report.noise_displacement = discrepancy;
     // before the first step, the limit surface of the input may round its creases by more than the
     // noise while leaving most vertices in place: a clean mesh, whatever the typical vertex says
-    const double first_discrepancy = noise_stop ? std::max(discrepancy, s.noise->relative_displacement(Y, R, {}, true)) : 0.0;
+    const double first_discrepancy = noise_stop ? std::max(discrepancy, s.noise->relative_displacement(Y, Z0, {}, true)) : 0.0;
 
     const Eigen::Index nfree = Eigen::Index(block_.size());
     Step_solver solver(operator_.pattern(), block_, s, Z.cols(), fixed, bound.active() ? &fidelity : nullptr, &anchor);
@@ -294,7 +291,7 @@ private:
 
       // the noise level is passed within this step: take it again, shorter, so that it ends there (the
       // displacement grows fastest at first, so the secant undershoots the time and each retry comes closer)
-      const double candidate_discrepancy = noise_stop ? s.noise->relative_displacement(Y, R, {}) : 0.0;
+      const double candidate_discrepancy = noise_stop ? s.noise->relative_displacement(Y, Z0, {}) : 0.0;
       if(noise_stop && candidate_discrepancy > target * (1 + noise_tolerance) && locating < maximum_locating)
       {
         operator_.restore();
@@ -334,7 +331,7 @@ private:
           for(Eigen::Index i = 0; i < Z.rows(); ++i)
             st.max_displacement = std::max(st.max_displacement, (Z.row(i) - Z0.row(i)).head(metric_columns).norm());
           output_positions(Z, Y);
-          st.noise_displacement = s.noise->relative_displacement(Y, R, {});
+          st.noise_displacement = s.noise->relative_displacement(Y, Z0, {});
         }
         report.stop_reason = Stop_reason::NOISE_LEVEL;
       }
@@ -396,7 +393,7 @@ private:
       report.stop_reason = Stop_reason::STEP_REJECTED;
       report.message = "the surface folded at " + std::to_string(folds) + " edges (the input at " + std::to_string(allowed_folds) +
                        "); the run ends on the last surface without new folds (step " + std::to_string(unfolded_steps) + ")";
-      if(noise_stop) { output_positions(Z, Y); report.noise_displacement = s.noise->relative_displacement(Y, R, {}); }
+      if(noise_stop) { output_positions(Z, Y); report.noise_displacement = s.noise->relative_displacement(Y, Z0, {}); }
     }
     report.bound_fidelity_weight = bound.largest_weight();
     report.bound_held_vertices = bound.held_rows();

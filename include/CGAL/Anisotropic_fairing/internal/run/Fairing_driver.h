@@ -19,9 +19,7 @@
 #include <CGAL/Anisotropic_fairing/internal/run/Automatic_parameters.h>
 #include <CGAL/Anisotropic_fairing/internal/run/Fairing_parameters.h>
 #include <CGAL/Anisotropic_fairing/internal/run/Smoother_selection.h>
-#include <CGAL/Anisotropic_fairing/internal/loop/Limit_interpolation.h>
 #include <CGAL/Anisotropic_fairing/internal/flow/Boundary_constraints.h>
-#include <CGAL/Anisotropic_fairing/internal/flow/Coordinate_lattice.h>
 #include <CGAL/Anisotropic_fairing/internal/flow/Deviation_bound.h>
 #include <CGAL/Anisotropic_fairing/internal/element/Ghosted_patch_cache.h>
 #include <CGAL/Anisotropic_fairing/internal/mesh/Indexed_mesh.h>
@@ -300,12 +298,6 @@ Fairing_report fair(TriangleMesh& tm, VertexPointMap vpm, AttributeMap attribute
   s.limit_written = element == Finite_element::LOOP && output == Output_positions::LIMIT_SURFACE;
   s.limit_output = element == Finite_element::LOOP &&
                    (output == Output_positions::LIMIT_SURFACE || s.stopping.noise_discrepancy > 0);
-  // coordinates on a lattice that explains the noise (within a factor of two: the estimate also reads the
-  // mesh's finest detail): every run starts from control points whose limit surface passes through the
-  // input's vertices, which are within half a cell of the truth (Coordinate_lattice.h)
-  const Coordinate_lattice lattice = automatic && element == Finite_element::LOOP && mode != Attribute_mode::ATTRIBUTES_ONLY
-                                     ? coordinate_lattice(X, sampled) : Coordinate_lattice();
-  const bool interpolate = lattice.found && noise.relative_sigma() * mean_edge <= 2 * lattice.normal_deviation();
   std::string choices;
   if(automatic)
   {
@@ -320,13 +312,6 @@ Fairing_report fair(TriangleMesh& tm, VertexPointMap vpm, AttributeMap attribute
                   "has moved by %.3g x the noise%s", noise.relative_sigma(), noise.number_of_samples(), s.time_step, s.order,
                   s.stopping.noise_discrepancy, tensor_chosen ? "" : "; the tensor given");
     choices = text;
-    if(interpolate)
-    {
-      std::snprintf(text, sizeof text, "; coordinates on a lattice of cell %.3g x %.3g x %.3g, whose rounding (%.3g h) explains the noise: the "
-                    "runs start from the surface through the input's vertices", lattice.cell[0], lattice.cell[1], lattice.cell[2],
-                    lattice.normal_deviation() / mean_edge);
-      choices += text;
-    }
     if(tensor_chosen)
     {
       std::snprintf(text, sizeof text, "; anisotropic tensor: principal curvatures above %.3g / h are features, read on M_eps, "
@@ -383,17 +368,12 @@ Fairing_report fair(TriangleMesh& tm, VertexPointMap vpm, AttributeMap attribute
     Ghosted_patch_cache cache(layer, spec);
     boundary_held = hold(boundary_constrained_vertices(layer, cache, boundary == Boundary_handling::HOLD_BOUNDARY_CURVE));
     setup_seconds = setup.time();
-    std::vector<bool> interpolated(n);
-    for(std::size_t i = 0; i < n; ++i) interpolated[i] = !constrained[i] && !border[i] && !isolated[i];
     auto run = [&](const char* name, const auto& t, Control_matrix& Y, int order, const Control_matrix& start, Control_matrix* control,
                    std::size_t fixed_steps = 0) {
       Y = start;
       double limit_weight = 1;
-      Stepper_settings settings = begin_run(name, order, fixed_steps);
-      if(interpolate && interpolating_control_points(*layer.topology, start, interpolated, Y))
-        settings.reference = &start;
       Fairing_report r = run_stepper(cache, ordering, components, component_edge, mean_edge, Y, mode, constrained, border, t,
-                                     settings, counted_callback, setup_seconds, limit_weight);
+                                     begin_run(name, order, fixed_steps), counted_callback, setup_seconds, limit_weight);
       steps_left -= (std::min)(steps_left, r.steps.size());
       r.limit_weight = limit_weight;
       if(control) *control = Y;
