@@ -71,7 +71,7 @@ inline Control_matrix probed_input(const Control_matrix& Y, const Control_matrix
 
 /// The terms of SURE of a result f of y (f_probed: of the probed input), one per vertex in units of
 /// sigma_i^2, without the constant -1 per vertex: ((n_i . (y_i - f_i)) / sigma_i)^2 + 2 div_i (0 where
-/// sigma_i is 0). Their sum is the estimate; their spread says how far it can be trusted.
+/// sigma_i is 0). Their sum is the estimate.
 inline std::vector<double> risk_terms(const Control_matrix& y, const Control_matrix& f, const Control_matrix& f_probed,
                                       const Control_matrix& N, const std::vector<double>& sigma, const std::vector<double>& b)
 {
@@ -85,18 +85,6 @@ inline std::vector<double> risk_terms(const Control_matrix& y, const Control_mat
     t[std::size_t(i)] = residual * residual + 2 * divergence;
   }
   return t;
-}
-
-/// The standard error of the difference of two estimates from their terms: sqrt(N var(a_i - b_i)).
-inline double risk_difference_error(const std::vector<double>& a, const std::vector<double>& b)
-{
-  const std::size_t n = a.size();
-  if(n < 2) return 0;
-  double mean = 0, square = 0;
-  for(std::size_t i = 0; i < n; ++i) mean += a[i] - b[i];
-  mean /= double(n);
-  for(std::size_t i = 0; i < n; ++i) square += (a[i] - b[i] - mean) * (a[i] - b[i] - mean);
-  return std::sqrt(square / double(n - 1) * double(n));
 }
 
 } // namespace internal
