@@ -11,6 +11,7 @@
 
 #include <CGAL/Anisotropic_fairing/anisotropic_fairing.h>
 #include <CGAL/Eigen_solver_traits.h>
+#include <CGAL/Real_timer.h>
 
 #include "test_support/check.h"
 #include "test_support/mesh_coordinates.h"
@@ -339,6 +340,51 @@ void automatic_solver(const std::string& data)
   AF_CHECK(!other.factorise_now(), "a fast CG step keeps conjugate gradients");
 }
 
+// Conjugate gradients that stall give way to the factorisation early: on the path graph's Laplacian plus
+// a shift of 1e-4 (condition number about 4e4, so the factorisation's relative residual is near 1e-16 x
+// 4e4; Jacobi-preconditioned CG needs thousands of iterations),
+// AUTOMATIC stops iterating after ten times the trial threshold, factorises, and its answer solves the
+// system. The next matrix is iterated again; only after giving way twice in a row does it factorise.
+void automatic_solver_gives_way()
+{
+  namespace I = CGAL::Anisotropic_fairing::internal;
+  const int n = 4000;
+  std::vector<Eigen::Triplet<double>> entries;
+  for(int i = 0; i < n; ++i)
+  {
+    entries.emplace_back(i, i, 2.0 + 1e-4);
+    if(i > 0) { entries.emplace_back(i, i - 1, -1.0); entries.emplace_back(i - 1, i, -1.0); }
+  }
+  Eigen::SparseMatrix<double> A(n, n);
+  A.setFromTriplets(entries.begin(), entries.end());
+  I::Control_matrix B(n, 1), X = I::Control_matrix::Zero(n, 1);
+  for(int i = 0; i < n; ++i) B(i, 0) = std::sin(0.37 * i) + 1e-3 * i;
+  I::Block_conjugate_gradient cg(1e-12, 100000), unlimited(1e-12, 100000);
+  I::Control_matrix Xcg = X;
+  const I::Solve_statistics full = unlimited.solve(A, B, Xcg);
+  std::printf("CG alone on the shifted path Laplacian (n = %d): %d iterations\n", n, full.iterations);
+  AF_CHECK(full.ok && full.iterations > 10 * AF::automatic_cholesky_trial_iterations,
+           "the test matrix needs more CG iterations than AUTOMATIC allows before giving way");
+
+  I::Solver_choice choice(AF::Linear_solver::AUTOMATIC, std::size_t(n));
+  AF_CHECK(choice.fall_back_iterations() == 10 * AF::automatic_cholesky_trial_iterations,
+           "before any timing, CG gives way after ten times the trial threshold");
+  bool direct = false;
+  CGAL::Real_timer clock;
+  clock.start();
+  const I::Solve_statistics first = choice.solve(A, B, X, cg, direct);
+  choice.record(direct, first, clock.time());
+  const double residual = (B - A * X).norm() / B.norm();
+  std::printf("AUTOMATIC: direct %d, relative residual %.3g\n", int(direct), residual);
+  AF_CHECK(first.ok && direct && residual < 1e-10, "the stalled iterations gave way to the factorisation, which solved the system");
+  AF_CHECK(!choice.factorise_now(), "after giving way once, the next matrix is iterated again");
+  X.setZero();
+  clock.reset();
+  const I::Solve_statistics second = choice.solve(A, B, X, cg, direct);
+  choice.record(direct, second, clock.time());
+  AF_CHECK(second.ok && direct && choice.factorise_now(), "after giving way twice in a row, the run factorises");
+}
+
 // The sparse_linear_solver named parameter (CGAL's SparseLinearAlgebraWithFactorTraits_d) replaces the
 // package's LDL^T wherever it factorises: the steps, the prefilter, the constant system of a fixed surface.
 // A traits that counts its factorisations shows that it is the one used; its results equal the package's.
@@ -400,6 +446,7 @@ int main(int argc, char** argv)
   stopping_criteria(bumpy);
   linear_element_sphere();
   automatic_solver(data);
+  automatic_solver_gives_way();
   user_sparse_linear_solver(data);
   return AF_test::report();
 }

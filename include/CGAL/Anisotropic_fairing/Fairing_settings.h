@@ -75,7 +75,9 @@ enum class Linear_solver {
   /// meshes), the next step is factorised and timed; from then on the run factorises whenever that is
   /// faster than the next conjugate-gradient step is predicted to be (the last one's time, scaled by the
   /// growth of the iteration count). A step whose iterations fail to converge is solved
-  /// again by `CHOLESKY`. Factorisation is only tried up to `automatic_cholesky_limit` free vertices
+  /// again by `CHOLESKY`; the iterations give way after as many as cost one factorised step (before one
+  /// was timed: ten times `automatic_cholesky_trial_iterations`), and the next step is iterated again
+  /// unless they gave way twice in a row. Factorisation is only tried up to `automatic_cholesky_limit` free vertices
   /// (its fill grows faster than linearly).
   AUTOMATIC
 };

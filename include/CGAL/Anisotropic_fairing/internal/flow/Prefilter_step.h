@@ -12,7 +12,9 @@
 #include <CGAL/Anisotropic_fairing/internal/types/Control_matrix.h>
 #include <CGAL/Anisotropic_fairing/Fairing_settings.h>
 #include <CGAL/Anisotropic_fairing/internal/solve/Free_block.h>
+#include <CGAL/Anisotropic_fairing/internal/solve/Solver_choice.h>
 #include <CGAL/Anisotropic_fairing/internal/solve/Spd_solvers.h>
+#include <CGAL/Real_timer.h>
 
 #include <Eigen/Sparse>
 
@@ -36,11 +38,13 @@ struct Prefilter_solver
 /// M, L: value arrays over `pattern` (isotropic); A: a matrix of the structure of `block.matrix`, whose
 /// values are overwritten. dX: the displacement of the free rows' first `columns` columns; when it has
 /// their size on entry, conjugate gradients start from it (the last step's M_eps is a close guess).
+/// `choice` and `cg` persist over a run's prefilters, as a time step's do: once the iterations fail
+/// (near-degenerate faces of quantised scans), later prefilters are factorised, analysed once.
 inline Solve_statistics prefilter_step(const Eigen::SparseMatrix<double>& pattern, const std::vector<double>& M,
                                        const std::vector<double>& L, const std::vector<double>& eps,
                                        const Free_block& block, Eigen::SparseMatrix<double>& A,
                                        const Control_matrix& X, int columns, const Prefilter_solver& settings,
-                                       Control_matrix& dX)
+                                       Solver_choice& choice, Block_conjugate_gradient& cg, Control_matrix& dX)
 {
   const std::vector<int>& free = block.free;
   double* av = A.valuePtr();
@@ -59,13 +63,16 @@ inline Solve_statistics prefilter_step(const Eigen::SparseMatrix<double>& patter
     for(int p = pattern.outerIndexPtr()[row]; p < pattern.outerIndexPtr()[row + 1]; ++p)
       B.row(i) -= eps[std::size_t(row)] * L[std::size_t(p)] * X.row(pattern.innerIndexPtr()[p]).head(columns);
   }
-  if(settings.solver == Linear_solver::CHOLESKY) return make_direct_solver(settings.direct)->solve(A, B, dX);
-  Block_conjugate_gradient cg(settings.tolerance, settings.maximum_iterations);
-  Solve_statistics sol = cg.solve(A, B, dX);
-  if(!sol.ok && settings.solver == Linear_solver::AUTOMATIC)   // near-degenerate faces (quantised scans) can make it too ill-conditioned for CG
+  CGAL::Real_timer clock;
+  clock.start();
+  bool direct = false;
+  Solve_statistics sol = choice.solve(A, B, dX, cg, direct);
+  choice.record(direct, sol, clock.time());
+  if(!sol.ok && !direct && settings.solver == Linear_solver::AUTOMATIC)
   {
+    // above automatic_cholesky_limit the choice does not factorise; M_eps is needed all the same
     dX.setZero();
-    sol = make_direct_solver(settings.direct)->solve(A, B, dX);
+    sol = choice.direct_solver().solve(A, B, dX);
   }
   return sol;
 }

@@ -115,6 +115,19 @@ struct Lowest_curvature
   void add(const Assembly_statistics& a) { full = std::min(full, a.H_integral); bounded = std::min(bounded, a.bounded_H_integral); }
 };
 
+/// Whether the candidate's written mesh alone already folds more edges than the accepted state allows
+/// (what judge_step finds first when the limit surface's faces add none): `why` says so.
+inline bool edges_folded(const Surface_soundness& accepted, std::size_t input_folds, const Surface_soundness& candidate,
+                         std::string& why)
+{
+  if(candidate.folded_edges <= std::max(accepted.near_folds(), input_folds)) return false;
+  char text[160];
+  std::snprintf(text, sizeof text, "the surface folded (%zu edges where the normal turns by more than 120 degrees, %zu before)",
+                candidate.folded_edges, accepted.folds());
+  why = text;
+  return true;
+}
+
 /// Compares `candidate` with the last accepted state (and the initial one for collapse); `input_folds`
 /// are the folds of the input mesh itself, `lowest` the lowest int |H|^2 reached so far. `why` names what failed.
 inline Step_verdict judge_step(const Surface_soundness& initial, const Surface_soundness& accepted, std::size_t input_folds,

@@ -15,6 +15,7 @@
 #include <CGAL/Anisotropic_fairing/internal/solve/Free_block.h>
 #include <CGAL/Anisotropic_fairing/internal/types/Control_matrix.h>
 
+#include <memory>
 #include <string>
 #include <vector>
 
@@ -40,6 +41,8 @@ public:
     eps_ = std::move(eps);
     block_ = block;
     prefilter_solver_ = solver;
+    prefilter_choice_.reset(block ? new Solver_choice(solver.solver, block->size(), false, solver.direct) : nullptr);
+    prefilter_cg_.reset(new Block_conjugate_gradient(solver.tolerance, solver.maximum_iterations));
     prefilter_ = false;
     for(double e : eps_) prefilter_ = prefilter_ || e > 0;
   }
@@ -59,7 +62,7 @@ public:
       if(prefilter_A_.rows() != block_->matrix.rows()) prefilter_A_ = block_->matrix;
       Control_matrix& dX = prefilter_dX_;   // warm start: the last M_eps's displacement
       const Solve_statistics sol = prefilter_step(assembler_.pattern(), Mi, Li, eps_, *block_, prefilter_A_, X, metric_columns,
-                                                  prefilter_solver_, dX);
+                                                  prefilter_solver_, *prefilter_choice_, *prefilter_cg_, dX);
       if(!sol.ok) dX.resize(0, 0);
       if(!sol.ok || !dX.allFinite())
         error_ = "the prefiltered surface M_eps could not be computed: " + (sol.ok ? std::string("not finite") : sol.message);
@@ -103,6 +106,8 @@ private:
   bool prefilter_ = false;
   const Free_block* block_ = nullptr;
   Prefilter_solver prefilter_solver_;
+  std::unique_ptr<Solver_choice> prefilter_choice_;
+  std::unique_ptr<Block_conjugate_gradient> prefilter_cg_;
   Eigen::SparseMatrix<double> prefilter_A_;
   Control_matrix prefiltered_X_, saved_prefiltered_X_, prefilter_dX_;
   bool prefiltered_valid_ = false, saved_prefiltered_valid_ = false;

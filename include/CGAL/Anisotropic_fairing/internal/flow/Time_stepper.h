@@ -234,33 +234,69 @@ private:
         }
         else move_free_rows(Zc, dZ, Z0, measured_columns, row_unit, st);
       }
+      // the noise level passed within this step: take it again, shorter, so that it ends there (the
+      // displacement grows fastest at first, so the secant undershoots the time and each retry comes
+      // closer). Judged before the candidate is assembled, which a retaken step does not need; with a
+      // bound on the written positions, after the bound's retakes
+      double candidate_discrepancy = 0;
+      const auto locate = [&]() {
+        if(!(candidate_discrepancy > target * (1 + noise_tolerance)) || locating >= maximum_locating) return false;
+        ++locating;
+        factor *= std::max(0.05, (target - discrepancy) / (candidate_discrepancy - discrepancy));
+        return true;
+      };
+      bool last_step = step == s.maximum_steps;
+      double theta = -1;   // >= 0: the run ends this far into the step, where the noise level is reached
+      if(noise_stop && finite && !bound.active())
+      {
+        output_positions(Zc, Y);
+        if(Y.allFinite())
+        {
+          candidate_discrepancy = s.noise->relative_displacement(Y, Z0, {});
+          if(locate()) continue;
+          if(candidate_discrepancy >= target)
+          {
+            // the surface the run ends on is the one judged, and it needs no matrices
+            theta = std::min(1.0, std::max(0.0, (target - discrepancy) / (candidate_discrepancy - discrepancy)));
+            if(theta < 1) { Zc = Z + theta * (Zc - Z); output_positions(Zc, Y); }
+            last_step = true;
+          }
+        }
+      }
       Surface_soundness candidate = accepted;
       std::string why;
       Step_verdict verdict = Step_verdict::SOUND;
+      bool saved = false;   // the accepted surface's operator kept aside while the candidate's is assembled
       if(!fixed)
       {
         clock.reset();
-        operator_.save();
         candidate = Surface_soundness();
         candidate.finite = finite && Zc.allFinite();
-        if(candidate.finite)
+        // the folded edges first: they need no assembly, and a candidate they reject costs none
+        if(candidate.finite) count_folds(layer_, Cache::has_second_derivatives, components_.of_face, component_edge_, Zc, candidate);
+        if(candidate.finite && edges_folded(accepted, input_folds, candidate, why)) verdict = Step_verdict::UNSOUND;
+        else
         {
-          candidate.statistics = operator_.assemble(Zc, metric_columns, tensor, step < s.maximum_steps);  // the last: statistics only
-          if(!operator_.error().empty())
-            return fail(report, Fairing_status::SOLVER_FAILED, "after step " + std::to_string(step) + ": " + operator_.error(), total);
-          output_positions(Zc, Y);
-          candidate.finite = Y.allFinite();
-          if(candidate.finite) count_folds(layer_, Cache::has_second_derivatives, components_.of_face, component_edge_, Zc, candidate);
+          operator_.save();
+          saved = true;
+          if(candidate.finite)
+          {
+            candidate.statistics = operator_.assemble(Zc, metric_columns, tensor, !last_step);  // the last: statistics only
+            if(!operator_.error().empty())
+              return fail(report, Fairing_status::SOLVER_FAILED, "after step " + std::to_string(step) + ": " + operator_.error(), total);
+            output_positions(Zc, Y);
+            candidate.finite = Y.allFinite();
+          }
+          verdict = judge_step(initial, accepted, input_folds, lowest_H, candidate, why);
         }
         assemble_seconds = clock.time();
-        verdict = judge_step(initial, accepted, input_folds, lowest_H, candidate, why);
       }
       if(verdict == Step_verdict::COLLAPSED)
         return fail(report, Fairing_status::COLLAPSED, "step " + std::to_string(step) + ": " + why +
                     ": mean-curvature flow shrinks closed surfaces to points; use fewer steps or a larger fidelity weight", total);
       if(verdict == Step_verdict::UNSOUND)
       {
-        operator_.restore();
+        if(saved) operator_.restore();
         ++report.rejected_steps;
         last_why = why;
         if(s.verbose) std::cerr << "step " << step << " rejected (" << why << "); retrying with a quarter of the time step\n";
@@ -289,15 +325,10 @@ private:
       }
       bound_retries = 0;
 
-      // the noise level is passed within this step: take it again, shorter, so that it ends there (the
-      // displacement grows fastest at first, so the secant undershoots the time and each retry comes closer)
-      const double candidate_discrepancy = noise_stop ? s.noise->relative_displacement(Y, Z0, {}) : 0.0;
-      if(noise_stop && candidate_discrepancy > target * (1 + noise_tolerance) && locating < maximum_locating)
+      if(noise_stop && bound.active())
       {
-        operator_.restore();
-        ++locating;
-        factor *= std::max(0.05, (target - discrepancy) / (candidate_discrepancy - discrepancy));
-        continue;
+        candidate_discrepancy = s.noise->relative_displacement(Y, Z0, {});
+        if(locate()) { operator_.restore(); continue; }
       }
       locating = 0;
 
@@ -317,23 +348,28 @@ private:
       const double previous_discrepancy = discrepancy;
       if(noise_stop) discrepancy = candidate_discrepancy;
       st.noise_displacement = discrepancy;
-      if(noise_stop && discrepancy >= target)
+      // the noise level is reached within this step: end on the surface where it is reached exactly (without
+      // a bound, that surface was made and judged above)
+      const auto end_within_step = [&](double theta_reached) {
+        st.time = time - (1 - theta_reached) * st.time_step;
+        st.max_displacement = 0;
+        for(Eigen::Index i = 0; i < Z.rows(); ++i)
+          st.max_displacement = std::max(st.max_displacement, (Z.row(i) - Z0.row(i)).head(metric_columns).norm());
+        output_positions(Z, Y);
+        st.noise_displacement = s.noise->relative_displacement(Y, Z0, {});
+        report.stop_reason = Stop_reason::NOISE_LEVEL;
+      };
+      if(theta >= 0) end_within_step(theta);
+      else if(noise_stop && discrepancy >= target)
       {
-        // the noise level is reached within this step: end on the surface where it is reached exactly
-        const double theta = std::min(1.0, std::max(0.0, (target - previous_discrepancy) / (discrepancy - previous_discrepancy)));
+        theta = std::min(1.0, std::max(0.0, (target - previous_discrepancy) / (discrepancy - previous_discrepancy)));
         if(theta < 1)
         {
           Z = Z_previous + theta * (Z - Z_previous);
           const Assembly_statistics b = operator_.assemble(Z, metric_columns, tensor, false);
-          st.time = time - (1 - theta) * st.time_step;
           st.area = b.area; st.energy = b.energy; st.H_integral = b.H_integral;
-          st.max_displacement = 0;
-          for(Eigen::Index i = 0; i < Z.rows(); ++i)
-            st.max_displacement = std::max(st.max_displacement, (Z.row(i) - Z0.row(i)).head(metric_columns).norm());
-          output_positions(Z, Y);
-          st.noise_displacement = s.noise->relative_displacement(Y, Z0, {});
         }
-        report.stop_reason = Stop_reason::NOISE_LEVEL;
+        end_within_step(theta);
       }
       // the fourth-order flow barely shrinks: once the noise is gone its displacement levels off, maybe short
       // of the noise level, and what still moves is shape: stop when the displacement grows more slowly than

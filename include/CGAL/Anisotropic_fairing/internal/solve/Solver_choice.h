@@ -9,6 +9,7 @@
 #include <CGAL/Anisotropic_fairing/internal/types/Control_matrix.h>
 #include <CGAL/Anisotropic_fairing/Fairing_settings.h>
 #include <CGAL/Anisotropic_fairing/internal/solve/Spd_solvers.h>
+#include <CGAL/Real_timer.h>
 
 #include <algorithm>
 #include <cmath>
@@ -74,16 +75,32 @@ public:
                          const Control_matrix& B, Control_matrix& X, Block_conjugate_gradient& cg, bool& direct)
   {
     direct = factorise_now();
+    failed_iterate_seconds_ = 0;
     if(direct) return direct_solver().solve(matrix(), B, X);
     start_ = X;
-    Solve_statistics sol = cg.solve(product, diagonal, B, X);
+    CGAL::Real_timer clock;
+    clock.start();
+    Solve_statistics sol = cg.solve(product, diagonal, B, X, may_fall_back() ? fall_back_iterations() : 0);
     if(!sol.ok && may_fall_back())
     {
+      failed_iterate_seconds_ = clock.time();
+      if(sol.iterations > 0) seconds_per_iteration_ = failed_iterate_seconds_ / sol.iterations;
       X = start_;
       direct = true;
       sol = direct_solver().solve(matrix(), B, X);
     }
     return sol;
+  }
+
+  /// Iterations after which conjugate gradients give way to the factorisation: as many as cost what one
+  /// factorised step costs, once both were timed; before that ten times the trial threshold (a step
+  /// that needs more is factorised faster on every mesh of bench_step_speed). Where a limit surface is
+  /// nearly singular (quantised scans) the iterations stall, and would otherwise run to the user's maximum.
+  int fall_back_iterations() const
+  {
+    if(!(seconds_per_iteration_ > 0) || !std::isfinite(factorised_seconds_)) return 10 * automatic_cholesky_trial_iterations;
+    const double worth = factorised_seconds_ / seconds_per_iteration_;
+    return int(std::min(1e9, std::max(double(automatic_cholesky_trial_iterations), worth)));
   }
 
   void record(bool direct, const Solve_statistics& sol, double seconds)
@@ -92,16 +109,26 @@ public:
     if(direct && !sol.ok) { mode_ = ITERATE; tried_ = true; factorised_seconds_ = HUGE_VAL; return; }
     if(direct)
     {
-      factorised_seconds_ = seconds - sol.analysis_seconds;   // what every further factorised step costs
-      mode_ = (mode_ != TRIAL || factorised_seconds_ < predicted_iterate_seconds_) ? FACTORISE : ITERATE;
+      // what every further factorised step costs (without the iterations that gave way to it)
+      factorised_seconds_ = seconds - sol.analysis_seconds - failed_iterate_seconds_;
       tried_ = true;
+      if(failed_iterate_seconds_ > 0)
+      {
+        // the iterations gave way on this matrix: the next one is iterated again (the roughest surface,
+        // the input, is often the only one they fail on), unless they gave way on the last one too
+        mode_ = ++failures_in_a_row_ >= 2 ? FACTORISE : ITERATE;
+        return;
+      }
+      mode_ = (mode_ != TRIAL || factorised_seconds_ < predicted_iterate_seconds_) ? FACTORISE : ITERATE;
       return;
     }
+    failures_in_a_row_ = 0;
     // CG work often grows from step to step as the surface roughens or pinches: predict the next
     // step's cost from the growth of the iteration count
     const double growth = previous_iterations_ > 0 ? std::max(1.0, double(sol.iterations) / previous_iterations_) : 1.0;
     predicted_iterate_seconds_ = seconds * growth;
     previous_iterations_ = sol.iterations;
+    if(sol.iterations > 0) seconds_per_iteration_ = seconds / sol.iterations;
     if(!may_factorise_) return;
     if(tried_ && predicted_iterate_seconds_ > factorised_seconds_) mode_ = FACTORISE;
     else if(!tried_ && sol.iterations > automatic_cholesky_trial_iterations) mode_ = TRIAL;
@@ -113,8 +140,8 @@ private:
   Mode mode_;
   bool constant_;
   bool tried_ = false;
-  double predicted_iterate_seconds_ = 0, factorised_seconds_ = HUGE_VAL;
-  int previous_iterations_ = 0;
+  double predicted_iterate_seconds_ = 0, factorised_seconds_ = HUGE_VAL, seconds_per_iteration_ = 0, failed_iterate_seconds_ = 0;
+  int previous_iterations_ = 0, failures_in_a_row_ = 0;
   Direct_solver_factory make_direct_;
   std::unique_ptr<Direct_solver> direct_;
   Control_matrix start_;

@@ -112,7 +112,19 @@ public:
     return solve([&A](const Control_matrix& P, Control_matrix& AP) { symmetric_product(A, P, AP); }, diagonal, B, X);
   }
 
-  /// The same for a matrix given by its product, `product(P, AP)` setting AP = A P, and its diagonal.
+  /// The same for a matrix given by its product, `product(P, AP)` setting AP = A P, and its diagonal;
+  /// `iteration_limit` > 0: at most that many iterations in this solve (below the constructor's maximum).
+  template <typename Product>
+  Solve_statistics solve(const Product& product, const Eigen::VectorXd& diagonal, const Control_matrix& B, Control_matrix& X,
+                         int iteration_limit)
+  {
+    const int kept = max_iterations_;
+    if(iteration_limit > 0) max_iterations_ = std::min(max_iterations_, iteration_limit);
+    Solve_statistics st = solve(product, diagonal, B, X);
+    max_iterations_ = kept;
+    return st;
+  }
+
   template <typename Product>
   Solve_statistics solve(const Product& product, const Eigen::VectorXd& diagonal, const Control_matrix& B, Control_matrix& X)
   {
