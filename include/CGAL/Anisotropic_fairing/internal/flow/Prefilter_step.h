@@ -38,8 +38,8 @@ struct Prefilter_solver
 /// M, L: value arrays over `pattern` (isotropic); A: a matrix of the structure of `block.matrix`, whose
 /// values are overwritten. dX: the displacement of the free rows' first `columns` columns; when it has
 /// their size on entry, conjugate gradients start from it (the last step's M_eps is a close guess).
-/// `choice` and `cg` persist over a run's prefilters, as a time step's do: once the iterations fail
-/// (near-degenerate faces of quantised scans), later prefilters are factorised, analysed once.
+/// `choice` and `cg` persist over a run's prefilters, as a time step's do: iterations that stall
+/// (near-degenerate faces of quantised scans) give way to the factorisation, analysed once per run.
 inline Solve_statistics prefilter_step(const Eigen::SparseMatrix<double>& pattern, const std::vector<double>& M,
                                        const std::vector<double>& L, const std::vector<double>& eps,
                                        const Free_block& block, Eigen::SparseMatrix<double>& A,
