@@ -92,6 +92,7 @@ std::string report_json(const Options& o, const Run_record& r, double wall_secon
   j["noise_level"] = ran ? number(f.noise_level) : Json(nullptr);
   j["noise_deviation"] = ran ? number(f.noise_deviation) : Json(nullptr);
   j["noise_displacement"] = ran ? number(f.noise_displacement) : Json(nullptr);
+  j["removed_spikes"] = known(ran, f.removed_spikes);
   j["limit_weight"] = ran ? number(f.limit_weight) : Json(nullptr);
   j["components"] = known(ran, f.components);
   j["rejected_steps"] = known(ran, f.rejected_steps);

@@ -383,7 +383,7 @@ const char* const help_after_options =
 "\n"
 "JSON report: status, message, input, output, vertices, faces, element, output_positions, tensor, lambda,\n"
 "lambda_model_units, epsilon, tangential_motion, automatic_parameters, choices, noise_level,\n"
-"noise_deviation, noise_displacement, limit_weight, components, rejected_steps,\n"
+"noise_deviation, noise_displacement, removed_spikes, limit_weight, components, rejected_steps,\n"
 "maximum_deviation, relative_maximum_deviation, largest_deviation, attribute_maximum_deviation,\n"
 "largest_attribute_deviation, bound_fidelity_weight, bound_held_vertices, bound_uniform_weight,\n"
 "bound_retaken_steps, clamped_vertices,\n"

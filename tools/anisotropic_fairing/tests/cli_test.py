@@ -175,7 +175,7 @@ def check_table(spec, work):
 
 # ---- the report ----------------------------------------------------------------------------------
 REQUIRED_TOP = ('steps stop_reason total_seconds vertices faces mode attributes attribute_dimension attribute_weight '
-                'automatic_parameters choices noise_level noise_deviation noise_displacement components rejected_steps order '
+                'automatic_parameters choices noise_level noise_deviation noise_displacement removed_spikes components rejected_steps order '
                 'maximum_deviation relative_maximum_deviation largest_deviation attribute_maximum_deviation '
                 'largest_attribute_deviation bound_fidelity_weight bound_held_vertices bound_uniform_weight bound_retaken_steps clamped_vertices hold held_vertices').split()
 REQUIRED_STEP = ('step time solver_iterations residual area energy H_integral max_displacement assemble_seconds '

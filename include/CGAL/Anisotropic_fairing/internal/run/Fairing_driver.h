@@ -21,6 +21,7 @@
 #include <CGAL/Anisotropic_fairing/internal/run/Smoother_selection.h>
 #include <CGAL/Anisotropic_fairing/internal/flow/Boundary_constraints.h>
 #include <CGAL/Anisotropic_fairing/internal/flow/Deviation_bound.h>
+#include <CGAL/Anisotropic_fairing/internal/flow/Isolated_spikes.h>
 #include <CGAL/Anisotropic_fairing/internal/element/Ghosted_patch_cache.h>
 #include <CGAL/Anisotropic_fairing/internal/mesh/Indexed_mesh.h>
 #include <CGAL/Anisotropic_fairing/internal/element/Linear_element_cache.h>
@@ -287,6 +288,10 @@ Fairing_report fair(TriangleMesh& tm, VertexPointMap vpm, AttributeMap attribute
   const double mean_edge = edge_count > 0 ? edge_sum / edge_count : 0.0;
   std::vector<bool> sampled(n);
   for(std::size_t i = 0; i < n; ++i) sampled[i] = !constrained[i] && !border[i];
+  // impulsive noise: with the automatic stopping rule, isolated spikes go back into their rings' planes
+  // before the noise is estimated (Isolated_spikes.h); a bound on the motion leaves them as they are
+  const std::size_t removed_spikes = automatic && mode != Attribute_mode::ATTRIBUTES_ONLY && s.stopping.noise_discrepancy > 0 &&
+                                     !(s.maximum_deviation > 0) ? remove_isolated_spikes(*layer.topology, sampled, X) : 0;
   const Noise_estimate noise(*layer.topology, X, sampled);
   s.noise = &noise;
   std::vector<double> noise_sigma(n, 0.0);   // the noise's deviation at each vertex, in model units
@@ -312,6 +317,12 @@ Fairing_report fair(TriangleMesh& tm, VertexPointMap vpm, AttributeMap attribute
                   "has moved by %.3g x the noise%s", noise.relative_sigma(), noise.number_of_samples(), s.time_step, s.order,
                   s.stopping.noise_discrepancy, tensor_chosen ? "" : "; the tensor given");
     choices = text;
+    if(removed_spikes > 0)
+    {
+      std::snprintf(text, sizeof text, "; first %zu isolated spikes (%.2g%% of the vertices: impulsive noise) put back into the planes of "
+                    "their rings", removed_spikes, 100.0 * double(removed_spikes) / double(n));
+      choices += text;
+    }
     if(tensor_chosen)
     {
       std::snprintf(text, sizeof text, "; anisotropic tensor: principal curvatures above %.3g / h are features, read on M_eps, "
@@ -429,6 +440,7 @@ Fairing_report fair(TriangleMesh& tm, VertexPointMap vpm, AttributeMap attribute
   report.automatic_parameters = automatic;
   report.choices = choices;
   report.noise_level = noise.relative_sigma();
+  report.removed_spikes = removed_spikes;
   report.noise_deviation = noise.relative_sigma() * report.mean_edge_length;
 
   if(report.succeeded())

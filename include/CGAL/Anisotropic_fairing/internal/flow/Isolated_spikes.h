@@ -1,0 +1,139 @@
+// Copyright (c) 2026 Anisotropic_fairing developers.
+// SPDX-License-Identifier: GPL-3.0-or-later
+//
+// Impulsive noise: a share of the vertices thrown off the surface, the rest left clean. The noise
+// estimate is robust, so it sees the clean majority and calls the mesh nearly noise-free; every flow
+// then stops before its first step and the spikes stay. A spike is told from a feature by its
+// neighbourhood, not by its height: a crease or a corner stands out of its ring together with the
+// vertices along it, a spike alone (or with one other spike beside it). On clean meshes, features that
+// stand out alone (tips, cone points) are at most a few per thousand vertices, on quantised and scanned
+// ones up to 1.5%; impulsive noise makes them a population. So the spikes are put back into the plane
+// of their ring only when they are at least one vertex in fifty, and only those.
+
+#ifndef CGAL_ANISOTROPIC_FAIRING_INTERNAL_FLOW_ISOLATED_SPIKES_H
+#define CGAL_ANISOTROPIC_FAIRING_INTERNAL_FLOW_ISOLATED_SPIKES_H
+
+#include <CGAL/Anisotropic_fairing/internal/mesh/Triangle_topology.h>
+#include <CGAL/Anisotropic_fairing/internal/types/Control_matrix.h>
+#include <CGAL/Anisotropic_fairing/internal/types/Parallel_blocks.h>
+#include <CGAL/Anisotropic_fairing/internal/types/Vector3.h>
+
+#include <algorithm>
+#include <cmath>
+#include <cstddef>
+#include <iterator>
+#include <limits>
+#include <vector>
+
+namespace CGAL {
+namespace Anisotropic_fairing {
+namespace internal {
+
+/// The constants of the spike test.
+struct Spike_test
+{
+  double outlier = 4;          // a spike stands out of its ring by this many robust deviations of all heights,
+  double least_height = 0.1;   // and by at least this share of its ring's edge length
+  double population = 0.02;    // the spikes found are removed only if at least this share of the vertices
+  int rounds = 4;              // a spike removed can uncover one it hid
+};
+
+/// The isolated spikes among the vertices with `usable[i]` (interior, free, a closed fan) of the real
+/// vertices X (first 3 columns) moved into the plane of their ring, through its centroid. Returns how
+/// many vertices were moved (0: too few to be noise, X unchanged).
+inline std::size_t remove_isolated_spikes(const Triangle_topology& topo, const std::vector<bool>& usable, Control_matrix& X,
+                                          const Spike_test& test = Spike_test())
+{
+  const std::size_t n = std::size_t(X.rows());
+  std::vector<double> height(n), edge(n), normal(3 * n);
+  std::vector<char> measured(n);
+  // e_i = (x_i - c_i) . n_i / h_i: the height of vertex i over its ring (centroid c_i, normal n_i,
+  // mean distance h_i to it)
+  const auto measure = [&] {
+    parallel_blocks(n, [&](std::size_t first, std::size_t last) {
+      std::vector<int> ring;
+      for(std::size_t i = first; i < last; ++i)
+      {
+        measured[i] = 0;
+        if(!usable[i] || topo.outgoing(int(i)) < 0) continue;
+        ring.clear();
+        topo.neighbours_ccw(topo.outgoing(int(i)), std::back_inserter(ring));
+        if(std::any_of(ring.begin(), ring.end(), [n](int j) { return std::size_t(j) >= n; })) continue;
+        Eigen::Vector3d c = Eigen::Vector3d::Zero(), nrm = Eigen::Vector3d::Zero();
+        const Eigen::Vector3d x = X.row(Eigen::Index(i)).head(3).transpose();
+        for(int j : ring) c += X.row(j).head(3).transpose() / double(ring.size());
+        double h = 0;
+        for(std::size_t k = 0; k < ring.size(); ++k)
+        {
+          const Eigen::Vector3d u = X.row(ring[k]).head(3).transpose() - c, w = X.row(ring[(k + 1) % ring.size()]).head(3).transpose() - c;
+          nrm += u.cross(w);
+          h += (X.row(ring[k]).head(3).transpose() - x).norm() / double(ring.size());
+        }
+        const double len = nrm.norm();
+        if(!(len > 0) || !(h > 0) || !std::isfinite(len) || !std::isfinite(h)) continue;
+        vec3(&normal[3 * i]) = nrm / len;
+        edge[i] = h;
+        height[i] = (x - c).dot(nrm / len) / h;
+        measured[i] = 1;
+      }
+    });
+  };
+  // the neighbours of i that stand out on the same side by at least half as much
+  const auto companions = [&](std::size_t i, std::vector<int>& out) {
+    out.clear();
+    std::vector<int> ring;
+    topo.neighbours_ccw(topo.outgoing(int(i)), std::back_inserter(ring));
+    for(int j : ring)
+      if(measured[std::size_t(j)] && height[std::size_t(j)] * height[i] > 0 && std::abs(height[std::size_t(j)]) > 0.5 * std::abs(height[i]))
+        out.push_back(j);
+  };
+  // the threshold: `outlier` robust deviations of the heights about their median (a curved surface's
+  // heights are not centred on 0), read again each round, once the spikes found have stopped inflating it
+  std::size_t measured_count = 0;
+  const auto threshold = [&] {
+    std::vector<double> sample;
+    for(std::size_t i = 0; i < n; ++i)
+      if(measured[i]) sample.push_back(height[i]);
+    measured_count = sample.size();
+    if(sample.empty()) return std::numeric_limits<double>::infinity();
+    const auto mid = sample.begin() + std::ptrdiff_t(sample.size() / 2);
+    std::nth_element(sample.begin(), mid, sample.end());
+    const double median = *mid;
+    for(double& x : sample) x = std::abs(x - median);
+    std::nth_element(sample.begin(), mid, sample.end());
+    return std::max(test.outlier * 1.4826 * *mid, test.least_height);
+  };
+  std::vector<char> moved(n, 0);
+  for(int round = 0; round < test.rounds; ++round)
+  {
+    measure();
+    const double least = threshold();
+    std::vector<int> spikes, mine, theirs;
+    for(std::size_t i = 0; i < n; ++i)
+    {
+      if(!measured[i] || !(std::abs(height[i]) >= least)) continue;
+      companions(i, mine);
+      bool alone = mine.empty();
+      if(mine.size() == 1)   // a pair of spikes: each the other's only companion
+      {
+        companions(std::size_t(mine[0]), theirs);
+        alone = theirs.size() == 1;
+      }
+      if(alone) spikes.push_back(int(i));
+    }
+    if(round == 0 && double(spikes.size()) < test.population * double(measured_count)) return 0;
+    if(spikes.empty()) break;
+    for(int i : spikes)
+    {
+      X.row(i).head(3) -= height[std::size_t(i)] * edge[std::size_t(i)] * vec3(&normal[3 * std::size_t(i)]).transpose();
+      moved[std::size_t(i)] = 1;
+    }
+  }
+  return std::size_t(std::count(moved.begin(), moved.end(), char(1)));
+}
+
+} // namespace internal
+} // namespace Anisotropic_fairing
+} // namespace CGAL
+
+#endif // CGAL_ANISOTROPIC_FAIRING_INTERNAL_FLOW_ISOLATED_SPIKES_H
