@@ -1,4 +1,4 @@
-// Impulsive noise (internal/flow/Isolated_spikes.h): isolated spikes are put back into the planes of their
+// Impulsive noise (internal/flow/Isolated_spikes.h): isolated spikes are put back at the centroids of their
 // rings before the default run estimates the noise, and only when they are a population.
 //
 // Truth: the unit sphere (an icosphere, every vertex on it) with a tenth of its vertices thrown off it by

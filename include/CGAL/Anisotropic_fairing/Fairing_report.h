@@ -137,7 +137,7 @@ struct Fairing_report
   bool automatic_parameters = false; ///< the time step, the stopping rule and (unless given) the tensor were chosen from the mesh (no time step was given)
   double noise_level = 0;         ///< the input's noise estimated from the mesh itself: deviation along the normal in units of the local mean edge length (robust)
   double noise_deviation = 0;     ///< the same in model units, \f$\sigma \approx\f$ `noise_level` \f$\times\f$ `mean_edge_length`
-  std::size_t removed_spikes = 0; ///< with automatic parameters: vertices that stood out of their ring alone, put back into its plane before the noise was estimated, when they were at least 2% of the vertices (impulsive noise; a clean mesh's tips and corners are far fewer); 0 otherwise
+  std::size_t removed_spikes = 0; ///< with automatic parameters: vertices that stood out of their ring alone, moved to its centroid before the noise was estimated, when they were at least 2% of the vertices (impulsive noise; a clean mesh's tips and corners are far fewer); 0 otherwise
   double noise_displacement = 0;  ///< how far the written surface moved off the input (as `Fairing_step::noise_displacement`), at the end
   double feature_threshold = 0;   ///< the anisotropic tensor's threshold \f$\lambda\f$ used, model units (1/length); 0 for the isotropic tensor
   double prefilter_time = 0;      ///< the anisotropic tensor's prefilter time \f$\varepsilon\f$ used, model units; 0 without prefilter

@@ -7,8 +7,8 @@
 // neighbourhood, not by its height: a crease or a corner stands out of its ring together with the
 // vertices along it, a spike alone (or with one other spike beside it). On clean meshes, features that
 // stand out alone (tips, cone points) are at most a few per thousand vertices, on quantised and scanned
-// ones up to 1.5%; impulsive noise makes them a population. So the spikes are put back into the plane
-// of their ring only when they are at least one vertex in fifty, and only those.
+// ones up to 2%; impulsive noise makes them a population. So the spikes are put back at the centroid of
+// their ring only when they are at least one vertex in fifty, and only those.
 
 #ifndef CGAL_ANISOTROPIC_FAIRING_INTERNAL_FLOW_ISOLATED_SPIKES_H
 #define CGAL_ANISOTROPIC_FAIRING_INTERNAL_FLOW_ISOLATED_SPIKES_H
@@ -39,13 +39,14 @@ struct Spike_test
 };
 
 /// The isolated spikes among the vertices with `usable[i]` (interior, free, a closed fan) of the real
-/// vertices X (first 3 columns) moved into the plane of their ring, through its centroid. Returns how
+/// vertices X (first 3 columns) moved to the centroid of their ring (not along the ring's normal: next
+/// to other spikes that normal is tilted, and the move would fold thin triangles of a scan). Returns how
 /// many vertices were moved (0: too few to be noise, X unchanged).
 inline std::size_t remove_isolated_spikes(const Triangle_topology& topo, const std::vector<bool>& usable, Control_matrix& X,
                                           const Spike_test& test = Spike_test())
 {
   const std::size_t n = std::size_t(X.rows());
-  std::vector<double> height(n), edge(n), normal(3 * n);
+  std::vector<double> height(n), centre(3 * n);
   std::vector<char> measured(n);
   // e_i = (x_i - c_i) . n_i / h_i: the height of vertex i over its ring (centroid c_i, normal n_i,
   // mean distance h_i to it)
@@ -71,8 +72,7 @@ inline std::size_t remove_isolated_spikes(const Triangle_topology& topo, const s
         }
         const double len = nrm.norm();
         if(!(len > 0) || !(h > 0) || !std::isfinite(len) || !std::isfinite(h)) continue;
-        vec3(&normal[3 * i]) = nrm / len;
-        edge[i] = h;
+        vec3(&centre[3 * i]) = c;
         height[i] = (x - c).dot(nrm / len) / h;
         measured[i] = 1;
       }
@@ -125,7 +125,7 @@ inline std::size_t remove_isolated_spikes(const Triangle_topology& topo, const s
     if(spikes.empty()) break;
     for(int i : spikes)
     {
-      X.row(i).head(3) -= height[std::size_t(i)] * edge[std::size_t(i)] * vec3(&normal[3 * std::size_t(i)]).transpose();
+      X.row(i).head(3) = vec3(&centre[3 * std::size_t(i)]).transpose();
       moved[std::size_t(i)] = 1;
     }
   }

@@ -288,7 +288,7 @@ Fairing_report fair(TriangleMesh& tm, VertexPointMap vpm, AttributeMap attribute
   const double mean_edge = edge_count > 0 ? edge_sum / edge_count : 0.0;
   std::vector<bool> sampled(n);
   for(std::size_t i = 0; i < n; ++i) sampled[i] = !constrained[i] && !border[i];
-  // impulsive noise: with the automatic stopping rule, isolated spikes go back into their rings' planes
+  // impulsive noise: with the automatic stopping rule, isolated spikes go back to their rings' centroids
   // before the noise is estimated (Isolated_spikes.h); a bound on the motion leaves them as they are
   const std::size_t removed_spikes = automatic && mode != Attribute_mode::ATTRIBUTES_ONLY && s.stopping.noise_discrepancy > 0 &&
                                      !(s.maximum_deviation > 0) ? remove_isolated_spikes(*layer.topology, sampled, X) : 0;
@@ -319,7 +319,7 @@ Fairing_report fair(TriangleMesh& tm, VertexPointMap vpm, AttributeMap attribute
     choices = text;
     if(removed_spikes > 0)
     {
-      std::snprintf(text, sizeof text, "; first %zu isolated spikes (%.2g%% of the vertices: impulsive noise) put back into the planes of "
+      std::snprintf(text, sizeof text, "; first %zu isolated spikes (%.2g%% of the vertices: impulsive noise) moved to the centroids of "
                     "their rings", removed_spikes, 100.0 * double(removed_spikes) / double(n));
       choices += text;
     }
