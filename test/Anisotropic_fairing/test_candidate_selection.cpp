@@ -8,8 +8,9 @@
 // the noise itself), and the anisotropic candidate is forced to stop early, as a run whose later steps
 // are rejected does: it moves a tenth of the way toward the sphere and reports STEP_REJECTED. Kept must be
 // the isotropic result, with the risks in `choices`; a candidate stopped by the callback is not compared.
-// Then the early candidate is made the truth itself: still not kept while another reached the noise level,
-// kept when none did.
+// Then the early candidate is made the truth itself: still not kept (nor estimated) while another reached
+// the noise level, kept when none did, its probe run then replaying its steps. The uniform stand-in carries
+// its probe along, as the uniform flow does; the others are probed by runs of their own.
 
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/Surface_mesh.h>
@@ -49,14 +50,15 @@ struct Stand_in_flows
 
   template <typename Tensor>
   AF::Fairing_report operator()(const char* name, const Tensor&, AFI::Control_matrix& Y, int, const AFI::Control_matrix& start,
-                                AFI::Control_matrix* control, std::size_t fixed_steps = 0)
+                                AFI::Control_matrix* control, std::size_t fixed_steps = 0, AFI::Control_matrix* probe = nullptr)
   {
-    calls.push_back(std::string(name) + (fixed_steps > 0 ? " (fixed)" : ""));
+    calls.push_back(std::string(name) + (fixed_steps > 0 ? " (fixed)" : "") + (probe ? " (probe along)" : ""));
     AF::Fairing_report r;
     r.steps.resize(3);
     if(std::is_same<Tensor, AF::Isotropic_diffusion_tensor>::value) { Y = toward_sphere(start, isotropic_weight); r.stop_reason = others_stop; }
-    else if(std::is_same<Tensor, AF::Uniform_diffusion_tensor>::value) { Y = start; r.stop_reason = others_stop; }
+    else if(std::is_same<Tensor, AF::Uniform_diffusion_tensor>::value) { Y = start; r.stop_reason = others_stop; }   // the probe stays
     else { Y = toward_sphere(start, anisotropic_weight); r.stop_reason = anisotropic_stop; }
+    if(probe && !std::is_same<Tensor, AF::Uniform_diffusion_tensor>::value) probe->resize(0, 0);   // only the uniform flow's rides along
     if(control) *control = Y;
     return r;
   }
@@ -116,12 +118,19 @@ int main()
     AF_CHECK(report.selected_tensor == "isotropic", std::string("the candidate that stopped early (") + AF::to_string(stop) +
                                                       ") is judged, not preferred: the isotropic result is kept");
     AF_CHECK(moved_to_sphere < 1e-12 && (control - X).norm() < 1e-12, "X and the control points are the kept candidate's");
-    AF_CHECK(choices.find("anisotropic") != std::string::npos && choices.find("stopped early") != std::string::npos,
+    AF_CHECK(choices.find(std::string("anisotropic not estimated (stopped early: ") + AF::to_string(stop) + ")") != std::string::npos,
              "choices names the candidate that stopped early");
-    // the early candidate's probe replays its steps (no stopping rule of its own), the others' stop as they do
-    bool replayed = false;
-    for(const std::string& c : flows.calls) replayed = replayed || c == "anisotropic flow on the probed input (fixed)";
-    AF_CHECK(replayed, "the early candidate's probe run takes the same steps");
+    // no probe run for a candidate that cannot be kept; the uniform probe rode along its run
+    bool probed_early = false, uniform_along = false, uniform_probe_run = false;
+    for(const std::string& c : flows.calls)
+    {
+      probed_early = probed_early || c.find("anisotropic flow on the probed input") == 0;
+      uniform_along = uniform_along || c == "uniform fourth-order flow (probe along)";
+      uniform_probe_run = uniform_probe_run || c.find("uniform fourth-order flow on the probed input") == 0;
+    }
+    AF_CHECK(!probed_early, "the early candidate is not probed while another reached the noise level");
+    AF_CHECK(uniform_along && !uniform_probe_run, "the uniform candidate's probe rides along its run");
+    AF_CHECK(choices.find("uniform fourth-order not") == std::string::npos, "and it is estimated: " + choices);
   }
 
   // judged, not preferred, however low its estimate: w = 1 (the truth) has the lowest estimate, below
@@ -137,7 +146,14 @@ int main()
                 chosen.report.selected_tensor.c_str(), chosen.choices.c_str());
     AF_CHECK(chosen.report.selected_tensor == m.kept, std::string("kept the ") + m.kept + " result");
     AF_CHECK(chosen.choices.find("(stopped early: step_rejected)") != std::string::npos &&
-             chosen.choices.find("anisotropic not compared") == std::string::npos, "its estimate is shown: " + chosen.choices);
+             chosen.choices.find("anisotropic not compared") == std::string::npos, "it is named: " + chosen.choices);
+    if(m.others == AF::Stop_reason::NOISE_LEVEL) continue;
+    // estimated, since none reached the noise level: its probe run replays its steps (no stopping rule of
+    // its own)
+    bool replayed = false;
+    for(const std::string& c : flows.calls) replayed = replayed || c == "anisotropic flow on the probed input (fixed)";
+    AF_CHECK(replayed, "the early candidate's probe run takes the same steps");
+    AF_CHECK(chosen.choices.find("anisotropic not estimated") == std::string::npos, "and its estimate is shown: " + chosen.choices);
   }
   return AF_test::report();
 }

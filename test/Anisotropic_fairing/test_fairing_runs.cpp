@@ -343,8 +343,10 @@ void automatic_solver(const std::string& data)
 // Conjugate gradients that stall give way to the factorisation early: on the path graph's Laplacian plus
 // a shift of 1e-4 (condition number about 4e4, so the factorisation's relative residual is near 1e-16 x
 // 4e4; Jacobi-preconditioned CG needs thousands of iterations),
-// AUTOMATIC stops iterating after ten times the trial threshold, factorises, and its answer solves the
-// system. The next matrix is iterated again; only after giving way twice in a row does it factorise.
+// AUTOMATIC stops iterating as soon as their rate says that ten times the trial threshold would not do,
+// factorises, and its answer solves the system. The next matrix is iterated again; only after giving way
+// twice in a row does it factorise, and a shorter step than the one that gave way is iterated again. A
+// system that CG solves within the limit (a larger shift) is not given up on.
 void automatic_solver_gives_way()
 {
   namespace I = CGAL::Anisotropic_fairing::internal;
@@ -365,6 +367,32 @@ void automatic_solver_gives_way()
   std::printf("CG alone on the shifted path Laplacian (n = %d): %d iterations\n", n, full.iterations);
   AF_CHECK(full.ok && full.iterations > 10 * AF::automatic_cholesky_trial_iterations,
            "the test matrix needs more CG iterations than AUTOMATIC allows before giving way");
+  const auto product = [&A](const I::Control_matrix& P, I::Control_matrix& AP) { I::symmetric_product(A, P, AP); };
+  const Eigen::VectorXd diagonal = A.diagonal();
+  I::Control_matrix Xrate = X;
+  const I::Solve_statistics rated = cg.solve(product, diagonal, B, Xrate, 10 * AF::automatic_cholesky_trial_iterations);
+  std::printf("CG with a limit of %d iterations: gave way after %d (%s)\n", 10 * AF::automatic_cholesky_trial_iterations,
+              rated.iterations, rated.message.c_str());
+  AF_CHECK(!rated.ok && rated.iterations < 10 * AF::automatic_cholesky_trial_iterations / 2,
+           "stalled iterations give way on their rate, well before the limit");
+  // a system within reach: the shift that makes CG need about half the limit
+  double shift = 1e-4;
+  I::Solve_statistics reach;
+  Eigen::SparseMatrix<double> S = A;
+  for(; shift < 1; shift *= 1.5)
+  {
+    for(int i = 0; i < n; ++i) S.coeffRef(i, i) = 2.0 + shift;
+    I::Control_matrix Xs = I::Control_matrix::Zero(n, 1);
+    reach = unlimited.solve(S, B, Xs);
+    if(reach.iterations <= 10 * AF::automatic_cholesky_trial_iterations / 2) break;
+  }
+  I::Control_matrix Xs = I::Control_matrix::Zero(n, 1);
+  const Eigen::VectorXd sdiag = S.diagonal();
+  const I::Solve_statistics within = cg.solve([&S](const I::Control_matrix& P, I::Control_matrix& AP) { I::symmetric_product(S, P, AP); },
+                                              sdiag, B, Xs, 10 * AF::automatic_cholesky_trial_iterations);
+  std::printf("shift %.3g: CG alone %d iterations, with the limit %d (ok %d)\n", shift, reach.iterations, within.iterations, int(within.ok));
+  AF_CHECK(reach.iterations > 2 * AF::automatic_cholesky_trial_iterations && within.ok && within.iterations == reach.iterations,
+           "a system CG solves within the limit is solved, not given up on");
 
   I::Solver_choice choice(AF::Linear_solver::AUTOMATIC, std::size_t(n));
   AF_CHECK(choice.fall_back_iterations() == 10 * AF::automatic_cholesky_trial_iterations,
@@ -383,6 +411,10 @@ void automatic_solver_gives_way()
   const I::Solve_statistics second = choice.solve(A, B, X, cg, direct);
   choice.record(direct, second, clock.time());
   AF_CHECK(second.ok && direct && choice.factorise_now(), "after giving way twice in a row, the run factorises");
+  choice.set_step_factor(1.0);
+  AF_CHECK(choice.factorise_now(), "a step as long as the one that gave way is factorised");
+  choice.set_step_factor(0.25);
+  AF_CHECK(!choice.factorise_now(), "a step retried shorter than the one that gave way is iterated again");
 }
 
 // The sparse_linear_solver named parameter (CGAL's SparseLinearAlgebraWithFactorTraits_d) replaces the

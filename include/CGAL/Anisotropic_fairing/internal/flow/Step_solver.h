@@ -103,6 +103,7 @@ public:
     CGAL::Real_timer clock;
     clock.start();
     // CG warm-started from the last dX
+    choice_.set_step_factor(factor);
     Fourth_order_system* q = fourth_order_.get();
     const Solve_statistics sol = !q ? choice_.solve(A_, B_, dX_, cg_, direct)
       : choice_.solve([q](const Control_matrix& P, Control_matrix& AP) { q->product(P, AP); }, q->diagonal(),

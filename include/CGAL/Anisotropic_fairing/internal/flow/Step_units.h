@@ -13,6 +13,7 @@
 #include <CGAL/Anisotropic_fairing/internal/assembly/Fem_assembly.h>
 #include <CGAL/Anisotropic_fairing/internal/mesh/Mesh_components.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstddef>
 #include <vector>
@@ -35,6 +36,16 @@ struct Step_units
   double time_step = 0, fidelity_weight = 0;   // of the largest component, for the report
   double relative_time_step = 0;    // tau / l^2 of the largest component
 };
+
+/// 1, or what the system of a step with f times the time step is divided by so that a huge time step
+/// cannot overflow its norms (the solution does not change), over the rows `free`.
+inline double system_scale(const Step_units& u, const std::vector<int>& free, double f, int order, double mean_edge)
+{
+  double largest = 0;
+  const double stiffness = std::pow(mean_edge, -order);
+  for(int i : free) largest = std::max(largest, f * u.tau[std::size_t(i)] * (u.omega[std::size_t(i)] + stiffness));
+  return largest > 1e6 ? largest : 1.0;
+}
 
 /// `time_step` in units of `time_unit`^order (the flow's order: 2 or 4), `fidelity` in 1/l^2 if relative; the tensor measured in
 /// `tensor_unit`. `edge[c]`: mean edge length of component c, `global_edge` of the whole mesh.

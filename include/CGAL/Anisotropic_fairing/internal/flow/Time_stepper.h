@@ -29,6 +29,7 @@
 #include <CGAL/Anisotropic_fairing/internal/flow/Local_time_scale.h>
 #include <CGAL/Anisotropic_fairing/internal/flow/Noise_estimate.h>
 #include <CGAL/Anisotropic_fairing/internal/flow/Normal_motion.h>
+#include <CGAL/Anisotropic_fairing/internal/flow/Ride_along_probe.h>
 #include <CGAL/Anisotropic_fairing/internal/flow/Step_safety.h>
 #include <CGAL/Anisotropic_fairing/internal/flow/Step_solver.h>
 #include <CGAL/Anisotropic_fairing/internal/flow/Step_units.h>
@@ -69,6 +70,11 @@ public:
   std::size_t number_of_free_vertices() const { return block_.size(); }
   /// Each step's displacement of the surface's columns then loses its tangential part (null: kept).
   void set_tangential_filter(const Tangential_motion_filter* f) { tangential_filter_ = f; }
+  /// The next run carries the probed start P along (Ride_along_probe.h), unless it holds a deviation bound.
+  void set_probe(const Control_matrix& P) { probe_.start(P); }
+  /// After a run: whether it carried a probe, and where the probe ended.
+  bool probed() const { return probe_.active(); }
+  const Control_matrix& probe_result() const { return probe_.result(); }
   Fem_assembler<Cache>& assembler() { return operator_.assembler(); }
   /// 1, or the fraction of the way from the input to the limit points of the result to write (a run
   /// that ended before its first step because the limit surface alone moved by more than the noise)
@@ -176,7 +182,11 @@ private:
     const double first_discrepancy = noise_stop ? std::max(discrepancy, s.noise->relative_displacement(Y, Z0, {}, true)) : 0.0;
 
     const Eigen::Index nfree = Eigen::Index(block_.size());
-    Step_solver solver(operator_.pattern(), block_, s, Z.cols(), fixed, bound.active() ? &fidelity : nullptr, &anchor);
+    // the probe rides along where the steps are linear in the positions: without the bound's own fidelities
+    if(fixed || bound.active()) probe_ = Ride_along_probe();
+    const Eigen::Index solved_columns = Z.cols() * (probe_.active() ? 2 : 1);
+    Step_solver solver(operator_.pattern(), block_, s, solved_columns, fixed, bound.active() ? &fidelity : nullptr, &anchor);
+    Control_matrix ZZ, ZZ0, dZ_run;
     Control_matrix Zc, Z_previous;
     // the last surface with no more folded edges than the input mesh (or its limit surface): what the
     // run falls back to if the surface it ends on has more
@@ -205,16 +215,19 @@ private:
       st.time_step = factor * report.time_step;
       // system and right-hand side at Z_n, divided by sys so that a huge tau cannot overflow
       clock.reset();
+      if(probe_.active()) probe_.augment(Z, Z0, ZZ, ZZ0);
       const Solve_statistics sol = solver.solve(operator_.M(), operator_.L(), units_, mass_weight, unknown_scale, factor,
-                                                system_scale(factor, s.order), Z, Z0, bound.weights(), st.direct_solve);
+                                                system_scale(units_, block_.free, factor, s.order, mean_edge_), probe_.active() ? ZZ : Z,
+                                                probe_.active() ? ZZ0 : Z0, bound.weights(), st.direct_solve);
       st.solve_seconds = solver.solve_seconds();
       st.assemble_seconds = assemble_seconds + clock.time() - st.solve_seconds;
       assemble_seconds = 0;
       report.used_cholesky = report.used_cholesky || st.direct_solve;
       st.solver_iterations = sol.iterations;
       st.residual = sol.residual;
-      const Control_matrix& dZ = solver.displacement();
-      const bool finite = dZ.allFinite() && std::isfinite(sol.residual);
+      if(probe_.active()) dZ_run = solver.displacement().leftCols(Z.cols());
+      const Control_matrix& dZ = probe_.active() ? dZ_run : solver.displacement();
+      const bool finite = solver.displacement().allFinite() && std::isfinite(sol.residual);
       if(!finite && fixed)
         return fail(report, Fairing_status::NON_FINITE_VALUE, "step " + std::to_string(step) + ": the solution is not finite", total);
       if(!sol.ok && finite) return fail(report, Fairing_status::SOLVER_FAILED, "step " + std::to_string(step) + ": " + sol.message, total);
@@ -223,13 +236,15 @@ private:
       Zc = Z;
       if(finite)
       {
+        const Control_matrix& tangent_surface = operator_.prefiltered() ? *operator_.prefiltered() : Z;
+        probe_.make_candidate(solver.displacement(), block_.free, tangential_filter_, tangent_surface, metric_columns);
         if(tangential_filter_)
         {
           // dZ itself stays the solution: the next step's CG starts from it. The tangent plane is that
           // of M_eps when the tensor reads its curvature there: on noise, the current surface's normal
           // is mostly noise, and removing motion in its tangent plane would keep the noise
           normal_dZ_ = dZ;
-          tangential_filter_->remove(operator_.prefiltered() ? *operator_.prefiltered() : Z, metric_columns, block_.free, normal_dZ_);
+          tangential_filter_->remove(tangent_surface, metric_columns, block_.free, normal_dZ_);
           move_free_rows(Zc, normal_dZ_, Z0, measured_columns, row_unit, st);
         }
         else move_free_rows(Zc, dZ, Z0, measured_columns, row_unit, st);
@@ -258,7 +273,7 @@ private:
           {
             // the surface the run ends on is the one judged, and it needs no matrices
             theta = std::min(1.0, std::max(0.0, (target - discrepancy) / (candidate_discrepancy - discrepancy)));
-            if(theta < 1) { Zc = Z + theta * (Zc - Z); output_positions(Zc, Y); }
+            if(theta < 1) { Zc = Z + theta * (Zc - Z); output_positions(Zc, Y); probe_.shorten(theta); }
             last_step = true;
           }
         }
@@ -337,8 +352,9 @@ private:
       rejections = 0;
       Z_previous.swap(Z);
       Z.swap(Zc);
+      probe_.accept();
       accepted = candidate;
-      if(!fixed && candidate.folded_edges <= allowed_folds) { Z_unfolded = Z; unfolded_steps = report.steps.size() + 1; }
+      if(!fixed && candidate.folded_edges <= allowed_folds) { Z_unfolded = Z; unfolded_steps = report.steps.size() + 1; probe_.mark_unfolded(); }
       lowest_H.add(candidate.statistics);
       time += st.time_step;
       st.time = time;
@@ -366,6 +382,7 @@ private:
         if(theta < 1)
         {
           Z = Z_previous + theta * (Z - Z_previous);
+          probe_.rewind(theta);
           const Assembly_statistics b = operator_.assemble(Z, metric_columns, tensor, false);
           st.area = b.area; st.energy = b.energy; st.H_integral = b.H_integral;
         }
@@ -425,6 +442,7 @@ private:
         return fail(report, Fairing_status::FOLDED, "the surface folded at " + std::to_string(folds) + " edges (the input at " +
                     std::to_string(allowed_folds) + ") from the first step on, even with smaller time steps", total);
       Z = Z_unfolded;
+      probe_.fall_back();
       report.steps.resize(unfolded_steps);
       report.stop_reason = Stop_reason::STEP_REJECTED;
       report.message = "the surface folded at " + std::to_string(folds) + " edges (the input at " + std::to_string(allowed_folds) +
@@ -449,16 +467,6 @@ private:
     a.first = fixed ? 0 : 3;
     if(s.attribute_maximum_deviation > 0 && Z.cols() > a.first) { a.count = Z.cols() - a.first; a.radius = s.attribute_maximum_deviation; }
     return Deviation_bound(g, a, std::size_t(Z.rows()), uniform);
-  }
-
-  // 1, or what the system of a step with f times the time step is divided by so that a huge time
-  // step cannot overflow its norms (the solution does not change)
-  double system_scale(double f, int order) const
-  {
-    double largest = 0;
-    const double stiffness = std::pow(mean_edge_, -order);
-    for(int i : block_.free) largest = std::max(largest, f * units_.tau[std::size_t(i)] * (units_.omega[std::size_t(i)] + stiffness));
-    return largest > 1e6 ? largest : 1.0;
   }
 
   // The units of every vertex from the input's area per component, the tensor told its length scale,
@@ -568,6 +576,7 @@ private:
   Surface_operator<Cache> operator_;
   Free_block block_;
   const Tangential_motion_filter* tangential_filter_ = nullptr;
+  Ride_along_probe probe_;
   Control_matrix normal_dZ_;
   const Ghost_layer& layer_;
   const Mesh_components& components_;

@@ -102,7 +102,7 @@ Fairing_report run_stepper(const Cache& cache, const Locality_ordering& ordering
                            const std::vector<double>& component_edge, double mean_edge, Control_matrix& X, Attribute_mode mode,
                            const std::vector<bool>& constrained, const std::vector<bool>& border,
                            const Tensor& tensor, const Stepper_settings& s, Callback& callback, double& setup_seconds,
-                           double& limit_weight)
+                           double& limit_weight, const Control_matrix* probe_start = nullptr, Control_matrix* probe_end = nullptr)
 {
   CGAL::Real_timer clock;
   clock.start();
@@ -119,10 +119,13 @@ Fairing_report run_stepper(const Cache& cache, const Locality_ordering& ordering
   stepper.assembler().exclude_from_curvature(&border);
   const int metric_columns = mode == Attribute_mode::COUPLED ? int(X.cols()) : 3;
   setup_seconds += clock.time();
+  if(probe_end) probe_end->resize(0, 0);
   if(mode == Attribute_mode::ATTRIBUTES_ONLY) return stepper.run_on_fixed_surface(X, tensor, settings, callback);
+  if(probe_start) stepper.set_probe(*probe_start);
   Fairing_report report = stepper.run(X, metric_columns, tensor, settings, callback);
   report.normal_motion_only = normal_motion;
   limit_weight = stepper.limit_weight();
+  if(probe_end) *probe_end = stepper.probed() ? stepper.probe_result() : Control_matrix();
   return report;
 }
 
@@ -352,7 +355,9 @@ Fairing_report fair(TriangleMesh& tm, VertexPointMap vpm, AttributeMap attribute
   // number_of_iterations bounds the steps of the whole call, the comparison's runs included; the
   // callback learns which run a step belongs to
   std::size_t steps_left = s.maximum_steps, run_number = 0;
-  const std::size_t planned_runs = select_tensor ? 6 : 1;
+  // (the three flows and two probe runs; the uniform flow's probe rides along, not under a deviation bound)
+  const bool bounded = s.maximum_deviation > 0 || s.attribute_maximum_deviation > 0;
+  const std::size_t planned_runs = select_tensor ? (bounded ? 6 : 5) : 1;
   std::string run_name;
   auto counted_callback = [&](const Fairing_step& step) {
     Fairing_step tagged = step;
@@ -379,21 +384,30 @@ Fairing_report fair(TriangleMesh& tm, VertexPointMap vpm, AttributeMap attribute
     Ghosted_patch_cache cache(layer, spec);
     boundary_held = hold(boundary_constrained_vertices(layer, cache, boundary == Boundary_handling::HOLD_BOUNDARY_CURVE));
     setup_seconds = setup.time();
+    // the written positions of control points Y of a run from `start`
+    const auto limit_written = [&](Control_matrix& Y, const Control_matrix& start, double limit_weight) {
+      const Control_matrix extended = layer.extend(Y);
+      for(std::size_t i = 0; i < n; ++i)
+        if(!isolated[i]) vertex_limit_value(*layer.topology, extended, int(i), Y.row(Eigen::Index(i)).data());
+      if(limit_weight < 1) Y.leftCols(3) = start.leftCols(3) + limit_weight * (Y.leftCols(3) - start.leftCols(3));
+    };
+    // `probe`: a probed start carried along (Ride_along_probe.h), replaced by the probe's written positions
+    // (empty when it could not ride along)
     auto run = [&](const char* name, const auto& t, Control_matrix& Y, int order, const Control_matrix& start, Control_matrix* control,
-                   std::size_t fixed_steps = 0) {
+                   std::size_t fixed_steps = 0, Control_matrix* probe = nullptr) {
       Y = start;
       double limit_weight = 1;
+      const Control_matrix probe_start = probe ? *probe : Control_matrix();
       Fairing_report r = run_stepper(cache, ordering, components, component_edge, mean_edge, Y, mode, constrained, border, t,
-                                     begin_run(name, order, fixed_steps), counted_callback, setup_seconds, limit_weight);
+                                     begin_run(name, order, fixed_steps), counted_callback, setup_seconds, limit_weight,
+                                     probe ? &probe_start : nullptr, probe);
       steps_left -= (std::min)(steps_left, r.steps.size());
       r.limit_weight = limit_weight;
       if(control) *control = Y;
       if(r.succeeded() && output == Output_positions::LIMIT_SURFACE)
       {
-        const Control_matrix extended = layer.extend(Y);
-        for(std::size_t i = 0; i < n; ++i)
-          if(!isolated[i]) vertex_limit_value(*layer.topology, extended, int(i), Y.row(Eigen::Index(i)).data());
-        if(limit_weight < 1) Y.leftCols(3) = start.leftCols(3) + limit_weight * (Y.leftCols(3) - start.leftCols(3));
+        limit_written(Y, start, limit_weight);
+        if(probe && probe->size() > 0) limit_written(*probe, probe_start, limit_weight);
       }
       bound_written(Y, start, r);
       if(control && output == Output_positions::CONTROL_POINTS) *control = Y;   // as written, within the bounds
@@ -409,11 +423,13 @@ Fairing_report fair(TriangleMesh& tm, VertexPointMap vpm, AttributeMap attribute
     boundary_held = hold(border);
     setup_seconds = setup.time();
     auto run = [&](const char* name, const auto& t, Control_matrix& Y, int order, const Control_matrix& start, Control_matrix* control,
-                   std::size_t fixed_steps = 0) {
+                   std::size_t fixed_steps = 0, Control_matrix* probe = nullptr) {
       Y = start;
       double limit_weight = 1;   // the linear element writes its control points: no limit surface to approach
+      const Control_matrix probe_start = probe ? *probe : Control_matrix();
       Fairing_report r = run_stepper(cache, ordering, components, component_edge, mean_edge, Y, mode, constrained, border, t,
-                                     begin_run(name, order, fixed_steps), counted_callback, setup_seconds, limit_weight);
+                                     begin_run(name, order, fixed_steps), counted_callback, setup_seconds, limit_weight,
+                                     probe ? &probe_start : nullptr, probe);
       steps_left -= (std::min)(steps_left, r.steps.size());
       bound_written(Y, start, r);
       if(control) *control = Y;

@@ -7,10 +7,16 @@
 // runs (its stopping rule is part of the estimator); one that ends short of it (its later steps rejected,
 // the budget spent, a steady state) is estimated at the state it reached: its probe run replays the
 // same number of steps with no stopping rule, since a probe that stopped elsewhere would measure the
-// stopping rule's jump instead of the flow. A candidate that stops early is judged, never preferred: its
-// estimate is shown, but it is kept only when no candidate reached the noise level. Its flow could not go
-// on without folding the surface (or ran out of steps), and on noise that is not Gaussian (quantised
-// coordinates) its estimate came out far below the others' while its error was three times theirs.
+// stopping rule's jump instead of the flow. A candidate that stops early is judged, never preferred: it
+// is kept only when no candidate reached the noise level, and only then is its estimate made. Its flow
+// could not go on without folding the surface (or ran out of steps), and on noise that is not Gaussian
+// (quantised coordinates) its estimate came out far below the others' while its error was three times theirs.
+// The uniform flow's stiffness depends on the connectivity alone, so its steps are linear in the data but
+// for the mass matrix: its probe rides along its run (Ride_along_probe.h), one solve with more columns
+// instead of a second run. The other two flows' operators follow the surface, and that dependence is
+// part of their divergence: carried along, their estimates came out lower than by a run of their own,
+// by 0.046 per vertex (median of 26 cases, up to 0.09: the anisotropic flow) and 0.010 (up to 0.04:
+// the isotropic), the uniform flow's within 0.022 of it (median 0.004), and no choice changed.
 
 #ifndef CGAL_ANISOTROPIC_FAIRING_INTERNAL_RUN_SMOOTHER_SELECTION_H
 #define CGAL_ANISOTROPIC_FAIRING_INTERNAL_RUN_SMOOTHER_SELECTION_H
@@ -37,10 +43,11 @@ inline bool ended_at_noise_level(const Fairing_report& r)
                            r.stop_reason == Stop_reason::DEVIATION_BOUND);
 }
 
-/// Runs the isotropic and the uniform fourth-order flow too (`run(name, tensor, Y, order, start, Z, steps)`
-/// runs from `start` and writes Y, and its control points in *Z unless null; `steps` > 0: exactly that
-/// many steps, no stopping rule) and keeps, in X, *control and `report`, the result whose estimated error
-/// is lowest, or the first that succeeded. `steps_left` is the call's step budget: a run it cannot pay
+/// Runs the isotropic and the uniform fourth-order flow too (`run(name, tensor, Y, order, start, Z, steps,
+/// probe)` runs from `start` and writes Y, and its control points in *Z unless null; `steps` > 0: exactly
+/// that many steps, no stopping rule; `probe` not null: carries that start along and replaces it by where
+/// it ends, written as Y is, or by nothing when it cannot ride along) and keeps, in X, *control and
+/// `report`, the result whose estimated error is lowest, or the first that succeeded. `steps_left` is the call's step budget: a run it cannot pay
 /// for is not made. `sigma`: the noise's deviation at each vertex (0 where there is none to estimate).
 /// Says which in `choices`. (The user's callback sees every run.)
 template <typename Run, typename Tensor>
@@ -69,7 +76,7 @@ void select_smoother(Run& run, const Tensor& tensor, const Ghost_layer& layer, c
   {
     const char* name; const char* label; const char* flow;
     Fairing_report report;
-    Control_matrix Y, Z;
+    Control_matrix Y, Z, probe;   // probe: the result of the probed input, when it rode along
     double risk = std::nan("");
   };
   std::vector<Candidate> c(3);
@@ -86,52 +93,58 @@ void select_smoother(Run& run, const Tensor& tensor, const Ghost_layer& layer, c
     return r;
   };
   const auto run_candidate = [&](std::size_t k, Control_matrix& Y, const Control_matrix& start, Control_matrix* Z, std::size_t steps,
-                                 const char* name) {
-    if(k == 0) return run(name, tensor, Y, c[0].report.flow_order, start, Z, steps);
-    if(k == 1) return run(name, Isotropic_diffusion_tensor(), Y, 2, start, Z, steps);
-    return run(name, Uniform_diffusion_tensor(), Y, 4, start, Z, steps);
+                                 const char* name, Control_matrix* probe = nullptr) {
+    if(k == 0) return run(name, tensor, Y, c[0].report.flow_order, start, Z, steps, probe);
+    if(k == 1) return run(name, Isotropic_diffusion_tensor(), Y, 2, start, Z, steps, probe);
+    return run(name, Uniform_diffusion_tensor(), Y, 4, start, Z, steps, probe);
   };
-  for(std::size_t k : {1, 2})
-    c[k].report = steps_left > 0 ? run_candidate(k, c[k].Y, input, control ? &c[k].Z : nullptr, 0, c[k].flow) : not_run();
+  c[1].report = steps_left > 0 ? run_candidate(1, c[1].Y, input, control ? &c[1].Z : nullptr, 0, c[1].flow) : not_run();
+  // the normals of the risk: the isotropic result's, or the first sound one's
+  const Candidate* base = c[1].report.succeeded() ? &c[1] : &c[0];
+  const Control_matrix N = vertex_normals(*layer.topology, layer.real_faces, base->report.succeeded() ? base->Y : input);
+  const std::vector<double> b = risk_probe_values(std::size_t(input.rows()));
+  const Control_matrix probed = probed_input(input, N, sigma, b);
+  c[2].probe = probed;
+  c[2].report = steps_left > 0 ? run_candidate(2, c[2].Y, input, control ? &c[2].Z : nullptr, 0, c[2].flow, &c[2].probe) : not_run();
   // judged: every candidate that ran to its end, whatever stopped it, but the user's callback
   const auto judged = [](const Fairing_report& r) { return r.succeeded() && r.stop_reason != Stop_reason::CALLBACK; };
-  // the normals of the risk: the isotropic result's, or the first sound one's
-  const Candidate* base = &c[1];
-  for(std::size_t k : {1, 0, 2})
-    if(c[k].report.succeeded()) { base = &c[k]; break; }
-  std::size_t kept = 3;   // none yet
-  if(base->report.succeeded())
+  // a candidate that stopped early is estimated only when none reached the noise level
+  bool any_at_noise = false;
+  for(const Candidate& x : c) any_at_noise = any_at_noise || (judged(x.report) && ended_at_noise_level(x.report));
+  for(std::size_t k = 0; k < c.size(); ++k)
   {
-    const Control_matrix N = vertex_normals(*layer.topology, layer.real_faces, base->Y);
-    const std::vector<double> b = risk_probe_values(std::size_t(input.rows()));
-    const Control_matrix probed = probed_input(input, N, sigma, b);
-    for(std::size_t k = 0; k < c.size(); ++k)
+    if(!judged(c[k].report)) continue;
+    const bool at_noise = ended_at_noise_level(c[k].report);
+    if(!at_noise && any_at_noise) continue;
+    if(c[k].probe.size() > 0)
     {
-      if(!judged(c[k].report) || steps_left == 0) continue;
-      // a candidate that ended short of the noise level: its probe takes exactly its steps
-      const bool at_noise = ended_at_noise_level(c[k].report);
-      const std::size_t replay = at_noise ? 0 : c[k].report.steps.size();
-      if(!at_noise && replay == 0) continue;   // it took no step: nothing to estimate
-      const std::string probe_name = std::string(c[k].flow) + " on the probed input";
-      Control_matrix Yp;
-      const Fairing_report rp = run_candidate(k, Yp, probed, nullptr, replay, probe_name.c_str());
-      if(!rp.succeeded() || (rp.stop_reason == Stop_reason::MAXIMUM_STEPS && steps_left == 0 && replay == 0)) continue;   // cut short by the budget
-      if(replay > 0 && rp.steps.size() != replay) continue;   // the probe could not take the same steps
-      double risk = 0;
-      for(double x : risk_terms(input, c[k].Y, Yp, N, sigma, b)) risk += x;
-      c[k].risk = risk;
+      c[k].risk = 0;
+      for(double x : risk_terms(input, c[k].Y, c[k].probe, N, sigma, b)) c[k].risk += x;
+      continue;
     }
-    // the lowest estimate among the runs that reached the noise level; among those that stopped early
-    // only when none reached it
-    const auto lowest = [&c](bool at_noise) {
-      std::size_t best = 3;
-      for(std::size_t k = 0; k < c.size(); ++k)
-        if(std::isfinite(c[k].risk) && ended_at_noise_level(c[k].report) == at_noise && (best == 3 || c[k].risk < c[best].risk)) best = k;
-      return best;
-    };
-    kept = lowest(true);
-    if(kept == 3) kept = lowest(false);
+    if(steps_left == 0) continue;
+    // a candidate that ended short of the noise level: its probe takes exactly its steps
+    const std::size_t replay = at_noise ? 0 : c[k].report.steps.size();
+    if(!at_noise && replay == 0) continue;   // it took no step: nothing to estimate
+    const std::string probe_name = std::string(c[k].flow) + " on the probed input";
+    Control_matrix Yp;
+    const Fairing_report rp = run_candidate(k, Yp, probed, nullptr, replay, probe_name.c_str());
+    if(!rp.succeeded() || (rp.stop_reason == Stop_reason::MAXIMUM_STEPS && steps_left == 0 && replay == 0)) continue;   // cut short by the budget
+    if(replay > 0 && rp.steps.size() != replay) continue;   // the probe could not take the same steps
+    double risk = 0;
+    for(double x : risk_terms(input, c[k].Y, Yp, N, sigma, b)) risk += x;
+    c[k].risk = risk;
   }
+  // the lowest estimate among the runs that reached the noise level; among those that stopped early
+  // only when none reached it
+  const auto lowest_of = [&c](bool at_noise) {
+    std::size_t best = 3;
+    for(std::size_t k = 0; k < c.size(); ++k)
+      if(std::isfinite(c[k].risk) && ended_at_noise_level(c[k].report) == at_noise && (best == 3 || c[k].risk < c[best].risk)) best = k;
+    return best;
+  };
+  std::size_t kept = lowest_of(true);
+  if(kept == 3) kept = lowest_of(false);
   if(kept < 3)
   {
     std::string list;
@@ -141,13 +154,16 @@ void select_smoother(Run& run, const Tensor& tensor, const Ghost_layer& layer, c
       if(std::isfinite(x.risk))
         std::snprintf(text, sizeof text, "%s %.4g%s", x.label, x.risk / double(input.rows()) - 1,
                       ended_at_noise_level(x.report) ? "" : (std::string(" (stopped early: ") + to_string(x.report.stop_reason) + ")").c_str());
+      else if(judged(x.report) && !ended_at_noise_level(x.report) && any_at_noise)
+        std::snprintf(text, sizeof text, "%s not estimated (stopped early: %s)", x.label, to_string(x.report.stop_reason));
       else
         std::snprintf(text, sizeof text, "%s not compared (%s)", x.label,
                       x.report.succeeded() ? to_string(x.report.stop_reason) : to_string(x.report.status));
       list += (list.empty() ? "" : ", ") + std::string(text);
     }
     bool lowest = true;
-    for(const Candidate& x : c) lowest = lowest && !(x.risk < c[kept].risk);
+    for(const Candidate& x : c)
+      lowest = lowest && !(x.risk < c[kept].risk) && !(judged(x.report) && !ended_at_noise_level(x.report) && any_at_noise);
     choices += std::string("; kept the ") + c[kept].name +
                (lowest ? " result, whose estimated error is the lowest" : " result, whose estimated error is the lowest of the runs that "
                 "reached the noise level; a run that stopped early is not preferred to them") +

@@ -40,6 +40,14 @@ public:
   {}
 
   bool factorise_now() const { return mode_ != ITERATE; }
+  /// The next solve is of a step of `f` times the time step. One shorter than a step whose iterations
+  /// gave way is iterated again: its mass matrix weighs more (a step retried after a rejection), and
+  /// iterations that stall give way after a hundred or so (Block_conjugate_gradient's rate test).
+  void set_step_factor(double f)
+  {
+    if(automatic_ && mode_ == FACTORISE && f < gave_way_factor_) { mode_ = ITERATE; failures_in_a_row_ = 0; }
+    factor_ = f;
+  }
   /// A constant matrix changed (a vertex's fidelity was raised): a kept factorisation is redone.
   void matrix_changed() { if(direct_) direct_->matrix_changed(); }
   bool may_fall_back() const { return automatic_ && may_factorise_; }
@@ -84,6 +92,7 @@ public:
     if(!sol.ok && may_fall_back())
     {
       failed_iterate_seconds_ = clock.time();
+      gave_way_factor_ = factor_;
       if(sol.iterations > 0) seconds_per_iteration_ = failed_iterate_seconds_ / sol.iterations;
       X = start_;
       direct = true;
@@ -140,6 +149,7 @@ private:
   Mode mode_;
   bool constant_;
   bool tried_ = false;
+  double factor_ = 1, gave_way_factor_ = 0;   // of the step solved, and of the last whose iterations gave way
   double predicted_iterate_seconds_ = 0, factorised_seconds_ = HUGE_VAL, seconds_per_iteration_ = 0, failed_iterate_seconds_ = 0;
   int previous_iterations_ = 0, failures_in_a_row_ = 0;
   Direct_solver_factory make_direct_;

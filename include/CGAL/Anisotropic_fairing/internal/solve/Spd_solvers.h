@@ -10,6 +10,7 @@
 #ifndef CGAL_ANISOTROPIC_FAIRING_INTERNAL_SOLVE_SPD_SOLVERS_H
 #define CGAL_ANISOTROPIC_FAIRING_INTERNAL_SOLVE_SPD_SOLVERS_H
 
+#include <CGAL/Anisotropic_fairing/Fairing_settings.h>
 #include <CGAL/Anisotropic_fairing/internal/types/Control_matrix.h>
 #include <CGAL/Anisotropic_fairing/internal/types/Parallel_blocks.h>
 #include <Eigen/Core>
@@ -113,15 +114,19 @@ public:
   }
 
   /// The same for a matrix given by its product, `product(P, AP)` setting AP = A P, and its diagonal;
-  /// `iteration_limit` > 0: at most that many iterations in this solve (below the constructor's maximum).
+  /// `iteration_limit` > 0: at most that many iterations in this solve (below the constructor's maximum),
+  /// and fewer when the rate of convergence so far says that the limit would not be enough (something
+  /// faster stands by: a factorisation).
   template <typename Product>
   Solve_statistics solve(const Product& product, const Eigen::VectorXd& diagonal, const Control_matrix& B, Control_matrix& X,
                          int iteration_limit)
   {
     const int kept = max_iterations_;
     if(iteration_limit > 0) max_iterations_ = std::min(max_iterations_, iteration_limit);
+    give_up_on_rate_ = iteration_limit > 0;
     Solve_statistics st = solve(product, diagonal, B, X);
     max_iterations_ = kept;
+    give_up_on_rate_ = false;
     return st;
   }
 
@@ -159,6 +164,14 @@ public:
     auto converged = [&](Eigen::Index c) {
       return rnorm[std::size_t(c)] <= tolerance_ * bnorm[std::size_t(c)] || rnorm[std::size_t(c)] == 0;
     };
+    const std::vector<double> rnorm0 = rnorm;
+    // the iterations a column needs at its mean rate so far (from trial_iterations on: CG's first
+    // iterations are not its pace; its later ones are faster if anything, so this errs toward giving way)
+    auto predicted = [&](Eigen::Index c, int done) {
+      const std::size_t cc = std::size_t(c);
+      const double reached = rnorm[cc] / rnorm0[cc], wanted = tolerance_ * bnorm[cc] / rnorm0[cc];
+      return reached < 1 ? done * std::log(wanted) / std::log(reached) : HUGE_VAL;
+    };
     int it = 0;
     for(;;)
     {
@@ -172,6 +185,17 @@ public:
         st.ok = false;
         st.message = "conjugate gradients did not converge in " + std::to_string(max_iterations_) + " iterations";
         break;
+      }
+      if(give_up_on_rate_ && it >= automatic_cholesky_trial_iterations && it % 25 == 0)
+      {
+        bool slow = false;
+        for(Eigen::Index c = 0; c < k; ++c) slow = slow || (active[std::size_t(c)] && predicted(c, it) > max_iterations_);
+        if(slow)
+        {
+          st.ok = false;
+          st.message = "conjugate gradients would not converge in " + std::to_string(max_iterations_) + " iterations at their rate";
+          break;
+        }
       }
       ++it;
       product(P_, AP_);
@@ -270,6 +294,7 @@ private:
 
   double tolerance_;
   int max_iterations_;
+  bool give_up_on_rate_ = false;
   Control_matrix R_, P_, AP_;
   std::vector<double> alpha_, beta_, pap_, sums_, partial_;
 };
