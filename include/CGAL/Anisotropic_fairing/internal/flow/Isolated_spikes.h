@@ -13,6 +13,7 @@
 #ifndef CGAL_ANISOTROPIC_FAIRING_INTERNAL_FLOW_ISOLATED_SPIKES_H
 #define CGAL_ANISOTROPIC_FAIRING_INTERNAL_FLOW_ISOLATED_SPIKES_H
 
+#include <CGAL/Anisotropic_fairing/internal/flow/Ring_plane.h>
 #include <CGAL/Anisotropic_fairing/internal/mesh/Triangle_topology.h>
 #include <CGAL/Anisotropic_fairing/internal/types/Control_matrix.h>
 #include <CGAL/Anisotropic_fairing/internal/types/Parallel_blocks.h>
@@ -48,32 +49,21 @@ inline std::size_t remove_isolated_spikes(const Triangle_topology& topo, const s
   const std::size_t n = std::size_t(X.rows());
   std::vector<double> height(n), centre(3 * n);
   std::vector<char> measured(n);
-  // e_i = (x_i - c_i) . n_i / h_i: the height of vertex i over its ring (centroid c_i, normal n_i,
-  // mean distance h_i to it)
+  // e_i = (x_i - c_i) . n_i / h_i: the height of vertex i over its ring's plane (Ring_plane.h) in units
+  // of its mean distance to the ring
   const auto measure = [&] {
     parallel_blocks(n, [&](std::size_t first, std::size_t last) {
       std::vector<int> ring;
+      Ring_plane r;
       for(std::size_t i = first; i < last; ++i)
       {
         measured[i] = 0;
         if(!usable[i] || topo.outgoing(int(i)) < 0) continue;
-        ring.clear();
-        topo.neighbours_ccw(topo.outgoing(int(i)), std::back_inserter(ring));
-        if(std::any_of(ring.begin(), ring.end(), [n](int j) { return std::size_t(j) >= n; })) continue;
-        Eigen::Vector3d c = Eigen::Vector3d::Zero(), nrm = Eigen::Vector3d::Zero();
-        const Eigen::Vector3d x = X.row(Eigen::Index(i)).head(3).transpose();
-        for(int j : ring) c += X.row(j).head(3).transpose() / double(ring.size());
-        double h = 0;
-        for(std::size_t k = 0; k < ring.size(); ++k)
-        {
-          const Eigen::Vector3d u = X.row(ring[k]).head(3).transpose() - c, w = X.row(ring[(k + 1) % ring.size()]).head(3).transpose() - c;
-          nrm += u.cross(w);
-          h += (X.row(ring[k]).head(3).transpose() - x).norm() / double(ring.size());
-        }
-        const double len = nrm.norm();
-        if(!(len > 0) || !(h > 0) || !std::isfinite(len) || !std::isfinite(h)) continue;
-        vec3(&centre[3 * i]) = c;
-        height[i] = (x - c).dot(nrm / len) / h;
+        read_ring(topo, i, ring);
+        if(std::any_of(ring.begin(), ring.end(), [n](int j) { return std::size_t(j) >= n; }) || !measure_ring_plane(X, i, ring, r))
+          continue;
+        for(int a = 0; a < 3; ++a) centre[3 * i + std::size_t(a)] = r.centre[a];
+        height[i] = r.height / r.spacing;
         measured[i] = 1;
       }
     });
@@ -82,7 +72,7 @@ inline std::size_t remove_isolated_spikes(const Triangle_topology& topo, const s
   const auto companions = [&](std::size_t i, std::vector<int>& out) {
     out.clear();
     std::vector<int> ring;
-    topo.neighbours_ccw(topo.outgoing(int(i)), std::back_inserter(ring));
+    read_ring(topo, i, ring);
     for(int j : ring)
       if(measured[std::size_t(j)] && height[std::size_t(j)] * height[i] > 0 && std::abs(height[std::size_t(j)]) > 0.5 * std::abs(height[i]))
         out.push_back(j);

@@ -17,6 +17,7 @@
 #ifndef CGAL_ANISOTROPIC_FAIRING_INTERNAL_FLOW_NOISE_ESTIMATE_H
 #define CGAL_ANISOTROPIC_FAIRING_INTERNAL_FLOW_NOISE_ESTIMATE_H
 
+#include <CGAL/Anisotropic_fairing/internal/flow/Ring_plane.h>
 #include <CGAL/Anisotropic_fairing/internal/types/Control_matrix.h>
 #include <CGAL/Anisotropic_fairing/internal/types/Parallel_blocks.h>
 #include <CGAL/Anisotropic_fairing/internal/types/Vector3.h>
@@ -57,28 +58,15 @@ public:
     // each vertex on its own (in blocks on every core): its ring's normal, edge length and its height
     parallel_blocks(n, [&](std::size_t first, std::size_t last) {
       std::vector<int> ring;
+      Ring_plane r;
       for(std::size_t i = first; i < last; ++i)
       {
         if(!usable[i] || topo.outgoing(int(i)) < 0) continue;
-        ring.clear();
-        topo.neighbours_ccw(topo.outgoing(int(i)), std::back_inserter(ring));
-        double c[3] = { 0, 0, 0 }, nrm[3] = { 0, 0, 0 }, h = 0;
-        for(int j : ring)
-          for(int a = 0; a < 3; ++a) c[a] += X(j, a) / double(ring.size());
-        for(std::size_t k = 0; k < ring.size(); ++k)
-        {
-          const int p = ring[k], q = ring[(k + 1) % ring.size()];
-          const double u[3] = { X(p, 0) - c[0], X(p, 1) - c[1], X(p, 2) - c[2] };
-          const double w[3] = { X(q, 0) - c[0], X(q, 1) - c[1], X(q, 2) - c[2] };
-          vec3(nrm) += vec3(u).cross(vec3(w));
-          h += (X.row(p).head(3) - X.row(Eigen::Index(i)).head(3)).norm();
-        }
-        const double len = vec3(nrm).norm();
-        h /= double(ring.size());
-        if(!(len > 0) || !(h > 0) || !std::isfinite(len)) continue;
-        for(int a = 0; a < 3; ++a) normal_[3 * i + std::size_t(a)] = nrm[a] / len;
-        edge_[i] = h;
-        for(int a = 0; a < 3; ++a) height[i] += (X(Eigen::Index(i), a) - c[a]) * normal_[3 * i + std::size_t(a)];
+        read_ring(topo, i, ring);
+        if(!measure_ring_plane(X, i, ring, r)) continue;
+        for(int a = 0; a < 3; ++a) normal_[3 * i + std::size_t(a)] = r.normal[a];
+        edge_[i] = r.spacing;
+        height[i] = r.height;
         has_height_[i] = 1;
       }
     });
@@ -91,8 +79,7 @@ public:
       for(std::size_t i = first; i < last; ++i)
       {
         if(!has_height_[i]) continue;
-        ring.clear();
-        topo.neighbours_ccw(topo.outgoing(int(i)), std::back_inserter(ring));
+        read_ring(topo, i, ring);
         bool complete = true;
         for(int j : ring) complete = complete && has_height_[std::size_t(j)];
         if(!complete) continue;
