@@ -42,6 +42,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <functional>
 #include <iostream>
 #include <string>
 #include <vector>
@@ -67,13 +68,13 @@ public:
     operator_.assembler().set_curvature_bounds(&curvature_bound_);
   }
 
-  std::size_t number_of_free_vertices() const { return block_.size(); }
   /// Each step's displacement of the surface's columns then loses its tangential part (null: kept).
   void set_tangential_filter(const Tangential_motion_filter* f) { tangential_filter_ = f; }
   /// The next run carries the probed start P along (Ride_along_probe.h), unless it holds a deviation bound.
   void set_probe(const Control_matrix& P) { probe_.start(P); }
-  /// After a run: whether it carried a probe, and where the probe ended.
-  bool probed() const { return probe_.active(); }
+  /// Or makes it, P = make(M_eps), once the run has its start's prefiltered surface (else its start).
+  void set_probe_maker(std::function<Control_matrix(const Control_matrix&)> make) { probe_maker_ = std::move(make); }
+  /// After a run: where its probe ended (empty: it carried none).
   const Control_matrix& probe_result() const { return probe_.result(); }
   Fem_assembler<Cache>& assembler() { return operator_.assembler(); }
   /// 1, or the fraction of the way from the input to the limit points of the result to write (a run
@@ -183,6 +184,7 @@ private:
 
     const Eigen::Index nfree = Eigen::Index(block_.size());
     // the probe rides along where the steps are linear in the positions: without the bound's own fidelities
+    if(probe_maker_ && !fixed && !bound.active()) probe_.start(probe_maker_(operator_.prefiltered() ? *operator_.prefiltered() : Z0));
     if(fixed || bound.active()) probe_ = Ride_along_probe();
     const Eigen::Index solved_columns = Z.cols() * (probe_.active() ? 2 : 1);
     Step_solver solver(operator_.pattern(), block_, s, solved_columns, fixed, bound.active() ? &fidelity : nullptr, &anchor);
@@ -577,6 +579,7 @@ private:
   Free_block block_;
   const Tangential_motion_filter* tangential_filter_ = nullptr;
   Ride_along_probe probe_;
+  std::function<Control_matrix(const Control_matrix&)> probe_maker_;
   Control_matrix normal_dZ_;
   const Ghost_layer& layer_;
   const Mesh_components& components_;

@@ -40,6 +40,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <functional>
 #include <limits>
 #include <string>
 #include <type_traits>
@@ -102,7 +103,8 @@ Fairing_report run_stepper(const Cache& cache, const Locality_ordering& ordering
                            const std::vector<double>& component_edge, double mean_edge, Control_matrix& X, Attribute_mode mode,
                            const std::vector<bool>& constrained, const std::vector<bool>& border,
                            const Tensor& tensor, const Stepper_settings& s, Callback& callback, double& setup_seconds,
-                           double& limit_weight, const Control_matrix* probe_start = nullptr, Control_matrix* probe_end = nullptr)
+                           double& limit_weight, const Control_matrix* probe_start = nullptr, Control_matrix* probe_end = nullptr,
+                           const std::function<Control_matrix(const Control_matrix&)>* probe_maker = nullptr)
 {
   CGAL::Real_timer clock;
   clock.start();
@@ -122,10 +124,11 @@ Fairing_report run_stepper(const Cache& cache, const Locality_ordering& ordering
   if(probe_end) probe_end->resize(0, 0);
   if(mode == Attribute_mode::ATTRIBUTES_ONLY) return stepper.run_on_fixed_surface(X, tensor, settings, callback);
   if(probe_start) stepper.set_probe(*probe_start);
+  if(probe_maker) stepper.set_probe_maker(*probe_maker);
   Fairing_report report = stepper.run(X, metric_columns, tensor, settings, callback);
   report.normal_motion_only = normal_motion;
   limit_weight = stepper.limit_weight();
-  if(probe_end) *probe_end = stepper.probed() ? stepper.probe_result() : Control_matrix();
+  if(probe_end) *probe_end = stepper.probe_result();
   return report;
 }
 
@@ -379,6 +382,14 @@ Fairing_report fair(TriangleMesh& tm, VertexPointMap vpm, AttributeMap attribute
     }
     return settings;
   };
+  // the risk estimate's normals (Tensor_selection.h): those of the input's prefiltered surface, which the
+  // first run makes before its first step, so that every candidate's probe can ride along from the start
+  Control_matrix estimate_normals, made_probe;
+  const std::function<Control_matrix(const Control_matrix&)> make_probe = [&](const Control_matrix& surface) {
+    estimate_normals = vertex_normals(*layer.topology, layer.real_faces, surface);
+    made_probe = probed_input(input, estimate_normals, noise_sigma, risk_probe_values(n));
+    return made_probe;
+  };
   if(element == Finite_element::LOOP)
   {
     Ghosted_patch_cache cache(layer, spec);
@@ -391,16 +402,18 @@ Fairing_report fair(TriangleMesh& tm, VertexPointMap vpm, AttributeMap attribute
         if(!isolated[i]) vertex_limit_value(*layer.topology, extended, int(i), Y.row(Eigen::Index(i)).data());
       if(limit_weight < 1) Y.leftCols(3) = start.leftCols(3) + limit_weight * (Y.leftCols(3) - start.leftCols(3));
     };
-    // `probe`: a probed start carried along (Ride_along_probe.h), replaced by the probe's written positions
-    // (empty when it could not ride along)
+    // `probe`: a probed start carried along (Ride_along_probe.h; empty: made by make_probe), replaced by the
+    // probe's written positions (empty when it could not ride along)
     auto run = [&](const char* name, const auto& t, Control_matrix& Y, int order, const Control_matrix& start, Control_matrix* control,
                    std::size_t fixed_steps = 0, Control_matrix* probe = nullptr) {
       Y = start;
       double limit_weight = 1;
-      const Control_matrix probe_start = probe ? *probe : Control_matrix();
+      const bool make = probe && probe->size() == 0;
+      Control_matrix probe_start = probe && !make ? *probe : Control_matrix();
       Fairing_report r = run_stepper(cache, ordering, components, component_edge, mean_edge, Y, mode, constrained, border, t,
                                      begin_run(name, order, fixed_steps), counted_callback, setup_seconds, limit_weight,
-                                     probe ? &probe_start : nullptr, probe);
+                                     probe && !make ? &probe_start : nullptr, probe, make ? &make_probe : nullptr);
+      if(make) probe_start = made_probe;
       steps_left -= (std::min)(steps_left, r.steps.size());
       r.limit_weight = limit_weight;
       if(control) *control = Y;
@@ -413,9 +426,12 @@ Fairing_report fair(TriangleMesh& tm, VertexPointMap vpm, AttributeMap attribute
       if(control && output == Output_positions::CONTROL_POINTS) *control = Y;   // as written, within the bounds
       return r;
     };
-    report = run(select_tensor ? "anisotropic flow" : "", tensor, X, s.order, input, wants_control ? &control_points : nullptr);
+    Control_matrix anisotropic_probe;   // empty: made by the run itself (make_probe)
+    report = run(select_tensor ? "anisotropic flow" : "", tensor, X, s.order, input, wants_control ? &control_points : nullptr, 0,
+                 select_tensor ? &anisotropic_probe : nullptr);
     if(select_tensor)
-      select_smoother(run, tensor, layer, input, noise_sigma, X, wants_control ? &control_points : nullptr, report, choices, steps_left);
+      select_smoother(run, tensor, layer, input, noise_sigma, X, wants_control ? &control_points : nullptr, report, choices, steps_left,
+                      estimate_normals, anisotropic_probe);
   }
   else
   {
@@ -426,18 +442,22 @@ Fairing_report fair(TriangleMesh& tm, VertexPointMap vpm, AttributeMap attribute
                    std::size_t fixed_steps = 0, Control_matrix* probe = nullptr) {
       Y = start;
       double limit_weight = 1;   // the linear element writes its control points: no limit surface to approach
-      const Control_matrix probe_start = probe ? *probe : Control_matrix();
+      const bool make = probe && probe->size() == 0;
+      const Control_matrix probe_start = probe && !make ? *probe : Control_matrix();
       Fairing_report r = run_stepper(cache, ordering, components, component_edge, mean_edge, Y, mode, constrained, border, t,
                                      begin_run(name, order, fixed_steps), counted_callback, setup_seconds, limit_weight,
-                                     probe ? &probe_start : nullptr, probe);
+                                     probe && !make ? &probe_start : nullptr, probe, make ? &make_probe : nullptr);
       steps_left -= (std::min)(steps_left, r.steps.size());
       bound_written(Y, start, r);
       if(control) *control = Y;
       return r;
     };
-    report = run(select_tensor ? "anisotropic flow" : "", tensor, X, s.order, input, wants_control ? &control_points : nullptr);
+    Control_matrix anisotropic_probe;   // empty: made by the run itself (make_probe)
+    report = run(select_tensor ? "anisotropic flow" : "", tensor, X, s.order, input, wants_control ? &control_points : nullptr, 0,
+                 select_tensor ? &anisotropic_probe : nullptr);
     if(select_tensor)
-      select_smoother(run, tensor, layer, input, noise_sigma, X, wants_control ? &control_points : nullptr, report, choices, steps_left);
+      select_smoother(run, tensor, layer, input, noise_sigma, X, wants_control ? &control_points : nullptr, report, choices, steps_left,
+                      estimate_normals, anisotropic_probe);
   }
   if(mode == Attribute_mode::COUPLED && A.cols() > 0) X.rightCols(A.cols()) /= attribute_weight;
   if(mode == Attribute_mode::COUPLED && A.cols() > 0 && report.status == Fairing_status::DEGENERATE_METRIC)

@@ -11,12 +11,15 @@
 // is kept only when no candidate reached the noise level, and only then is its estimate made. Its flow
 // could not go on without folding the surface (or ran out of steps), and on noise that is not Gaussian
 // (quantised coordinates) its estimate came out far below the others' while its error was three times theirs.
-// The uniform flow's stiffness depends on the connectivity alone, so its steps are linear in the data but
-// for the mass matrix: its probe rides along its run (Ride_along_probe.h), one solve with more columns
-// instead of a second run. The other two flows' operators follow the surface, and that dependence is
-// part of their divergence: carried along, their estimates came out lower than by a run of their own,
-// by 0.046 per vertex (median of 26 cases, up to 0.09: the anisotropic flow) and 0.010 (up to 0.04:
-// the isotropic), the uniform flow's within 0.022 of it (median 0.004), and no choice changed.
+// Every probe rides along its candidate's run (Ride_along_probe.h), one solve with more columns instead
+// of a second run, once the normals are known: the anisotropic run makes them first, from its input's
+// prefiltered surface. The uniform flow's stiffness depends on the connectivity alone, so its steps are
+// linear in the data but for the mass matrix, and its carried estimate is its estimate (within 0.022 per
+// vertex of a run of its own on 26 cases, median 0.004, no choice changed). The other two flows' operators
+// follow the surface, and that dependence is part of their divergence: carried along, their estimates
+// came out lower than by a run of their own, by 0.046 per vertex (median, up to 0.09: the anisotropic
+// flow) and 0.010 (up to 0.04: the isotropic). So they are run again on the probed input only when their
+// carried estimate is below the lowest estimate so far.
 
 #ifndef CGAL_ANISOTROPIC_FAIRING_INTERNAL_RUN_SMOOTHER_SELECTION_H
 #define CGAL_ANISOTROPIC_FAIRING_INTERNAL_RUN_SMOOTHER_SELECTION_H
@@ -47,13 +50,16 @@ inline bool ended_at_noise_level(const Fairing_report& r)
 /// probe)` runs from `start` and writes Y, and its control points in *Z unless null; `steps` > 0: exactly
 /// that many steps, no stopping rule; `probe` not null: carries that start along and replaces it by where
 /// it ends, written as Y is, or by nothing when it cannot ride along) and keeps, in X, *control and
-/// `report`, the result whose estimated error is lowest, or the first that succeeded. `steps_left` is the call's step budget: a run it cannot pay
-/// for is not made. `sigma`: the noise's deviation at each vertex (0 where there is none to estimate).
+/// `report`, the result whose estimated error is lowest, or the first that succeeded. `steps_left` is the
+/// call's step budget: a run it cannot pay for is not made. `sigma`: the noise's deviation at each vertex
+/// (0 where there is none to estimate). `normals`: those the estimate measures along, when the anisotropic
+/// run made them (empty: the isotropic result's), and `anisotropic_probe` the probe it carried along them.
 /// Says which in `choices`. (The user's callback sees every run.)
 template <typename Run, typename Tensor>
 void select_smoother(Run& run, const Tensor& tensor, const Ghost_layer& layer, const Control_matrix& input,
                      const std::vector<double>& sigma, Control_matrix& X, Control_matrix* control, Fairing_report& report,
-                     std::string& choices, const std::size_t& steps_left)
+                     std::string& choices, const std::size_t& steps_left, const Control_matrix& normals = Control_matrix(),
+                     const Control_matrix& anisotropic_probe = Control_matrix())
 {
   report.selected_tensor = "anisotropic";
   if(report.succeeded() && report.stop_reason == Stop_reason::CALLBACK)
@@ -77,10 +83,11 @@ void select_smoother(Run& run, const Tensor& tensor, const Ghost_layer& layer, c
     const char* name; const char* label; const char* flow;
     Fairing_report report;
     Control_matrix Y, Z, probe;   // probe: the result of the probed input, when it rode along
-    double risk = std::nan("");
+    double risk = std::nan(""), carried = std::nan("");   // the estimate, and the one its probe carried along gave
   };
   std::vector<Candidate> c(3);
   c[0].name = c[0].label = "anisotropic"; c[0].flow = "anisotropic flow"; c[0].report = report; c[0].Y = X;
+  c[0].probe = anisotropic_probe;
   if(control) c[0].Z = *control;
   c[1].name = c[1].label = "isotropic"; c[1].flow = "isotropic flow";
   c[2].name = "uniform"; c[2].label = "uniform fourth-order"; c[2].flow = "uniform fourth-order flow";
@@ -98,11 +105,15 @@ void select_smoother(Run& run, const Tensor& tensor, const Ghost_layer& layer, c
     if(k == 1) return run(name, Isotropic_diffusion_tensor(), Y, 2, start, Z, steps, probe);
     return run(name, Uniform_diffusion_tensor(), Y, 4, start, Z, steps, probe);
   };
-  c[1].report = steps_left > 0 ? run_candidate(1, c[1].Y, input, control ? &c[1].Z : nullptr, 0, c[1].flow) : not_run();
-  // the normals of the risk: the isotropic result's, or the first sound one's
-  const Candidate* base = c[1].report.succeeded() ? &c[1] : &c[0];
-  const Control_matrix N = vertex_normals(*layer.topology, layer.real_faces, base->report.succeeded() ? base->Y : input);
+  // the normals of the risk: the anisotropic run's (its prefiltered input's), else the isotropic result's,
+  // or the first sound one's
   const std::vector<double> b = risk_probe_values(std::size_t(input.rows()));
+  const bool known = normals.size() > 0;
+  if(known) c[1].probe = probed_input(input, normals, sigma, b);
+  c[1].report = steps_left > 0 ? run_candidate(1, c[1].Y, input, control ? &c[1].Z : nullptr, 0, c[1].flow, known ? &c[1].probe : nullptr)
+                               : not_run();
+  const Candidate* base = c[1].report.succeeded() ? &c[1] : &c[0];
+  const Control_matrix N = known ? normals : vertex_normals(*layer.topology, layer.real_faces, base->report.succeeded() ? base->Y : input);
   const Control_matrix probed = probed_input(input, N, sigma, b);
   c[2].probe = probed;
   c[2].report = steps_left > 0 ? run_candidate(2, c[2].Y, input, control ? &c[2].Z : nullptr, 0, c[2].flow, &c[2].probe) : not_run();
@@ -111,17 +122,29 @@ void select_smoother(Run& run, const Tensor& tensor, const Ghost_layer& layer, c
   // a candidate that stopped early is estimated only when none reached the noise level
   bool any_at_noise = false;
   for(const Candidate& x : c) any_at_noise = any_at_noise || (judged(x.report) && ended_at_noise_level(x.report));
+  const auto compared = [&](std::size_t k) {
+    return judged(c[k].report) && (ended_at_noise_level(c[k].report) || !any_at_noise);
+  };
   for(std::size_t k = 0; k < c.size(); ++k)
-  {
-    if(!judged(c[k].report)) continue;
-    const bool at_noise = ended_at_noise_level(c[k].report);
-    if(!at_noise && any_at_noise) continue;
-    if(c[k].probe.size() > 0)
+    if(compared(k) && c[k].probe.size() > 0)
     {
-      c[k].risk = 0;
-      for(double x : risk_terms(input, c[k].Y, c[k].probe, N, sigma, b)) c[k].risk += x;
-      continue;
+      c[k].carried = 0;
+      for(double x : risk_terms(input, c[k].Y, c[k].probe, N, sigma, b)) c[k].carried += x;
     }
+  // the uniform flow's carried estimate is its estimate. The other two's came out below those of runs of
+  // their own (by 0.046 and 0.010 per vertex, medians of 26 cases): one whose carried estimate is not below
+  // the lowest estimate of its kind so far cannot be kept, and is not run again. The others, lowest first
+  c[2].risk = c[2].carried;
+  std::vector<std::size_t> order{ 2, 0, 1 };
+  if(c[1].carried < c[0].carried) std::swap(order[1], order[2]);
+  for(std::size_t k : order)
+  {
+    if(!compared(k) || std::isfinite(c[k].risk)) continue;
+    const bool at_noise = ended_at_noise_level(c[k].report);
+    double lowest = std::nan("");
+    for(const Candidate& x : c)
+      if(std::isfinite(x.risk) && ended_at_noise_level(x.report) == at_noise && !(x.risk >= lowest)) lowest = x.risk;
+    if(c[k].carried >= lowest) continue;
     if(steps_left == 0) continue;
     // a candidate that ended short of the noise level: its probe takes exactly its steps
     const std::size_t replay = at_noise ? 0 : c[k].report.steps.size();
@@ -154,6 +177,9 @@ void select_smoother(Run& run, const Tensor& tensor, const Ghost_layer& layer, c
       if(std::isfinite(x.risk))
         std::snprintf(text, sizeof text, "%s %.4g%s", x.label, x.risk / double(input.rows()) - 1,
                       ended_at_noise_level(x.report) ? "" : (std::string(" (stopped early: ") + to_string(x.report.stop_reason) + ")").c_str());
+      else if(std::isfinite(x.carried))
+        std::snprintf(text, sizeof text, "%s %.4g or more (carried along: it cannot be the lowest)", x.label,
+                      x.carried / double(input.rows()) - 1);
       else if(judged(x.report) && !ended_at_noise_level(x.report) && any_at_noise)
         std::snprintf(text, sizeof text, "%s not estimated (stopped early: %s)", x.label, to_string(x.report.stop_reason));
       else
