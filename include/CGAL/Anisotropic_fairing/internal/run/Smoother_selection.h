@@ -131,9 +131,8 @@ void select_smoother(Run& run, const Tensor& tensor, const Ghost_layer& layer, c
       c[k].carried = 0;
       for(double x : risk_terms(input, c[k].Y, c[k].probe, N, sigma, b)) c[k].carried += x;
     }
-  // the uniform flow's carried estimate is its estimate. The other two's came out below those of runs of
-  // their own (by 0.046 and 0.010 per vertex, medians of 26 cases): one whose carried estimate is not below
-  // the lowest estimate of its kind so far cannot be kept, and is not run again. The others, lowest first
+  // the uniform flow's carried estimate is its estimate; the other two run again (lowest first) only when
+  // theirs is below the lowest estimate of their kind so far (see the top of this file)
   c[2].risk = c[2].carried;
   std::vector<std::size_t> order{ 2, 0, 1 };
   if(c[1].carried < c[0].carried) std::swap(order[1], order[2]);
