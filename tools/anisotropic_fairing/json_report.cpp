@@ -1,5 +1,5 @@
-// The JSON report of anisotropic_fairing (see json_report.h), built with nlohmann-json: keys in the
-// order of the README's table, numbers in the shortest form that reads back to the same double.
+// The JSON report of anisotropic_fairing (see json_report.h), built with nlohmann-json: numbers in the
+// shortest form that reads back to the same double.
 #include "json_report.h"
 
 #include <nlohmann/json.hpp>
@@ -126,6 +126,27 @@ std::string report_json(const Options& o, const Run_record& r, double wall_secon
   j["wall_seconds"] = number(wall_seconds);
   // bytes that are not UTF-8 (a path, a message quoting the input) are replaced rather than refused
   return j.dump(2, ' ', false, Json::error_handler_t::replace) + "\n";
+}
+
+std::string report_keys()
+{
+  Run_record r;
+  r.fairing_ran = true;
+  r.report.steps.resize(1);
+  const Json j = Json::parse(report_json(Options(), r, 0));
+  const auto keys = [](const Json& object) {
+    std::string list;
+    for(auto k = object.begin(); k != object.end(); ++k) list += (list.empty() ? "" : ", ") + k.key();
+    return list;
+  };
+  std::string list;
+  for(auto k = j.begin(); k != j.end(); ++k)
+  {
+    list += (list.empty() ? "" : ", ") + k.key();
+    if(k->is_object()) list += " {" + keys(*k) + "}";
+    if(k->is_array() && !k->empty() && k->front().is_object()) list += " [{" + keys(k->front()) + "}]";
+  }
+  return list;
 }
 
 } // namespace af_tool

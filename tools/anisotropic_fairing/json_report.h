@@ -1,8 +1,9 @@
 // The JSON report of anisotropic_fairing (--report): what was asked, what the run chose and did,
 // and the statistics of every step; written on success and on failure (with status and message).
 // Numbers are written in the shortest form that reads back to the same double; unknown or non-finite
-// values are null. The keys and their
-// meaning are a public interface (README, JSON report table): change them only with the README.
+// values are null. The keys and their meaning are a public interface: the --help text lists them
+// (report_keys), the manual's page on the program describes each, and the test cli_option_docs checks
+// that page against a report.
 #ifndef AF_TOOL_JSON_REPORT_H
 #define AF_TOOL_JSON_REPORT_H
 
@@ -32,6 +33,10 @@ struct Run_record
 };
 
 std::string report_json(const Options& o, const Run_record& r, double wall_seconds);
+
+/// The report's keys in the order written, nested ones in braces ("initial {area, ...}"), from a report
+/// of a run that took a step: the list --help prints.
+std::string report_keys();
 
 } // namespace af_tool
 

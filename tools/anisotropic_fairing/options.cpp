@@ -1,7 +1,8 @@
 // The options of anisotropic_fairing. The table `option_table` is the one list of the options: the
-// parser reads it, the help text is made from it, and scripts/option_docs.py makes the README's
-// option table and the manual's list from the help (the test cli_option_docs checks they agree).
+// parser reads it, the help text is made from it, and scripts/option_docs.py makes the manual's list
+// from the help (the test cli_option_docs checks they agree).
 #include "options.h"
+#include "json_report.h"
 
 #include <CGAL/Anisotropic_fairing/Fairing_settings.h>
 #include <CGAL/version.h>
@@ -381,22 +382,6 @@ const char* const help_before_options =
 const char* const help_after_options =
 "Options also accept the form --option=value.\n"
 "\n"
-"JSON report: status, message, input, output, vertices, faces, element, output_positions, tensor, lambda,\n"
-"lambda_model_units, epsilon, tangential_motion, automatic_parameters, choices, noise_level,\n"
-"noise_deviation, noise_displacement, removed_spikes, limit_weight, components, rejected_steps,\n"
-"maximum_deviation, relative_maximum_deviation, largest_deviation, attribute_maximum_deviation,\n"
-"largest_attribute_deviation, bound_fidelity_weight, bound_held_vertices, bound_uniform_weight,\n"
-"bound_retaken_steps, clamped_vertices,\n"
-"solver, requested_solver, stop, max_steps, quadrature_degree, time_step, order, relative_time_step, scale,\n"
-"fidelity_weight, relative_fidelity_weight, mean_edge_length, normals, curvature, mode, attributes,\n"
-"attribute_dimension, attribute_weight, boundary_handling,\n"
-"boundary_vertices, boundary_held_vertices, boundary_loops, isolated_vertices, constrained_vertices,\n"
-"hold, held_vertices, resample, resampled_vertices, resampled_faces, snapshot, stop_reason, initial {area,\n"
-"energy, H_integral}, steps [{step, time, solver_iterations, residual, area, energy, H_integral,\n"
-"max_displacement, step_displacement, assemble_seconds, solve_seconds, direct_solve, time_step,\n"
-"noise_displacement}], setup_seconds,\n"
-"total_seconds (the fairing call), wall_seconds (the whole program). Unknown values are null.\n"
-"\n"
 "exit status: 0 success; 1 failure (unreadable input, a mesh that is not a 2-manifold triangle mesh,\n"
 "an attribute the input does not have, fairing failure, unwritable output or report); 2 usage error\n"
 "(including OUTPUT or --report naming the INPUT or each other).\n"
@@ -475,7 +460,24 @@ std::string help_text()
       line += *c == '\n' ? std::string("\n") + std::string(28, ' ') : std::string(1, *c);
     text += line + "\n";
   }
-  return text + help_after_options;
+  // the report's keys, from the report itself, wrapped like the rest
+  std::string keys = "JSON report (--report; the manual's page on the program says what each key holds; unknown values are null): " +
+                     report_keys() + ".";
+  std::string wrapped, line;
+  std::size_t start = 0;
+  while(start < keys.size())
+  {
+    std::size_t end = keys.find(' ', start);
+    if(end == std::string::npos) end = keys.size();
+    const std::string word = keys.substr(start, end - start);
+    if(!line.empty() && line.size() + 1 + word.size() > 100) { wrapped += line + "\n"; line.clear(); }
+    line += (line.empty() ? "" : " ") + word;
+    start = end + 1;
+  }
+  wrapped += line + "\n\n";
+  const std::string after = help_after_options;
+  const std::size_t exit_status = after.find("exit status:");
+  return text + after.substr(0, exit_status) + wrapped + after.substr(exit_status);
 }
 
 std::string report_refused_on_failure(const Options& o)

@@ -3,9 +3,9 @@
 //
 // The diffusion of the uniform (umbrella) Laplacian, on any element: the Dirichlet energy measured
 // as if every face were equilateral, so that the operator depends on the connectivity alone. On noisy
-// graded scans the metric of the noisy surface makes the geometric operator noisy too (the error
-// of the default run sat in the smallest faces of the camel head); the uniform weights do not see
-// the noise (bench/README.md, issue 13: camel head at 0.2 h of noise 6.21 -> 5.19 degrees).
+// graded scans the metric of the noisy surface makes the geometric operator noisy too (its error
+// gathers in the smallest faces, as on the camel head); the uniform weights do not see the noise
+// (bench/README.md).
 
 #ifndef CGAL_ANISOTROPIC_FAIRING_UNIFORM_DIFFUSION_TENSOR_H
 #define CGAL_ANISOTROPIC_FAIRING_UNIFORM_DIFFUSION_TENSOR_H

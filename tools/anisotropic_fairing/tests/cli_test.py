@@ -2,7 +2,7 @@
 """Runs one group of the table cli_cases.json against the program anisotropic_fairing (CTest: cli_<group>).
 
     cli_test.py --tool BIN --cases cli_cases.json --group NAME --example-data DIR --work DIR
-    cli_test.py --tool BIN --docs README.md PROGRAM_PAGE.txt   (the test cli_option_docs)
+    cli_test.py --tool BIN --docs PROGRAM_PAGE.txt --example-data DIR --work DIR   (the test cli_option_docs)
 
 Each run of a group lists the arguments and what must hold afterwards; the checks are the functions
 named check_<key> below, one per key of a run (see the comment at the top of cli_cases.json).
@@ -174,10 +174,9 @@ def check_table(spec, work):
 
 
 # ---- the report ----------------------------------------------------------------------------------
-REQUIRED_TOP = ('steps stop_reason total_seconds vertices faces mode attributes attribute_dimension attribute_weight '
-                'automatic_parameters choices noise_level noise_deviation noise_displacement removed_spikes components rejected_steps order '
-                'maximum_deviation relative_maximum_deviation largest_deviation attribute_maximum_deviation '
-                'largest_attribute_deviation bound_fidelity_weight bound_held_vertices bound_uniform_weight bound_retaken_steps clamped_vertices hold held_vertices').split()
+# every report, of a success or a failure, holds every key of the manual page's report table
+PROGRAM_PAGE = os.path.join(os.path.dirname(os.path.abspath(__file__)), '..', '..', '..', 'doc', 'Anisotropic_fairing',
+                            'Command_line_program.txt')
 REQUIRED_STEP = ('step time solver_iterations residual area energy H_integral max_displacement assemble_seconds '
                  'solve_seconds time_step noise_displacement').split()
 
@@ -194,7 +193,7 @@ def check_report(path, run):
     except ValueError as e:
         check(False, '%s does not parse: %s' % (path, e))
         return
-    for k in REQUIRED_TOP:
+    for k in report_keys_of_page(PROGRAM_PAGE):
         check(k in j, '%s: top-level key %s' % (path, k))
     steps = j.get('steps') if isinstance(j.get('steps'), list) else []
     check(isinstance(j.get('steps'), list), '%s: steps is a list' % path)
@@ -263,16 +262,38 @@ def do_run(run, tool, work, data):
         check_table(spec, work)
 
 
-# ---- the option lists of the README and the manual against the tool's --help ----------------------
-def check_docs(tool, readme, manual):
+# ---- the manual's option list and report keys against the program ----------------------------------
+def report_keys_of_page(manual):
+    """the keys the page's JSON report table names in its first column"""
+    text = open(manual, encoding='utf-8').read()
+    table = text[text.index('\\section af_tool_report'):]
+    keys = []
+    for line in table.splitlines():
+        if line.startswith('| `'):
+            keys += re.findall(r'`([a-z_0-9]+)`', line.split(' | ')[0])
+    return keys
+
+
+def check_docs(tool, manual, example_data, work):
     version = subprocess.run([tool, '--version'], capture_output=True, text=True)
     check(version.returncode == 0 and re.match(r'anisotropic_fairing \d+\.\d+\.\d+ .*\nCGAL \S+, Eigen \d+\.\d+\.\d+, Boost \d+\.\d+\.\d+\n$', version.stdout),
           '--version prints the versions and exits 0: %r' % version.stdout)
-    # both are made from --help by scripts/option_docs.py, which says what differs
+    # the option list is made from --help by scripts/option_docs.py, which says what differs
     generator = os.path.join(os.path.dirname(os.path.abspath(__file__)), '..', '..', '..', 'scripts', 'option_docs.py')
     docs = subprocess.run([sys.executable, generator, tool, '--check'], capture_output=True, text=True)
-    check(docs.returncode == 0, 'the README (%s) and the manual (%s) give the options exactly as --help does:\n%s%s' %
-          (readme, manual, docs.stdout, docs.stderr))
+    check(docs.returncode == 0, 'the manual (%s) gives the options exactly as --help does:\n%s%s' % (manual, docs.stdout, docs.stderr))
+    # every key a report holds is in the page's table, and the table names no other
+    os.makedirs(work, exist_ok=True)
+    report = os.path.join(work, 'keys.json')
+    run = subprocess.run([tool, os.path.join(example_data, 'octahedron_quality.ply'), os.path.join(work, 'keys.ply'), '--quiet',
+                          '--attributes', 'quality', '--steps', '1', '--report', report], capture_output=True, text=True)
+    check(run.returncode == 0, 'a one-step run with attributes succeeds: %s' % run.stderr)
+    if run.returncode == 0:
+        written, listed = set(json.load(open(report))), report_keys_of_page(manual)
+        check(len(listed) == len(set(listed)), 'the page names each report key once: %s' %
+              sorted(k for k in set(listed) if listed.count(k) > 1))
+        check(written == set(listed), 'the report keys are those of the page\'s table: not in the table %s, not in the report %s' %
+              (sorted(written - set(listed)), sorted(set(listed) - written)))
 
 
 def main():
@@ -282,10 +303,10 @@ def main():
     ap.add_argument('--group')
     ap.add_argument('--example-data')
     ap.add_argument('--work')
-    ap.add_argument('--docs', nargs=2, metavar=('README', 'MANUAL'))
+    ap.add_argument('--docs', metavar='PROGRAM_PAGE')
     a = ap.parse_args()
     if a.docs:
-        check_docs(a.tool, *a.docs)
+        check_docs(a.tool, a.docs, a.example_data, a.work)
     else:
         groups = json.load(open(a.cases))['groups']
         if a.group not in groups:

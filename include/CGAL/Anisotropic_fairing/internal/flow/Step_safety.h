@@ -9,9 +9,9 @@
 // (110 degrees: a place on the brink may tip over by any small motion, which is no instability) or
 // the input mesh was folded (noise leaves folds that fairing takes a few steps to remove), nor raise
 // int min(|H|, 2/h)^2 above 4 times the lowest value reached (bounded: a cusp on a tiny face of a graded
-// scan is not a blow-up; on the camel head at 0.5 h of noise it stopped the run at 11.39 degrees,
-// 11.34 without it) or int |H|^2 above 100 times (cusps that keep growing, as in long runs with a
-// strong fidelity term), nor shrink a connected component to (almost) nothing.
+// scan is not a blow-up, and an unbounded test would end such a run short of the noise level) or
+// int |H|^2 above 100 times (cusps that keep growing, as in long runs with a strong fidelity term),
+// nor shrink a connected component to (almost) nothing.
 
 #ifndef CGAL_ANISOTROPIC_FAIRING_INTERNAL_FLOW_STEP_SAFETY_H
 #define CGAL_ANISOTROPIC_FAIRING_INTERNAL_FLOW_STEP_SAFETY_H

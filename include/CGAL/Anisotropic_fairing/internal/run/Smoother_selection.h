@@ -15,7 +15,7 @@
 // of a second run, once the normals are known: the anisotropic run makes them first, from its input's
 // prefiltered surface. The uniform flow's stiffness depends on the connectivity alone, so its steps are
 // linear in the data but for the mass matrix, and its carried estimate is its estimate (within 0.022 per
-// vertex of a run of its own on 26 cases, median 0.004, no choice changed). The other two flows' operators
+// vertex of a run of its own on 26 cases, median 0.004, the same choices). The other two flows' operators
 // follow the surface, and that dependence is part of their divergence: carried along, their estimates
 // came out lower than by a run of their own, by 0.046 per vertex (median, up to 0.09: the anisotropic
 // flow) and 0.010 (up to 0.04: the isotropic). So they are run again on the probed input only when their

@@ -12,8 +12,8 @@
 // along the surface) costs nothing. sigma is the package's own noise estimate; n, the normals of the
 // input's prefiltered surface M_eps, or else of the isotropic result (the noisy mesh's own normals are too
 // far off at high noise; the two gave the same choices on 15 cases). Measured on 20 cases, CAD
-// parts and organic scans, this picked the better of the anisotropic and the uniform result on every one
-// (bench/README.md), where every measure of one result at a time had failed.
+// parts and organic scans, this picks the better of the anisotropic and the uniform result on every one
+// (bench/README.md); no measure of one result at a time does.
 
 #ifndef CGAL_ANISOTROPIC_FAIRING_INTERNAL_RUN_TENSOR_SELECTION_H
 #define CGAL_ANISOTROPIC_FAIRING_INTERNAL_RUN_TENSOR_SELECTION_H

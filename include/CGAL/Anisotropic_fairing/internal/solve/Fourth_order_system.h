@@ -10,7 +10,7 @@
 // partition of unity), positive on a surface. M carries the local time scale as in Step_system.h.
 // Conjugate gradients use the system through its product, M x and L (D^-1 (L x)) on the 3-ring pattern:
 // three sparse products cost less than one with the 6-ring Q, and Q is never formed unless the system is
-// factorised (forming it took 80% of a step).
+// factorised (forming it costs about 80% of a step).
 
 #ifndef CGAL_ANISOTROPIC_FAIRING_INTERNAL_SOLVE_FOURTH_ORDER_SYSTEM_H
 #define CGAL_ANISOTROPIC_FAIRING_INTERNAL_SOLVE_FOURTH_ORDER_SYSTEM_H

@@ -47,7 +47,7 @@ struct Solve_statistics
 
 /// Rows [begin, end) of Y = A X (A compressed, stored in full, X and Y row-major with K columns). The
 /// sums stay in registers: the product is the solvers' main cost, and writing through Y's row at every
-/// non-zero (which may alias X as far as the compiler knows) made it about twice as slow.
+/// non-zero (which may alias X as far as the compiler knows) makes it about twice as slow.
 template <int K>
 void sparse_rows_product(const int* outer, const int* rows, const double* values, const double* X, double* Y,
                          Eigen::Index begin, Eigen::Index end)

@@ -3,8 +3,8 @@
 //
 // The closed-form eigen-decomposition of a symmetric 2x2 matrix (a shape operator in a tangent
 // frame), shared by the curvature at quadrature points and at vertices. Eigen's computeDirect does the
-// same with a shift and a scaling: it moved the anisotropic runs of scripts/fixed_runs.sh by up to
-// 4e-12 relative (rounding, amplified over the steps), so the package keeps these dozen lines.
+// same with a shift and a scaling, which rounds differently: amplified over the steps, that moves the
+// anisotropic runs of scripts/fixed_runs.sh by up to 4e-12 relative, so the package has its own dozen lines.
 
 #ifndef CGAL_ANISOTROPIC_FAIRING_INTERNAL_TYPES_SYMMETRIC_2X2_EIGEN_H
 #define CGAL_ANISOTROPIC_FAIRING_INTERNAL_TYPES_SYMMETRIC_2X2_EIGEN_H
