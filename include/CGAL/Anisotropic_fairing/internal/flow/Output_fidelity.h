@@ -13,7 +13,7 @@
 #ifndef CGAL_ANISOTROPIC_FAIRING_INTERNAL_FLOW_OUTPUT_FIDELITY_H
 #define CGAL_ANISOTROPIC_FAIRING_INTERNAL_FLOW_OUTPUT_FIDELITY_H
 
-#include <CGAL/Anisotropic_fairing/internal/loop/Loop_rules.h>
+#include <CGAL/Anisotropic_fairing/internal/loop/Vertex_limit_masks.h>
 #include <CGAL/Anisotropic_fairing/internal/mesh/Triangle_topology.h>
 #include <CGAL/Anisotropic_fairing/internal/types/Control_matrix.h>
 
@@ -37,13 +37,8 @@ public:
   const std::vector<std::pair<int, double>>& mask(int i) const
   {
     mask_.clear();
-    if(!limit_ || topo_.outgoing(i) < 0) { mask_.emplace_back(i, 1.0); return mask_; }
-    const int n = topo_.valence(i);
-    const double chi = loop_limit_weight(n);
-    mask_.emplace_back(i, 1.0 - n * chi);
-    const int h0 = topo_.outgoing(i);
-    int h = h0;
-    do { mask_.emplace_back(topo_.target(h), chi); h = topo_.ccw(h); } while(h != h0);
+    if(!limit_) mask_.emplace_back(i, 1.0);
+    else for_each_limit_weight(topo_, i, [this](int v, double weight) { mask_.emplace_back(v, weight); });
     return mask_;
   }
 

@@ -37,6 +37,9 @@ struct Step_units
   double relative_time_step = 0;    // tau / l^2 of the largest component
 };
 
+/// l = sqrt(area / 4 pi), the radius of the sphere of the same area: the length unit of the relative parameters.
+inline double length_scale(double area) { return std::sqrt(area / (4 * 3.14159265358979323846)); }
+
 /// 1, or what the system of a step with f times the time step is divided by so that a huge time step
 /// cannot overflow its norms (the solution does not change), over the rows `free`.
 inline double system_scale(const Step_units& u, const std::vector<int>& free, double f, int order, double mean_edge)
@@ -54,15 +57,14 @@ inline Step_units make_step_units(const Assembly_statistics& a0, const Mesh_comp
                                   bool relative_stopping, Length_unit tensor_unit,
                                   const std::vector<double>& edge, double global_edge)
 {
-  const double four_pi = 4 * 3.14159265358979323846;
   Step_units u;
-  u.scale = std::sqrt(a0.area / four_pi);
+  u.scale = length_scale(a0.area);
   const std::size_t nc = comp.count;
   std::vector<double> ell(nc), tau(nc), omega(nc);
   std::size_t largest = 0;
   for(std::size_t c = 0; c < nc; ++c)
   {
-    ell[c] = nc == 1 ? u.scale : std::sqrt(a0.component_area[c] / four_pi);
+    ell[c] = nc == 1 ? u.scale : length_scale(a0.component_area[c]);
     const double unit = time_unit == Length_unit::SCALE ? ell[c] : time_unit == Length_unit::EDGE ? edge[c] : 1.0;
     tau[c] = time_step * std::pow(unit, order);
     omega[c] = relative_fidelity ? fidelity / (ell[c] * ell[c]) : fidelity;

@@ -18,26 +18,30 @@ namespace CGAL {
 namespace Anisotropic_fairing {
 namespace internal {
 
-/// out = limit position of vertex v: (1 - n chi) x_v + chi sum of the neighbours (kappa values).
-/// A vertex on no face (accepted by some callers) is on no surface: its "limit" is itself.
-inline void vertex_limit_value(const Triangle_topology& topo, const Control_matrix& X, int v, double* out)
+/// The limit mask of vertex v: f(vertex, weight) for v itself, weight 1 - n chi, then for each neighbour
+/// in counter-clockwise order, weight chi (Loop_rules.h). A vertex on no face (accepted by some callers)
+/// is on no surface: its "limit" is itself, f(v, 1).
+template <typename F>
+void for_each_limit_weight(const Triangle_topology& topo, int v, const F& f)
 {
-  if(topo.outgoing(v) < 0)
-  {
-    for(Eigen::Index c = 0; c < X.cols(); ++c) out[c] = X(v, c);
-    return;
-  }
+  const int h0 = topo.outgoing(v);
+  if(h0 < 0) { f(v, 1.0); return; }
   const int n = topo.valence(v);
   const double chi = loop_limit_weight(n);
-  const Eigen::Index kappa = X.cols();
-  for(Eigen::Index c = 0; c < kappa; ++c) out[c] = (1.0 - n * chi) * X(v, c);
-  const int h0 = topo.outgoing(v);
+  f(v, 1.0 - n * chi);
   int h = h0;
-  do {
-    const int w = topo.target(h);
-    for(Eigen::Index c = 0; c < kappa; ++c) out[c] += chi * X(w, c);
-    h = topo.ccw(h);
-  } while(h != h0);
+  do { f(topo.target(h), chi); h = topo.ccw(h); } while(h != h0);
+}
+
+/// out = limit position of vertex v: (1 - n chi) x_v + chi sum of the neighbours (kappa values).
+inline void vertex_limit_value(const Triangle_topology& topo, const Control_matrix& X, int v, double* out)
+{
+  const Eigen::Index kappa = X.cols();
+  bool first = true;
+  for_each_limit_weight(topo, v, [&](int w, double weight) {
+    for(Eigen::Index c = 0; c < kappa; ++c) out[c] = first ? weight * X(w, c) : out[c] + weight * X(w, c);
+    first = false;
+  });
 }
 
 /// Tangent masks t_u = sum cos(2 pi j/n) x_j, t_v = sum sin(2 pi j/n) x_j over the neighbours in

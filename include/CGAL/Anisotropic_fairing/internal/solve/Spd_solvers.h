@@ -17,11 +17,6 @@
 #include <Eigen/SparseCholesky>
 #include <Eigen/SparseCore>
 
-#ifdef CGAL_LINKED_WITH_TBB
-#include <tbb/blocked_range.h>
-#include <tbb/parallel_for.h>
-#endif
-
 #include <algorithm>
 #include <chrono>
 #include <cstddef>
@@ -280,13 +275,7 @@ private:
         for(Eigen::Index i = q * chunk; i < std::min(n, (q + 1) * chunk); ++i) row(i, sums);
       }
     };
-#ifdef CGAL_LINKED_WITH_TBB
-    if(chunks > 4)
-      tbb::parallel_for(tbb::blocked_range<Eigen::Index>(0, chunks, 1),
-                        [&](const tbb::blocked_range<Eigen::Index>& r) { run(r.begin(), r.end()); });
-    else
-#endif
-      run(0, chunks);
+    parallel_blocks(chunks, run, Eigen::Index(1), Eigen::Index(4));   // a chunk per task from 5 chunks on
     out.assign(std::size_t(width), 0.0);
     for(Eigen::Index q = 0; q < chunks; ++q)
       for(Eigen::Index w = 0; w < width; ++w) out[std::size_t(w)] += partial_[std::size_t(q * width + w)];

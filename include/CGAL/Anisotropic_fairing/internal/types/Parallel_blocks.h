@@ -17,18 +17,22 @@ namespace Anisotropic_fairing {
 namespace internal {
 
 /// `body(first, last)` over blocks covering [0, n), each of at most `grain` indices, on every core (TBB)
-/// when n is large enough to pay for the threads, else `body(0, n)` here. Blocks never overlap, so a body
-/// that writes only its own rows needs no lock; what it computes must not depend on the block boundaries.
+/// when n is above `serial_up_to` (enough to pay for the threads), else `body(0, n)` here. Blocks never
+/// overlap, so a body that writes only its own rows needs no lock; what it computes must not depend on the
+/// block boundaries.
 template <typename Index, typename Body>
-void parallel_blocks(Index n, const Body& body, Index grain = 4096)
+void parallel_blocks(Index n, const Body& body, Index grain = 4096, Index serial_up_to = 20000)
 {
 #ifdef CGAL_LINKED_WITH_TBB
-  if(n > 20000)
+  if(n > serial_up_to)
   {
     tbb::parallel_for(tbb::blocked_range<Index>(Index(0), n, grain),
                       [&](const tbb::blocked_range<Index>& r) { body(r.begin(), r.end()); });
     return;
   }
+#else
+  (void)grain;
+  (void)serial_up_to;
 #endif
   body(Index(0), n);
 }
