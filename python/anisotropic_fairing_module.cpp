@@ -148,6 +148,7 @@ const Keyword keywords[] = {
   {"time_step", "--time-step"}, {"relative_time_step", "--relative-time-step"}, {"flow_order", "--order"},
   {"number_of_iterations", "--steps"}, {"stopping_criteria", "--stop"}, {"fidelity_weight", "--fidelity"},
   {"relative_fidelity_weight", "--relative-fidelity"}, {"absolute_maximum_deviation", "--maximum-deviation"},
+  {"relative_maximum_deviation", "--relative-maximum-deviation"},
   {"maximum_deviation", "--relative-maximum-deviation"}, {"attribute_maximum_deviation", "--attribute-maximum-deviation"},
   {"finite_element", "--element"}, {"output_positions", "--output"}, {"tensor", "--tensor"}, {"lambda_", "--lambda"},
   {"epsilon", "--epsilon"}, {"tangential_motion", "--tangential-motion"}, {"linear_solver", "--solver"},
@@ -179,6 +180,10 @@ Options options_of(const py::kwargs& kwargs, py::ssize_t attribute_columns)
       throw py::type_error("fair() got an unexpected keyword argument '" + name + "' (it takes: attributes, vertex_is_constrained, callback, " + list + ")");
     }
     if(item.second.is_none()) continue;   // None: the default
+    if(name == "maximum_deviation" &&
+       PyErr_WarnEx(PyExc_DeprecationWarning, "maximum_deviation is relative (units of l); write relative_maximum_deviation, or "
+                    "absolute_maximum_deviation for model units", 1) != 0)
+      throw py::error_already_set();
     try
     {
       args.push_back(k->flag);
@@ -465,7 +470,8 @@ same settings. Without parameters: the default run (the parameters are chosen fr
 
 parameters, the library's named parameters (None: the default): time_step, relative_time_step, flow_order,
 number_of_iterations, stopping_criteria ('auto', 'noise', 'paper', 'off'), fidelity_weight,
-relative_fidelity_weight, maximum_deviation (units of l), absolute_maximum_deviation,
+relative_fidelity_weight, relative_maximum_deviation (units of l; maximum_deviation: its deprecated spelling),
+absolute_maximum_deviation,
 attribute_maximum_deviation, finite_element ('loop', 'linear'), output_positions ('limit', 'control'),
 tensor ('isotropic', 'anisotropic', 'uniform'), lambda_, epsilon, tangential_motion ('remove', 'keep'),
 linear_solver ('auto', 'cg', 'cholesky'), boundary_handling ('curve', 'vertices'), quadrature_degree,

@@ -40,7 +40,7 @@ print('scalar field: roughness %.3g -> %.3g (mean |f_i - f_j| over the edges)' %
       tuple(np.abs(f[F[:, 0]] - f[F[:, 1]]).mean() for f in (field, field3)))
 
 # %% A guaranteed bound: no vertex farther than 0.5% of the model's scale l from where it was
-V4, _, report = af.fair(V, F, maximum_deviation=0.005)
+V4, _, report = af.fair(V, F, relative_maximum_deviation=0.005)
 print('bounded: largest deviation %.4g <= %.4g' % (np.linalg.norm(V4 - V, axis=1).max(), report['maximum_deviation']))
 
 # %% Progress, and stopping early, with a callback (the GIL is released while the run computes)

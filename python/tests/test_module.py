@@ -125,18 +125,30 @@ def test_every_mode_and_setting_runs(fandisk):
         if mode == 'geometry':
             assert np.array_equal(C2, C), 'geometry only: the attributes are not written'
     for extra in (dict(tensor='anisotropic'), dict(flow_order=4, relative_time_step=1e-4), dict(finite_element='linear'),
-                  dict(maximum_deviation=0.001), dict(boundary_handling='vertices'), dict(output_positions='control'),
+                  dict(relative_maximum_deviation=0.001), dict(boundary_handling='vertices'), dict(output_positions='control'),
                   dict(tensor='uniform'), dict(linear_solver='cholesky')):
         settings = dict(relative_time_step=1e-3, number_of_iterations=2)
         settings.update(extra)
         V2, _, report = af.fair(V, F, **settings)
         assert report['status'] == 'success', extra
-        if 'maximum_deviation' in extra:
+        if 'relative_maximum_deviation' in extra:
             assert np.linalg.norm(V2 - V, axis=1).max() <= report['maximum_deviation'] * (1 + 1e-12)
     held = np.zeros(len(V), dtype=bool)
     held[::3] = True
     V2, _, report = af.fair(V, F, vertex_is_constrained=held, relative_time_step=1e-3, number_of_iterations=2)
     assert np.array_equal(V2[held], V[held]) and report['held_vertices'] == held.sum()
+
+
+def test_maximum_deviation_is_a_deprecated_spelling(fandisk):
+    """maximum_deviation still means relative_maximum_deviation, with a DeprecationWarning naming both spellings"""
+    V, F = fandisk
+    settings = dict(relative_time_step=1e-3, number_of_iterations=2)
+    V_new, _, r_new = af.fair(V, F, relative_maximum_deviation=0.001, **settings)
+    with pytest.warns(DeprecationWarning, match='relative_maximum_deviation'):
+        V_old, _, r_old = af.fair(V, F, maximum_deviation=0.001, **settings)
+    assert np.array_equal(V_new, V_old) and r_new['maximum_deviation'] == r_old['maximum_deviation']
+    with pytest.raises(ValueError, match='absolute_maximum_deviation'):
+        af.fair(V, F, relative_maximum_deviation=0.001, absolute_maximum_deviation=0.01, **settings)
 
 
 def test_bad_input_raises():

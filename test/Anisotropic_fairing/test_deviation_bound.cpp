@@ -1,4 +1,4 @@
-// The user's bound on the deviation (named parameter maximum_deviation, issue 17): every written vertex
+// The user's bound on the deviation (named parameter relative_maximum_deviation): every written vertex
 // stays within the bound of its input position, for several bounds, on a noisy sphere and on the
 // Fandisk0.3 denoising pair; as the bound goes to 0 the output tends to the input; with a bound the run
 // never reaches, the result is byte for byte the unbounded run's; a bound near the noise still removes
@@ -91,7 +91,7 @@ void sphere_bounds()
   for(double relative : { 0.002, 0.005, 0.01 })
   {
     Mesh m = input;
-    const AF::Fairing_report r = AF::anisotropic_fairing(m, fixed.maximum_deviation(relative));
+    const AF::Fairing_report r = AF::anisotropic_fairing(m, fixed.relative_maximum_deviation(relative));
     const std::vector<double> out = coordinates(m);
     const std::string what = "sphere, relative bound " + std::to_string(relative);
     AF_CHECK(moved > relative * r.scale, what + ": the unbounded run goes beyond it (the bound is tested)");
@@ -101,6 +101,27 @@ void sphere_bounds()
     if(relative >= 0.005)
       AF_CHECK(sphere_error(out) < 0.75 * sphere_error(in), what + ": closer to the sphere than the input (" +
                std::to_string(sphere_error(out)) + " vs " + std::to_string(sphere_error(in)) + ")");
+  }
+  // the deprecated spelling maximum_deviation still means the relative bound: the same result, bit for bit
+  // (with one solver: the automatic choice between them goes by measured time); two spellings are refused
+  {
+    Mesh m = input, d = input;
+    const auto one_solver = fixed.linear_solver(AF::Linear_solver::CONJUGATE_GRADIENT);
+    const AF::Fairing_report r = AF::anisotropic_fairing(m, one_solver.relative_maximum_deviation(0.005));
+#if defined(__GNUC__)
+#pragma GCC diagnostic push
+#pragma GCC diagnostic ignored "-Wdeprecated-declarations"
+#endif
+    const AF::Fairing_report rd = AF::anisotropic_fairing(d, one_solver.maximum_deviation(0.005));
+    bool refused = false;
+    try { Mesh e = input; AF::anisotropic_fairing(e, fixed.maximum_deviation(0.005).relative_maximum_deviation(0.005)); }
+    catch(const AF::Input_error&) { refused = true; }
+#if defined(__GNUC__)
+#pragma GCC diagnostic pop
+#endif
+    AF_CHECK(r.succeeded() && rd.succeeded() && byte_identical(coordinates(m), coordinates(d)) &&
+             r.maximum_deviation == rd.maximum_deviation, "sphere: maximum_deviation is relative_maximum_deviation's former spelling");
+    AF_CHECK(refused, "sphere: maximum_deviation and relative_maximum_deviation together are refused");
   }
   // the absolute bound
   {
@@ -112,13 +133,13 @@ void sphere_bounds()
   for(double relative : { 1e-4, 1e-7 })
   {
     Mesh m = input;
-    const AF::Fairing_report r = AF::anisotropic_fairing(m, fixed.maximum_deviation(relative));
+    const AF::Fairing_report r = AF::anisotropic_fairing(m, fixed.relative_maximum_deviation(relative));
     check_bound(in, coordinates(m), r, relative * r.scale, "sphere, bound " + std::to_string(relative));
   }
   // a bound the run never reaches changes nothing, to the last bit
   {
     Mesh m = input;
-    const AF::Fairing_report r = AF::anisotropic_fairing(m, fixed.maximum_deviation(10.0));
+    const AF::Fairing_report r = AF::anisotropic_fairing(m, fixed.relative_maximum_deviation(10.0));
     AF_CHECK(byte_identical(coordinates(m), unbounded), "sphere, bound 10: the unbounded result, byte for byte");
     AF_CHECK(r.bound_held_vertices == 0 && r.clamped_vertices == 0, "sphere, bound 10: no vertex held");
     AF_CHECK(r.steps.size() == r0.steps.size(), "sphere, bound 10: as many steps");
@@ -177,10 +198,10 @@ void fandisk_bounds(const std::string& data)
     Mesh m = input;
     const AF::Fairing_report r = AF::anisotropic_fairing(m, AF::parameters::relative_time_step(1e-4).number_of_iterations(8u)
         .diffusion_tensor(AF::Anisotropic_diffusion_tensor::automatic()).stopping_criteria(AF::Stopping_criteria::none())
-        .maximum_deviation(relative));
+        .relative_maximum_deviation(relative));
     check_bound(in, coordinates(m), r, relative * r.scale, "fandisk, anisotropic, bound " + std::to_string(relative));
     Mesh d = input;
-    const AF::Fairing_report rd = AF::anisotropic_fairing(d, AF::parameters::maximum_deviation(relative));
+    const AF::Fairing_report rd = AF::anisotropic_fairing(d, AF::parameters::relative_maximum_deviation(relative));
     check_bound(in, coordinates(d), rd, relative * rd.scale, "fandisk, default run, bound " + std::to_string(relative));
   }
 }
@@ -276,7 +297,7 @@ void steady_state_bounds(const std::string& data)
     for(double relative : { 0.05, 0.2 })
     {
       Mesh m = input;
-      const AF::Fairing_report r = AF::anisotropic_fairing(m, flow.maximum_deviation(relative));
+      const AF::Fairing_report r = AF::anisotropic_fairing(m, flow.relative_maximum_deviation(relative));
       const std::string what = "bumpy.off to a steady state, bound " + std::to_string(relative);
       check_bound(in, coordinates(m), r, relative * r.scale, what);
       AF_CHECK(r.stop_reason == AF::Stop_reason::STEADY_STATE, what + ": reached (" + AF::to_string(r.stop_reason) + ": " + r.message + ")");
@@ -312,7 +333,7 @@ void control_points_given_back(const std::string& data)
   {
     Mesh m = input;
     std::vector<K::Point_3> control(num_vertices(m));
-    const AF::Fairing_report r = AF::anisotropic_fairing(m, AF::parameters::maximum_deviation(0.003)
+    const AF::Fairing_report r = AF::anisotropic_fairing(m, AF::parameters::relative_maximum_deviation(0.003)
                                                                .control_point_map(CGAL::make_property_map(control)));
     check(m, control, r, "control points, default run with a bound");
   }

@@ -14,7 +14,7 @@ AF::Fairing_report with_bound(const NP& np, const Options& o, Run& run)
 {
   const auto bounded = np.attribute_maximum_deviation(o.attribute_bound);
   if(o.has_bound) return run(bounded.absolute_maximum_deviation(o.bound));
-  return run(bounded.maximum_deviation(o.relative_bound));
+  return run(bounded.relative_maximum_deviation(o.relative_bound));
 }
 
 template <typename NP, typename Run>

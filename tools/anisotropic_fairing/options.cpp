@@ -176,13 +176,14 @@ const Option_spec option_table[] = {
    [](Options& o, const std::string& flag, const std::string& v) {
      set_number(o.relative_fidelity, o.has_relative_fidelity, flag, v, true);
    }},
-  {"--maximum-deviation", nullptr, "D",
+  {"--maximum-deviation", "--absolute-maximum-deviation", "D",
    "no written vertex moves farther than D (model units) off its input\n"
    "position: the vertices nearing it are held by a fidelity weight of\n"
    "their own, and one it cannot hold is written on the bound (default:\n"
-   "no bound; 0: none; absolute_maximum_deviation)",
+   "no bound; 0: none; absolute_maximum_deviation; also spelt\n"
+   "--absolute-maximum-deviation)",
    [](Options& o, const std::string& flag, const std::string& v) { set_number(o.bound, o.has_bound, flag, v, true); }},
-  {"--relative-maximum-deviation", nullptr, "R", "the same in units of l (maximum_deviation); give at most one of the two",
+  {"--relative-maximum-deviation", nullptr, "R", "the same in units of l (relative_maximum_deviation); give at most one of the two",
    [](Options& o, const std::string& flag, const std::string& v) { set_number(o.relative_bound, o.has_relative_bound, flag, v, true); }},
   {"--attribute-maximum-deviation", nullptr, "D",
    "no vertex's attribute values move farther than D (their units,\n"

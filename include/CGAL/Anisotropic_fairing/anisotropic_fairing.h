@@ -112,7 +112,7 @@ of its area per step. `time_step` and `fidelity_weight` give them in model units
     \cgalParamDescription{\f$\omega\f$ in model units (1/time); excludes `relative_fidelity_weight`}
     \cgalParamType{double >= 0} \cgalParamDefault{unused}
   \cgalParamNEnd
-  \cgalParamNBegin{maximum_deviation}
+  \cgalParamNBegin{relative_maximum_deviation}
     \cgalParamDescription{a bound \f$\varepsilon\f$, in units of \f$\ell\f$, on how far any written vertex moves off
                           its input position: \f$\|x_i(t) - x_i(0)\| \le \varepsilon\f$ for every vertex, at every step.
                           A vertex nearing it gets a fidelity weight of its own on its written position, raised (the
@@ -128,7 +128,12 @@ of its area per step. `time_step` and `fidelity_weight` give them in model units
     \cgalParamType{double >= 0} \cgalParamDefault{`0` (no bound)}
   \cgalParamNEnd
   \cgalParamNBegin{absolute_maximum_deviation}
-    \cgalParamDescription{the same bound in model units; excludes `maximum_deviation`}
+    \cgalParamDescription{the same bound in model units; excludes `relative_maximum_deviation`}
+    \cgalParamType{double >= 0} \cgalParamDefault{unused}
+  \cgalParamNEnd
+  \cgalParamNBegin{maximum_deviation}
+    \cgalParamDescription{deprecated (a compiler warning says so): the former spelling of `relative_maximum_deviation`,
+                          with its meaning; the program's `--maximum-deviation` is in model units}
     \cgalParamType{double >= 0} \cgalParamDefault{unused}
   \cgalParamNEnd
   \cgalParamNBegin{attribute_maximum_deviation}
@@ -186,7 +191,7 @@ of its area per step. `time_step` and `fidelity_weight` give them in model units
   \cgalParamNBegin{control_point_map}
     \cgalParamDescription{receives, on success, the faired control points of every vertex: the mesh whose Loop limit
                           surface is the faired surface (held vertices: their input). With `Output_positions::LIMIT_SURFACE`
-                          the point map gets the limit points, held within `maximum_deviation`, and this map the control
+                          the point map gets the limit points, held within `relative_maximum_deviation`, and this map the control
                           points they come from: what `Loop_limit_surface` needs for the exact normals and curvatures of
                           the result. With the control points or the linear element written, the same points as the point map}
     \cgalParamType{a `WritablePropertyMap` with `vertex_descriptor` key and the point type as value}

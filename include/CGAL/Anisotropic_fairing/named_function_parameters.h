@@ -18,8 +18,10 @@ namespace Anisotropic_fairing {
 
 namespace internal_np {
 #define CGAL_AF_add_named_parameter(X, Y, Z) enum X { Y };
+#define CGAL_AF_add_deprecated_named_parameter(X, Y, Z, M) enum X { Y };
 #include <CGAL/Anisotropic_fairing/internal/parameters_interface.h>
 #undef CGAL_AF_add_named_parameter
+#undef CGAL_AF_add_deprecated_named_parameter
 } // namespace internal_np
 
 /// \cond SKIP_IN_MANUAL
@@ -37,6 +39,10 @@ struct Named_function_parameters : CGAL::Named_function_parameters<T, Tag, Base>
   template <typename K>                                                                  \
   Named_function_parameters<K, TAG, self> Z(const K& k) const                            \
   { return Named_function_parameters<K, TAG, self>(k, *this); }
+#define CGAL_AF_NP_DEPRECATED_MEMBER(TAG, Z, M)                                          \
+  template <typename K>                                                                  \
+  [[deprecated(M)]] Named_function_parameters<K, TAG, self> Z(const K& k) const          \
+  { return Named_function_parameters<K, TAG, self>(k, *this); }
 
 #define CGAL_add_named_parameter(X, Y, Z) CGAL_AF_NP_MEMBER(CGAL::internal_np::X, Z)
 #define CGAL_add_named_parameter_with_compatibility(X, Y, Z) CGAL_AF_NP_MEMBER(CGAL::internal_np::X, Z)
@@ -51,9 +57,12 @@ struct Named_function_parameters : CGAL::Named_function_parameters<T, Tag, Base>
 #undef CGAL_add_extra_named_parameter_with_compatibility
 
 #define CGAL_AF_add_named_parameter(X, Y, Z) CGAL_AF_NP_MEMBER(Anisotropic_fairing::internal_np::X, Z)
+#define CGAL_AF_add_deprecated_named_parameter(X, Y, Z, M) CGAL_AF_NP_DEPRECATED_MEMBER(Anisotropic_fairing::internal_np::X, Z, M)
 #include <CGAL/Anisotropic_fairing/internal/parameters_interface.h>
 #undef CGAL_AF_add_named_parameter
+#undef CGAL_AF_add_deprecated_named_parameter
 #undef CGAL_AF_NP_MEMBER
+#undef CGAL_AF_NP_DEPRECATED_MEMBER
 };
 /// \endcond
 
@@ -71,6 +80,10 @@ inline Default_named_parameters default_values() { return Default_named_paramete
   template <typename K>                                                                  \
   Named_function_parameters<K, TAG> Z(const K& p)                                        \
   { return Named_function_parameters<K, TAG>(p); }
+#define CGAL_AF_NP_DEPRECATED_FREE(TAG, Z, M)                                            \
+  template <typename K>                                                                  \
+  [[deprecated(M)]] Named_function_parameters<K, TAG> Z(const K& p)                      \
+  { return Named_function_parameters<K, TAG>(p); }
 
 #define CGAL_add_named_parameter(X, Y, Z) CGAL_AF_NP_FREE(CGAL::internal_np::X, Z)
 #define CGAL_add_named_parameter_with_compatibility(X, Y, Z) CGAL_AF_NP_FREE(CGAL::internal_np::X, Z)
@@ -85,9 +98,12 @@ inline Default_named_parameters default_values() { return Default_named_paramete
 #undef CGAL_add_extra_named_parameter_with_compatibility
 
 #define CGAL_AF_add_named_parameter(X, Y, Z) CGAL_AF_NP_FREE(Anisotropic_fairing::internal_np::X, Z)
+#define CGAL_AF_add_deprecated_named_parameter(X, Y, Z, M) CGAL_AF_NP_DEPRECATED_FREE(Anisotropic_fairing::internal_np::X, Z, M)
 #include <CGAL/Anisotropic_fairing/internal/parameters_interface.h>
 #undef CGAL_AF_add_named_parameter
+#undef CGAL_AF_add_deprecated_named_parameter
 #undef CGAL_AF_NP_FREE
+#undef CGAL_AF_NP_DEPRECATED_FREE
 
 using CGAL::parameters::choose_parameter;
 using CGAL::parameters::is_default_parameter;

@@ -3,6 +3,8 @@
 //
 // The package's own named parameters: (enum type, enum value, function name).
 // No include guard on purpose: named_function_parameters.h includes this list several times.
+// CGAL_AF_add_deprecated_named_parameter: a spelling kept working, with a deprecation warning that says
+// what to write instead.
 
 CGAL_AF_add_named_parameter(quadrature_degree_t,       quadrature_degree,       quadrature_degree)
 CGAL_AF_add_named_parameter(quadrature_tiling_depth_t, quadrature_tiling_depth, quadrature_tiling_depth)
@@ -22,7 +24,10 @@ CGAL_AF_add_named_parameter(solver_tolerance_t,          solver_tolerance,      
 CGAL_AF_add_named_parameter(solver_maximum_iterations_t, solver_maximum_iterations, solver_maximum_iterations)
 CGAL_AF_add_named_parameter(vertex_curvature_map_t,      vertex_curvature_map,      vertex_curvature_map)
 CGAL_AF_add_named_parameter(flow_order_t,                flow_order,                flow_order)
-CGAL_AF_add_named_parameter(maximum_deviation_t,          maximum_deviation,          maximum_deviation)
+CGAL_AF_add_named_parameter(relative_maximum_deviation_t, relative_maximum_deviation, relative_maximum_deviation)
+CGAL_AF_add_deprecated_named_parameter(maximum_deviation_t, maximum_deviation, maximum_deviation,
+  "maximum_deviation is relative (units of l); write relative_maximum_deviation, or absolute_maximum_deviation for model units, "
+  "as the program's --relative-maximum-deviation and --maximum-deviation")
 CGAL_AF_add_named_parameter(absolute_maximum_deviation_t, absolute_maximum_deviation, absolute_maximum_deviation)
 CGAL_AF_add_named_parameter(attribute_maximum_deviation_t, attribute_maximum_deviation, attribute_maximum_deviation)
 CGAL_AF_add_named_parameter(control_point_map_t,         control_point_map,         control_point_map)

@@ -94,6 +94,30 @@ inline double mean_edge_length(const Ghost_layer& gl, const Control_matrix& P)
 }
 
 
+/// The mean edge length of each connected component (`edge[c]`) and of the whole mesh (returned), over
+/// the real faces' edges (an interior edge is seen from both sides, a border edge from one).
+inline double component_mean_edges(const Triangle_topology& topo, std::size_t real_faces, const Mesh_components& components,
+                                   const Control_matrix& X, std::vector<double>& edge)
+{
+  edge.assign(components.count, 0.0);
+  std::vector<double> counted(components.count, 0.0);
+  for(std::size_t f = 0; f < real_faces; ++f)
+    for(int k = 0; k < 3; ++k)
+    {
+      const auto& t = topo.face(f);
+      edge[std::size_t(components.of_face[f])] += (X.row(t[k]).head(3) - X.row(t[(k + 1) % 3]).head(3)).norm();
+      counted[std::size_t(components.of_face[f])] += 1;
+    }
+  double sum = 0, count = 0;
+  for(std::size_t c = 0; c < components.count; ++c)
+  {
+    sum += edge[c];
+    count += counted[c];
+    edge[c] /= counted[c];
+  }
+  return count > 0 ? sum / count : 0.0;
+}
+
 /// The default tensor: chosen from the mesh when the time step is too (automatic parameters).
 inline Anisotropic_diffusion_tensor default_tensor(std::true_type) { return Anisotropic_diffusion_tensor::automatic(); }
 inline Isotropic_diffusion_tensor default_tensor(std::false_type) { return Isotropic_diffusion_tensor(); }
@@ -177,13 +201,64 @@ template <typename Mesh>
 void write_attribute_controls(const Indexed_mesh<Mesh>&, No_attributes, CGAL::internal_np::Param_not_found, const Control_matrix&,
                               Eigen::Index, const std::vector<int>&) {}
 
+/// What the default run chose from the mesh: the start of the report's `choices`. `tensor_chosen`: the
+/// anisotropic tensor's threshold and prefilter were chosen; `scaled_flow`: the flow whose time step
+/// follows the mesh's density, if any.
+inline std::string automatic_choices(const Noise_estimate& noise, const Stepper_settings& s, bool tensor_chosen,
+                                     std::size_t removed_spikes, std::size_t n, const char* scaled_flow)
+{
+  const Automatic_parameters a;
+  char text[400];
+  std::snprintf(text, sizeof text, "noise %.3g h (robust estimate over %zu vertices); time step %.3g h^%d per step until the surface "
+                "has moved by %.3g x the noise%s", noise.relative_sigma(), noise.number_of_samples(), s.time_step, s.order,
+                s.stopping.noise_discrepancy, tensor_chosen ? "" : "; the tensor given");
+  std::string choices = text;
+  if(removed_spikes > 0)
+  {
+    std::snprintf(text, sizeof text, "; first %zu isolated spikes (%.2g%% of the vertices: impulsive noise) moved to the centroids of "
+                  "their rings", removed_spikes, 100.0 * double(removed_spikes) / double(n));
+    choices += text;
+  }
+  if(tensor_chosen)
+  {
+    std::snprintf(text, sizeof text, "; anisotropic tensor: principal curvatures above %.3g / h are features, read on M_eps, "
+                  "the surface after an isotropic step of %.3g h^2", a.lambda, a.epsilon);
+    choices += text;
+  }
+  if(scaled_flow)
+    choices += std::string("; the ") + scaled_flow + " flow's time step follows the mesh's density (h: the edge length around each vertex)";
+  return choices;
+}
+
+/// Writes the result X (rows in the private numbering `old_of_new`) into the caller's maps, in the order of
+/// vertices(tm): the points (unless only attributes were faired) and the attribute columns, from column 3.
+/// Neither the user's constrained vertices nor boundary or isolated vertices are written.
+template <typename Mesh, typename ConstrainedMap, typename VertexPointMap, typename AttributeMap>
+void write_back(const Indexed_mesh<Mesh>& im, const std::vector<int>& old_of_new, const Control_matrix& X, Attribute_mode mode,
+                const std::vector<bool>& border, const std::vector<bool>& isolated, ConstrainedMap vcm, VertexPointMap vpm,
+                AttributeMap attributes)
+{
+  typedef typename boost::property_traits<VertexPointMap>::value_type Point;
+  const std::size_t n = im.number_of_vertices();
+  Control_matrix result(X.rows(), X.cols());   // back to the order of vertices(tm)
+  for(std::size_t i = 0; i < n; ++i) result.row(old_of_new[i]) = X.row(Eigen::Index(i));
+  std::vector<bool> keep(n);
+  for(std::size_t i = 0; i < n; ++i) keep[std::size_t(old_of_new[i])] = border[i] || isolated[i];
+  for(std::size_t i = 0; i < n; ++i)
+  {
+    keep[i] = keep[i] || bool(get(vcm, im.vertex(i)));
+    const Eigen::Index r = Eigen::Index(i);
+    if(!keep[i] && mode != Attribute_mode::ATTRIBUTES_ONLY) put(vpm, im.vertex(i), Point(result(r, 0), result(r, 1), result(r, 2)));
+  }
+  if(X.cols() > 3) write_attribute_columns(im, attributes, result, 3, keep);
+}
+
 template <typename TriangleMesh, typename VertexPointMap, typename AttributeMap, typename NamedParameters>
 Fairing_report fair(TriangleMesh& tm, VertexPointMap vpm, AttributeMap attributes, const NamedParameters& np)
 {
   using parameters::choose_parameter;
   using parameters::get_parameter;
   typedef typename boost::graph_traits<TriangleMesh>::vertex_descriptor vertex_descriptor;
-  typedef typename boost::property_traits<VertexPointMap>::value_type Point;
   CGAL::Real_timer total;
   total.start();
 
@@ -276,22 +351,8 @@ Fairing_report fair(TriangleMesh& tm, VertexPointMap vpm, AttributeMap attribute
 
   // the units of relative parameters, per connected component; the noise, from the mesh itself
   const Mesh_components components = make_mesh_components(*layer.topology, n, layer.real_faces);
-  std::vector<double> component_edge(components.count, 0.0), edges_counted(components.count, 0.0);
-  for(std::size_t f = 0; f < layer.real_faces; ++f)
-    for(int k = 0; k < 3; ++k)
-    {
-      const auto& t = layer.topology->face(f);
-      component_edge[std::size_t(components.of_face[f])] += (X.row(t[k]).head(3) - X.row(t[(k + 1) % 3]).head(3)).norm();
-      edges_counted[std::size_t(components.of_face[f])] += 1;
-    }
-  double edge_sum = 0, edge_count = 0;
-  for(std::size_t c = 0; c < components.count; ++c)
-  {
-    edge_sum += component_edge[c];
-    edge_count += edges_counted[c];
-    component_edge[c] /= edges_counted[c];
-  }
-  const double mean_edge = edge_count > 0 ? edge_sum / edge_count : 0.0;
+  std::vector<double> component_edge;
+  const double mean_edge = component_mean_edges(*layer.topology, layer.real_faces, components, X, component_edge);
   std::vector<bool> sampled(n);
   for(std::size_t i = 0; i < n; ++i) sampled[i] = !constrained[i] && !border[i];
   // impulsive noise: with the automatic stopping rule, isolated spikes go back to their rings' centroids
@@ -318,27 +379,10 @@ Fairing_report fair(TriangleMesh& tm, VertexPointMap vpm, AttributeMap attribute
     s.local_time_scale = true;
     const bool tensor_chosen = is_automatic_tensor(tensor);
     if(tensor_chosen) choose_tensor(tensor, a.lambda, a.epsilon);
-    char text[400];
-    std::snprintf(text, sizeof text, "noise %.3g h (robust estimate over %zu vertices); time step %.3g h^%d per step until the surface "
-                  "has moved by %.3g x the noise%s", noise.relative_sigma(), noise.number_of_samples(), s.time_step, s.order,
-                  s.stopping.noise_discrepancy, tensor_chosen ? "" : "; the tensor given");
-    choices = text;
-    if(removed_spikes > 0)
-    {
-      std::snprintf(text, sizeof text, "; first %zu isolated spikes (%.2g%% of the vertices: impulsive noise) moved to the centroids of "
-                    "their rings", removed_spikes, 100.0 * double(removed_spikes) / double(n));
-      choices += text;
-    }
-    if(tensor_chosen)
-    {
-      std::snprintf(text, sizeof text, "; anisotropic tensor: principal curvatures above %.3g / h are features, read on M_eps, "
-                    "the surface after an isotropic step of %.3g h^2", a.lambda, a.epsilon);
-      choices += text;
-    }
-    if(mode != Attribute_mode::ATTRIBUTES_ONLY && (tensor_chosen || std::is_same<decltype(tensor), Isotropic_diffusion_tensor>::value))
-      choices += "; the isotropic flow's time step follows the mesh's density (h: the edge length around each vertex)";
-    else if(mode != Attribute_mode::ATTRIBUTES_ONLY && std::is_same<decltype(tensor), Uniform_diffusion_tensor>::value)
-      choices += "; the uniform flow's time step follows the mesh's density (h: the edge length around each vertex)";
+    const char* scaled_flow = mode == Attribute_mode::ATTRIBUTES_ONLY ? nullptr
+                              : tensor_chosen || std::is_same<decltype(tensor), Isotropic_diffusion_tensor>::value ? "isotropic"
+                              : std::is_same<decltype(tensor), Uniform_diffusion_tensor>::value ? "uniform" : nullptr;
+    choices = automatic_choices(noise, s, tensor_chosen, removed_spikes, n, scaled_flow);
   }
 
   Fairing_report report;
@@ -390,11 +434,8 @@ Fairing_report fair(TriangleMesh& tm, VertexPointMap vpm, AttributeMap attribute
     made_probe = probed_input(input, estimate_normals, noise_sigma, risk_probe_values(n));
     return made_probe;
   };
-  if(element == Finite_element::LOOP)
-  {
-    Ghosted_patch_cache cache(layer, spec);
-    boundary_held = hold(boundary_constrained_vertices(layer, cache, boundary == Boundary_handling::HOLD_BOUNDARY_CURVE));
-    setup_seconds = setup.time();
+  // the runs on one element's cache: the default run's first, then its comparison (Smoother_selection.h)
+  const auto fair_with = [&](const auto& cache, bool loop) {
     // the written positions of control points Y of a run from `start`
     const auto limit_written = [&](Control_matrix& Y, const Control_matrix& start, double limit_weight) {
       const Control_matrix extended = layer.extend(Y);
@@ -403,7 +444,8 @@ Fairing_report fair(TriangleMesh& tm, VertexPointMap vpm, AttributeMap attribute
       if(limit_weight < 1) Y.leftCols(3) = start.leftCols(3) + limit_weight * (Y.leftCols(3) - start.leftCols(3));
     };
     // `probe`: a probed start carried along (Ride_along_probe.h; empty: made by make_probe), replaced by the
-    // probe's written positions (empty when it could not ride along)
+    // probe's written positions (empty when it could not ride along). The linear element writes its control
+    // points: no limit surface to approach
     auto run = [&](const char* name, const auto& t, Control_matrix& Y, int order, const Control_matrix& start, Control_matrix* control,
                    std::size_t fixed_steps = 0, Control_matrix* probe = nullptr) {
       Y = start;
@@ -415,6 +457,12 @@ Fairing_report fair(TriangleMesh& tm, VertexPointMap vpm, AttributeMap attribute
                                      probe && !make ? &probe_start : nullptr, probe, make ? &make_probe : nullptr);
       if(make) probe_start = made_probe;
       steps_left -= (std::min)(steps_left, r.steps.size());
+      if(!loop)
+      {
+        bound_written(Y, start, r);
+        if(control) *control = Y;
+        return r;
+      }
       r.limit_weight = limit_weight;
       if(control) *control = Y;
       if(r.succeeded() && output == Output_positions::LIMIT_SURFACE)
@@ -432,32 +480,20 @@ Fairing_report fair(TriangleMesh& tm, VertexPointMap vpm, AttributeMap attribute
     if(select_tensor)
       select_smoother(run, tensor, layer, input, noise_sigma, X, wants_control ? &control_points : nullptr, report, choices, steps_left,
                       estimate_normals, anisotropic_probe);
+  };
+  if(element == Finite_element::LOOP)
+  {
+    Ghosted_patch_cache cache(layer, spec);
+    boundary_held = hold(boundary_constrained_vertices(layer, cache, boundary == Boundary_handling::HOLD_BOUNDARY_CURVE));
+    setup_seconds = setup.time();
+    fair_with(cache, true);
   }
   else
   {
     Linear_element_cache cache(*layer.topology, layer.real_faces);
     boundary_held = hold(border);
     setup_seconds = setup.time();
-    auto run = [&](const char* name, const auto& t, Control_matrix& Y, int order, const Control_matrix& start, Control_matrix* control,
-                   std::size_t fixed_steps = 0, Control_matrix* probe = nullptr) {
-      Y = start;
-      double limit_weight = 1;   // the linear element writes its control points: no limit surface to approach
-      const bool make = probe && probe->size() == 0;
-      const Control_matrix probe_start = probe && !make ? *probe : Control_matrix();
-      Fairing_report r = run_stepper(cache, ordering, components, component_edge, mean_edge, Y, mode, constrained, border, t,
-                                     begin_run(name, order, fixed_steps), counted_callback, setup_seconds, limit_weight,
-                                     probe && !make ? &probe_start : nullptr, probe, make ? &make_probe : nullptr);
-      steps_left -= (std::min)(steps_left, r.steps.size());
-      bound_written(Y, start, r);
-      if(control) *control = Y;
-      return r;
-    };
-    Control_matrix anisotropic_probe;   // empty: made by the run itself (make_probe)
-    report = run(select_tensor ? "anisotropic flow" : "", tensor, X, s.order, input, wants_control ? &control_points : nullptr, 0,
-                 select_tensor ? &anisotropic_probe : nullptr);
-    if(select_tensor)
-      select_smoother(run, tensor, layer, input, noise_sigma, X, wants_control ? &control_points : nullptr, report, choices, steps_left,
-                      estimate_normals, anisotropic_probe);
+    fair_with(cache, false);
   }
   if(mode == Attribute_mode::COUPLED && A.cols() > 0) X.rightCols(A.cols()) /= attribute_weight;
   if(mode == Attribute_mode::COUPLED && A.cols() > 0 && report.status == Fairing_status::DEGENERATE_METRIC)
@@ -472,7 +508,7 @@ Fairing_report fair(TriangleMesh& tm, VertexPointMap vpm, AttributeMap attribute
   report.attribute_mode = mode;
   report.attribute_dimension = std::size_t(A.cols());
   report.setup_seconds = setup_seconds;
-  report.mean_edge_length = mean_edge_length(im.ghost_layer(), P);
+  report.mean_edge_length = mean_edge;
   report.automatic_parameters = automatic;
   report.choices = choices;
   report.noise_level = noise.relative_sigma();
@@ -481,18 +517,7 @@ Fairing_report fair(TriangleMesh& tm, VertexPointMap vpm, AttributeMap attribute
 
   if(report.succeeded())
   {
-    Control_matrix result(X.rows(), X.cols());   // back to the order of vertices(tm)
-    for(std::size_t i = 0; i < n; ++i) result.row(ordering.old_of_new_vertex[i]) = X.row(Eigen::Index(i));
-    // neither the user's constrained vertices nor boundary or isolated vertices are written
-    std::vector<bool> keep(n);
-    for(std::size_t i = 0; i < n; ++i) keep[std::size_t(ordering.old_of_new_vertex[i])] = border[i] || isolated[i];
-    for(std::size_t i = 0; i < n; ++i)
-    {
-      keep[i] = keep[i] || bool(get(vcm, im.vertex(i)));
-      const Eigen::Index r = Eigen::Index(i);
-      if(!keep[i] && mode != Attribute_mode::ATTRIBUTES_ONLY) put(vpm, im.vertex(i), Point(result(r, 0), result(r, 1), result(r, 2)));
-    }
-    if(A.cols() > 0) write_attribute_columns(im, attributes, result, 3, keep);
+    write_back(im, ordering.old_of_new_vertex, X, mode, border, isolated, vcm, vpm, attributes);
     write_control_points(im, control_map, control_points, ordering.old_of_new_vertex);
     if(A.cols() > 0 && control_points.cols() == 3 + A.cols())
     {

@@ -76,12 +76,17 @@ Fairing_parameters read_fairing_parameters(const NamedParameters& np, bool has_a
   s.fidelity_weight = absolute_w ? double(choose_parameter(get_parameter(np, internal_np::fidelity_weight), 0.0))
                                  : double(choose_parameter(get_parameter(np, internal_np::relative_fidelity_weight), 0.0));
   check_parameter(std::isfinite(s.fidelity_weight) && s.fidelity_weight >= 0, "the fidelity weight must be finite and >= 0");
-  const bool relative_bound = !is_default_parameter<NamedParameters, internal_np::maximum_deviation_t>::value;
+  // relative_maximum_deviation, or its deprecated spelling maximum_deviation; or absolute_maximum_deviation
+  const bool relative_bound = !is_default_parameter<NamedParameters, internal_np::relative_maximum_deviation_t>::value;
+  const bool old_bound = !is_default_parameter<NamedParameters, internal_np::maximum_deviation_t>::value;
   const bool absolute_bound = !is_default_parameter<NamedParameters, internal_np::absolute_maximum_deviation_t>::value;
-  check_parameter(!(relative_bound && absolute_bound), "give either maximum_deviation or absolute_maximum_deviation, not both");
+  check_parameter(int(relative_bound) + int(old_bound) + int(absolute_bound) <= 1,
+                  "give one of relative_maximum_deviation and absolute_maximum_deviation (maximum_deviation: the relative one's "
+                  "deprecated spelling), not more");
   s.relative_deviation = !absolute_bound;
   s.maximum_deviation = absolute_bound ? double(choose_parameter(get_parameter(np, internal_np::absolute_maximum_deviation), 0.0))
-                                       : double(choose_parameter(get_parameter(np, internal_np::maximum_deviation), 0.0));
+                        : old_bound    ? double(choose_parameter(get_parameter(np, internal_np::maximum_deviation), 0.0))
+                                       : double(choose_parameter(get_parameter(np, internal_np::relative_maximum_deviation), 0.0));
   // 0: no bound
   check_parameter(std::isfinite(s.maximum_deviation) && s.maximum_deviation >= 0, "the maximum deviation must be finite and >= 0");
   s.attribute_maximum_deviation = double(choose_parameter(get_parameter(np, internal_np::attribute_maximum_deviation), 0.0));

@@ -129,8 +129,29 @@ public:
   Solve_statistics solve(const Product& product, const Eigen::VectorXd& diagonal, const Control_matrix& B, Control_matrix& X)
   {
     Solve_statistics st;
+    if(!start(product, diagonal, B, X, st)) return st;
+    int it = 0;
+    while(!stopped(it, st))
+    {
+      ++it;
+      if(!iterate(product, X))
+      {
+        st.ok = false;
+        st.message = "conjugate gradients broke down (the matrix is not positive definite)";
+        break;
+      }
+    }
+    return finish(st, product, B, X, bnorm_, it);
+  }
+
+private:
+  // the preconditioner, the first residual and direction, and the norms the iterations are judged by
+  template <typename Product>
+  bool start(const Product& product, const Eigen::VectorXd& diagonal, const Control_matrix& B, const Control_matrix& X,
+             Solve_statistics& st)
+  {
     const Eigen::Index n = B.rows(), k = B.cols();
-    Eigen::VectorXd inv_diag(n);
+    inv_diag_.resize(n);
     for(Eigen::Index i = 0; i < n; ++i)
     {
       const double d = diagonal[i];
@@ -138,114 +159,115 @@ public:
       {
         st.ok = false;
         st.message = "the system matrix has a non-positive diagonal entry at unknown " + std::to_string(i);
-        return st;
+        return false;
       }
-      inv_diag[i] = 1.0 / d;
+      inv_diag_[i] = 1.0 / d;
     }
     product(X, AP_);
     R_ = B - AP_;
-    P_ = inv_diag.asDiagonal() * R_;
+    P_ = inv_diag_.asDiagonal() * R_;
     const std::size_t kk = std::size_t(k);
-    std::vector<double> bnorm(kk), rz(kk), rnorm(kk);
-    std::vector<char> active(kk, 1);
+    bnorm_.assign(kk, 0.0);
+    rz_.assign(kk, 0.0);
+    rnorm_.assign(kk, 0.0);
+    active_.assign(kk, 1);
     alpha_.assign(kk, 0.0);
     beta_.assign(kk, 0.0);
     for(Eigen::Index c = 0; c < k; ++c)
     {
-      bnorm[std::size_t(c)] = B.col(c).norm();
-      rz[std::size_t(c)] = R_.col(c).dot(P_.col(c));
-      rnorm[std::size_t(c)] = R_.col(c).norm();
+      bnorm_[std::size_t(c)] = B.col(c).norm();
+      rz_[std::size_t(c)] = R_.col(c).dot(P_.col(c));
+      rnorm_[std::size_t(c)] = R_.col(c).norm();
     }
-    auto converged = [&](Eigen::Index c) {
-      return rnorm[std::size_t(c)] <= tolerance_ * bnorm[std::size_t(c)] || rnorm[std::size_t(c)] == 0;
-    };
-    const std::vector<double> rnorm0 = rnorm;
-    // the iterations a column needs at its mean rate so far (from trial_iterations on: CG's first
-    // iterations are not its pace; its later ones are faster if anything, so this errs toward giving way)
-    auto predicted = [&](Eigen::Index c, int done) {
-      const std::size_t cc = std::size_t(c);
-      const double reached = rnorm[cc] / rnorm0[cc], wanted = tolerance_ * bnorm[cc] / rnorm0[cc];
-      return reached < 1 ? done * std::log(wanted) / std::log(reached) : HUGE_VAL;
-    };
-    int it = 0;
-    for(;;)
-    {
-      bool any = false;
-      for(Eigen::Index c = 0; c < k; ++c)
-        if(active[std::size_t(c)] && converged(c)) active[std::size_t(c)] = 0;
-        else any = any || active[std::size_t(c)];
-      if(!any) break;
-      if(it == max_iterations_)
-      {
-        st.ok = false;
-        st.message = "conjugate gradients did not converge in " + std::to_string(max_iterations_) + " iterations";
-        break;
-      }
-      if(give_up_on_rate_ && it >= automatic_cholesky_trial_iterations && it % 25 == 0)
-      {
-        bool slow = false;
-        for(Eigen::Index c = 0; c < k; ++c) slow = slow || (active[std::size_t(c)] && predicted(c, it) > max_iterations_);
-        if(slow)
-        {
-          st.ok = false;
-          st.message = "conjugate gradients would not converge in " + std::to_string(max_iterations_) + " iterations at their rate";
-          break;
-        }
-      }
-      ++it;
-      product(P_, AP_);
-      // the vector work in row chunks on every core, fused into two passes over the rows
-      const double* p = P_.data();
-      const double* ap = AP_.data();
-      chunked_sums(n, k, [&](Eigen::Index i, double* sums) {
-        for(Eigen::Index c = 0; c < k; ++c) sums[c] += p[i * k + c] * ap[i * k + c];
-      }, pap_);
-      for(Eigen::Index c = 0; c < k; ++c)
-      {
-        const std::size_t cc = std::size_t(c);
-        alpha_[cc] = 0;
-        if(!active[cc]) continue;
-        if(!(pap_[cc] > 0) || !std::isfinite(pap_[cc]))
-        {
-          st.ok = false;
-          st.message = "conjugate gradients broke down (the matrix is not positive definite)";
-          return finish(st, product, B, X, bnorm, it);
-        }
-        alpha_[cc] = rz[cc] / pap_[cc];
-      }
-      double* x = X.data();
-      double* r = R_.data();
-      const double* id = inv_diag.data();
-      chunked_sums(n, 2 * k, [&](Eigen::Index i, double* sums) {   // sums: r.z, then r.r, per column
-        for(Eigen::Index c = 0; c < k; ++c)
-        {
-          if(!active[std::size_t(c)]) continue;
-          const Eigen::Index e = i * k + c;
-          x[e] += alpha_[std::size_t(c)] * p[e];
-          r[e] -= alpha_[std::size_t(c)] * ap[e];
-          sums[c] += r[e] * r[e] * id[i];
-          sums[k + c] += r[e] * r[e];
-        }
-      }, sums_);
-      for(Eigen::Index c = 0; c < k; ++c)
-      {
-        const std::size_t cc = std::size_t(c);
-        beta_[cc] = active[cc] ? sums_[cc] / rz[cc] : 0.0;
-        if(!active[cc]) continue;
-        rz[cc] = sums_[cc];
-        rnorm[cc] = std::sqrt(sums_[std::size_t(k) + cc]);
-      }
-      double* pw = P_.data();
-      parallel_blocks(n, [&](Eigen::Index begin, Eigen::Index end) {
-        for(Eigen::Index i = begin; i < end; ++i)
-          for(Eigen::Index c = 0; c < k; ++c)
-            if(active[std::size_t(c)]) pw[i * k + c] = id[i] * r[i * k + c] + beta_[std::size_t(c)] * pw[i * k + c];
-      });
-    }
-    return finish(st, product, B, X, bnorm, it);
+    rnorm0_ = rnorm_;
+    return true;
   }
 
-private:
+  // whether the iterations end after `it`: every column converged, the limit reached, or (with a
+  // factorisation standing by) a column's rate says that the limit would not be enough
+  bool stopped(int it, Solve_statistics& st)
+  {
+    const auto converged = [this](std::size_t c) { return rnorm_[c] <= tolerance_ * bnorm_[c] || rnorm_[c] == 0; };
+    // the iterations a column needs at its mean rate so far (from trial_iterations on: CG's first
+    // iterations are not its pace; its later ones are faster if anything, so this errs toward giving way)
+    const auto predicted = [this](std::size_t c, int done) {
+      const double reached = rnorm_[c] / rnorm0_[c], wanted = tolerance_ * bnorm_[c] / rnorm0_[c];
+      return reached < 1 ? done * std::log(wanted) / std::log(reached) : HUGE_VAL;
+    };
+    bool any = false;
+    for(std::size_t c = 0; c < active_.size(); ++c)
+      if(active_[c] && converged(c)) active_[c] = 0;
+      else any = any || active_[c];
+    if(!any) return true;
+    if(it == max_iterations_)
+    {
+      st.ok = false;
+      st.message = "conjugate gradients did not converge in " + std::to_string(max_iterations_) + " iterations";
+      return true;
+    }
+    if(give_up_on_rate_ && it >= automatic_cholesky_trial_iterations && it % 25 == 0)
+    {
+      bool slow = false;
+      for(std::size_t c = 0; c < active_.size(); ++c) slow = slow || (active_[c] && predicted(c, it) > max_iterations_);
+      if(slow)
+      {
+        st.ok = false;
+        st.message = "conjugate gradients would not converge in " + std::to_string(max_iterations_) + " iterations at their rate";
+        return true;
+      }
+    }
+    return false;
+  }
+
+  // one iteration on the active columns; false when it breaks down (p^T A p not positive)
+  template <typename Product>
+  bool iterate(const Product& product, Control_matrix& X)
+  {
+    const Eigen::Index n = X.rows(), k = X.cols();
+    product(P_, AP_);
+    // the vector work in row chunks on every core, fused into two passes over the rows
+    const double* p = P_.data();
+    const double* ap = AP_.data();
+    chunked_sums(n, k, [&](Eigen::Index i, double* sums) {
+      for(Eigen::Index c = 0; c < k; ++c) sums[c] += p[i * k + c] * ap[i * k + c];
+    }, pap_);
+    for(std::size_t c = 0; c < active_.size(); ++c)
+    {
+      alpha_[c] = 0;
+      if(!active_[c]) continue;
+      if(!(pap_[c] > 0) || !std::isfinite(pap_[c])) return false;
+      alpha_[c] = rz_[c] / pap_[c];
+    }
+    double* x = X.data();
+    double* r = R_.data();
+    const double* id = inv_diag_.data();
+    chunked_sums(n, 2 * k, [&](Eigen::Index i, double* sums) {   // sums: r.z, then r.r, per column
+      for(Eigen::Index c = 0; c < k; ++c)
+      {
+        if(!active_[std::size_t(c)]) continue;
+        const Eigen::Index e = i * k + c;
+        x[e] += alpha_[std::size_t(c)] * p[e];
+        r[e] -= alpha_[std::size_t(c)] * ap[e];
+        sums[c] += r[e] * r[e] * id[i];
+        sums[k + c] += r[e] * r[e];
+      }
+    }, sums_);
+    for(std::size_t c = 0; c < active_.size(); ++c)
+    {
+      beta_[c] = active_[c] ? sums_[c] / rz_[c] : 0.0;
+      if(!active_[c]) continue;
+      rz_[c] = sums_[c];
+      rnorm_[c] = std::sqrt(sums_[std::size_t(k) + c]);
+    }
+    double* pw = P_.data();
+    parallel_blocks(n, [&](Eigen::Index begin, Eigen::Index end) {
+      for(Eigen::Index i = begin; i < end; ++i)
+        for(Eigen::Index c = 0; c < k; ++c)
+          if(active_[std::size_t(c)]) pw[i * k + c] = id[i] * r[i * k + c] + beta_[std::size_t(c)] * pw[i * k + c];
+    });
+    return true;
+  }
+
   // the reported residual is recomputed from scratch, not the recurrence's
   template <typename Product>
   Solve_statistics& finish(Solve_statistics& st, const Product& product, const Control_matrix& B,
@@ -285,7 +307,9 @@ private:
   int max_iterations_;
   bool give_up_on_rate_ = false;
   Control_matrix R_, P_, AP_;
-  std::vector<double> alpha_, beta_, pap_, sums_, partial_;
+  Eigen::VectorXd inv_diag_;
+  std::vector<double> alpha_, beta_, pap_, sums_, partial_, bnorm_, rz_, rnorm_, rnorm0_;
+  std::vector<char> active_;
 };
 
 /// A factorising solver of the symmetric positive definite system (the matrix stored in full): the
