@@ -57,7 +57,7 @@ Result run(const Setup& m, const AFI::Ghosted_patch_cache& cache, const AFI::Noi
   s.maximum_steps = 200;
   s.stopping = AF::Stopping_criteria::automatic();
   s.noise = &noise;
-  s.limit_output = s.limit_written = true;
+  s.measure_limit_surface = s.limit_written = true;
   s.maximum_deviation = deviation;
   const std::size_t n = std::size_t(m.X.rows());
   const std::vector<bool> constrained(n, false), border(n, false);

@@ -118,8 +118,8 @@ int run(const Options& o, Run_record& r)
 
   // Exact limit normals and the curvature need the faired control points: see the comment at the top of
   // this file. With --mode attributes the geometry is fixed: positions and input normals are written as they are.
-  const bool limit_output = o.element == AF::Finite_element::LOOP && o.output_positions == AF::Output_positions::LIMIT_SURFACE;
-  const bool exact_limit_normals = info.has_normals && limit_output && fair_geometry;
+  const bool limit_written = o.element == AF::Finite_element::LOOP && o.output_positions == AF::Output_positions::LIMIT_SURFACE;
+  const bool exact_limit_normals = info.has_normals && limit_written && fair_geometry;
   std::vector<Point> control_points(mesh.number_of_vertices());
   std::vector<unsigned char> held(mesh.number_of_vertices(), 0);
   if(!o.hold.empty()) r.held_vertices = read_held_vertices(mesh, o.hold, held);

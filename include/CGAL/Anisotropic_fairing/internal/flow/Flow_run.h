@@ -73,7 +73,7 @@ private:
   {
     report_.vertices = std::size_t(Z_.rows());
     report_.constrained_vertices = std::size_t(Z_.rows()) - t_.block_.size();
-    t_.limit_output_ = s_.limit_output;
+    t_.measure_limit_surface_ = s_.measure_limit_surface;
     clock_.start();
     Assembly_statistics a;
     if(!t_.set_units(X_, metric_columns_, s_, tensor_, report_, a, total_)) return false;
@@ -127,7 +127,7 @@ private:
     initial_ = Surface_soundness{ a, 0, 0, true };
     if(!fixed_)
     {
-      t_.output_positions(Z_, Y_);
+      t_.measured_positions(Z_, Y_);
       count_folds(t_.layer_, Cache::has_second_derivatives, t_.components_.of_face, t_.component_edge_, Z_, initial_);
       input_folds_ = count_folded_edges(*t_.layer_.topology, t_.layer_.real_faces, Z0_, t_.components_.of_face, t_.component_edge_);
     }
@@ -165,13 +165,13 @@ private:
   // the written positions of control points W: the limit points or W itself (what the bound holds)
   const Control_matrix& written(const Control_matrix& W)
   {
-    if(fixed_ || s_.limit_written != t_.limit_output_)
+    if(fixed_ || s_.limit_written != t_.measure_limit_surface_)
     {
       if(s_.limit_written) limit_points(t_.layer_, W, Yb_);
       else Yb_ = W;
       return Yb_;
     }
-    t_.output_positions(W, Y_);
+    t_.measured_positions(W, Y_);
     return Y_;
   }
 
@@ -192,7 +192,7 @@ private:
     double theta = -1;   // >= 0: the run ends this far into the step, where the noise level is reached
     if(noise_stop_ && finite && !bound_->active())
     {
-      t_.output_positions(Zc_, Y_);
+      t_.measured_positions(Zc_, Y_);
       if(Y_.allFinite())
       {
         candidate_discrepancy_ = s_.noise->relative_displacement(Y_, Z0_, {});
@@ -201,7 +201,7 @@ private:
         {
           // the surface the run ends on is the one judged, and it needs no matrices
           theta = fraction_reaching(discrepancy_, candidate_discrepancy_, target_);
-          if(theta < 1) { Zc_ = Z_ + theta * (Zc_ - Z_); t_.output_positions(Zc_, Y_); t_.probe_.shorten(theta); }
+          if(theta < 1) { Zc_ = Z_ + theta * (Zc_ - Z_); t_.measured_positions(Zc_, Y_); t_.probe_.shorten(theta); }
           last_step = true;
         }
       }
@@ -306,7 +306,7 @@ private:
             fail(report_, Fairing_status::SOLVER_FAILED, "after step " + std::to_string(step) + ": " + t_.operator_.error(), total_);
             return Outcome::FAILED;
           }
-          t_.output_positions(Zc_, Y_);
+          t_.measured_positions(Zc_, Y_);
           candidate_.finite = Y_.allFinite();
         }
         verdict = judge_step(initial_, accepted_, input_folds_, *lowest_H_, candidate_, why);
@@ -408,7 +408,7 @@ private:
       st.max_displacement = 0;
       for(Eigen::Index i = 0; i < Z_.rows(); ++i)
         st.max_displacement = std::max(st.max_displacement, (Z_.row(i) - Z0_.row(i)).head(metric_columns_).norm());
-      t_.output_positions(Z_, Y_);
+      t_.measured_positions(Z_, Y_);
       st.noise_displacement = s_.noise->relative_displacement(Y_, Z0_, {});
       report_.stop_reason = Stop_reason::NOISE_LEVEL;
     };
@@ -454,7 +454,7 @@ private:
       report_.stop_reason = Stop_reason::STEP_REJECTED;
       report_.message = "the surface folded at " + std::to_string(folds) + " edges (the input at " + std::to_string(allowed_folds_) +
                         "); the run ends on the last surface without new folds (step " + std::to_string(unfolded_steps_) + ")";
-      if(noise_stop_) { t_.output_positions(Z_, Y_); report_.noise_displacement = s_.noise->relative_displacement(Y_, Z0_, {}); }
+      if(noise_stop_) { t_.measured_positions(Z_, Y_); report_.noise_displacement = s_.noise->relative_displacement(Y_, Z0_, {}); }
     }
     report_.bound_fidelity_weight = bound_->largest_weight();
     report_.bound_held_vertices = bound_->held_rows();

@@ -31,7 +31,7 @@ struct Stepper_settings
   int solver_maximum_iterations = 10000;
   Direct_solver_factory direct_solver;   // the factorisation (empty: Sparse_cholesky)
   bool verbose = false;
-  bool limit_output = false;        // the positions measured are the Loop limit points of the control points
+  bool measure_limit_surface = false;   // the positions measured are the Loop limit points of the control points
   bool limit_written = false;       // the positions written are (a bound holds them: Deviation_bound.h)
   const Noise_estimate* noise = nullptr;   // of the input, in the stepper's numbering (noise criterion)
   int maximum_rejections = 5;       // retries of a step, each with a quarter of the time step

@@ -205,10 +205,10 @@ private:
     return true;
   }
 
-  // the positions written for X: its Loop limit points, or X itself
-  void output_positions(const Control_matrix& X, Control_matrix& Y) const
+  // the positions the stopping rules and the soundness measure for X: its Loop limit points, or X itself
+  void measured_positions(const Control_matrix& X, Control_matrix& Y) const
   {
-    if(limit_output_) limit_points(layer_, X, Y);
+    if(measure_limit_surface_) limit_points(layer_, X, Y);
     else Y = X;
   }
 
@@ -250,7 +250,7 @@ private:
   double mean_edge_;
   Step_units units_;
   std::vector<double> curvature_bound_; // per component (Assembly_statistics::bounded_H_integral)
-  bool limit_output_ = false;
+  bool measure_limit_surface_ = false;
   double moved_relative_ = 0, max_relative_ = 0;
   double limit_weight_ = 1;
   std::vector<double> unknown_scale_;   // per row, with several components (else empty)

@@ -125,101 +125,11 @@ public:
   /// One step of Loop subdivision restricted to what the child's 1-ring needs.
   Loop_local_patch child(Child which) const
   {
-    Loop_local_patch c;
-    c.m_ = m_;
-    std::vector<int> vertex_point(nl_, -1);
-    std::vector<int> edge_point(std::size_t(nl_) * nl_, -1);   // symmetric, by local ids
-    std::vector<Real> rows;                                      // new W, grown row by row
-
-    auto new_row = [&]() -> int {
-      rows.resize(rows.size() + m_, 0.0);
-      return int(rows.size() / m_) - 1;
-    };
-    auto axpy = [&](int dst, Real s, int src) {
-      Real* d = rows.data() + std::size_t(dst) * m_;
-      const Real* x = W_.data() + std::size_t(src) * m_;
-      for(int j = 0; j < m_; ++j) d[j] += s * x[j];
-    };
-
-    auto is_target = [&](int v) { return v == target_[0] || v == target_[1] || v == target_[2]; };
-
-    // vertex points of a, b, c
-    for(int k = 0; k < 3; ++k)
-    {
-      const int v = target_[k];
-      const int n = valence_[v];
-      const Real beta = loop_vertex_weight<Real>(n);
-      const int r = new_row();
-      axpy(r, 1.0 - n * beta, v);
-      for(int w : neighbours_ccw(v, first_neighbour(v))) axpy(r, beta, w);
-      vertex_point[v] = r;
-    }
-    // edge points of every edge incident to a, b or c
-    for(const Tri& t : tris_)
-      for(int e = 0; e < 3; ++e)
-      {
-        const int p = t[e], q = t[(e + 1) % 3];
-        if(!is_target(p) && !is_target(q)) continue;
-        int& slot = edge_point[std::size_t(std::min(p, q)) * nl_ + std::max(p, q)];
-        if(slot >= 0) continue;
-        const int x = third(p, q), y = third(q, p);
-        if(x < 0 || y < 0) throw std::logic_error("Loop_local_patch: open fan at an edge");
-        slot = new_row();
-        axpy(slot, Real(0.375), p); axpy(slot, Real(0.375), q);
-        axpy(slot, Real(0.125), x); axpy(slot, Real(0.125), y);
-      }
-    auto ep = [&](int p, int q) { return edge_point[std::size_t(std::min(p, q)) * nl_ + std::max(p, q)]; };
-
-    // children of every local triangle whose three vertices were computed
-    std::vector<Tri> kids;
-    for(const Tri& t : tris_)
-    {
-      const int i = t[0], j = t[1], k = t[2];
-      const int vi = vertex_point[i], vj = vertex_point[j], vk = vertex_point[k];
-      const int eij = ep(i, j), ejk = ep(j, k), eki = ep(k, i);
-      const Tri cand[4] = { {vi, eij, eki}, {vj, ejk, eij}, {vk, eki, ejk}, {eij, ejk, eki} };
-      for(const Tri& ct : cand)
-        if(ct[0] >= 0 && ct[1] >= 0 && ct[2] >= 0) kids.push_back(ct);
-    }
-
-    const int a = target_[0], b = target_[1], cc = target_[2];
-    Tri nt;
-    switch(which)
-    {
-      case CHILD_A: nt = { vertex_point[a], ep(a, b), ep(cc, a) }; break;
-      case CHILD_B: nt = { ep(a, b), vertex_point[b], ep(b, cc) }; break;
-      case CHILD_C: nt = { ep(cc, a), ep(b, cc), vertex_point[cc] }; break;
-      default:      nt = { ep(b, cc), ep(cc, a), ep(a, b) }; break;
-    }
-
-    // keep the triangles incident to the new target, and compact the vertex ids
-    const int total = int(rows.size() / m_);
-    std::vector<int> remap(total, -1);
-    int used = 0;
-    for(int k = 0; k < 3; ++k) remap[nt[k]] = used++;   // target first: ids 0, 1, 2
-    for(const Tri& t : kids)
-    {
-      const bool incident = (t[0] == nt[0] || t[0] == nt[1] || t[0] == nt[2] ||
-                             t[1] == nt[0] || t[1] == nt[1] || t[1] == nt[2] ||
-                             t[2] == nt[0] || t[2] == nt[1] || t[2] == nt[2]);
-      if(!incident) continue;
-      Tri r;
-      for(int k = 0; k < 3; ++k)
-      {
-        if(remap[t[k]] < 0) remap[t[k]] = used++;
-        r[k] = remap[t[k]];
-      }
-      c.tris_.push_back(r);
-    }
-    c.nl_ = used;
-    c.W_.assign(std::size_t(used) * m_, Real(0));
-    for(int old = 0; old < total; ++old)
-      if(remap[old] >= 0)
-        std::copy(rows.begin() + std::size_t(old) * m_, rows.begin() + std::size_t(old + 1) * m_,
-                  c.W_.begin() + std::size_t(remap[old]) * m_);
-    c.target_ = { 0, 1, 2 };
-    c.build_adjacency();
-    return c;
+    Local_split split(nl_);
+    add_vertex_points(split);
+    add_edge_points(split);
+    const std::vector<Tri> kids = split_triangles(split);
+    return patch_around(m_, split.rows, kids, child_target(which, split));
   }
 
   /// Parameters in the child that contains (u, v), and the derivative factor d(child)/d(parent).
@@ -334,6 +244,148 @@ public:
   Loop_local_patch() = default;
 
 private:
+  /// The new vertices of one local 1-to-4 split: their W rows (one row of m_ weights per new
+  /// vertex, in creation order) and which new row each old vertex and old edge became (-1: none).
+  struct Local_split
+  {
+    std::vector<int> vertex_point;   // by old local id
+    std::vector<int> edge_point;     // symmetric, by old local ids (see edge_slot)
+    std::vector<Real> rows;          // new W, grown row by row
+
+    explicit Local_split(int nl)
+      : vertex_point(nl, -1), edge_point(std::size_t(nl) * nl, -1) {}
+  };
+
+  /// Index of the undirected edge {p, q} in an nl_ x nl_ table, so both directions share a slot.
+  std::size_t edge_slot(int p, int q) const { return std::size_t(std::min(p, q)) * nl_ + std::max(p, q); }
+
+  /// Whether local vertex v is a corner of the target.
+  bool is_target(int v) const { return v == target_[0] || v == target_[1] || v == target_[2]; }
+
+  /// Appends a zero row to `rows` and returns its index.
+  int new_row(std::vector<Real>& rows) const
+  {
+    rows.resize(rows.size() + m_, 0.0);
+    return int(rows.size() / m_) - 1;
+  }
+
+  /// rows[dst] += s * W[src]: a new vertex is a weighted sum of old vertices, each a row of W.
+  void add_scaled_row(std::vector<Real>& rows, int dst, Real s, int src) const
+  {
+    Real* d = rows.data() + std::size_t(dst) * m_;
+    const Real* x = W_.data() + std::size_t(src) * m_;
+    for(int j = 0; j < m_; ++j) d[j] += s * x[j];
+  }
+
+  /// The Loop vertex points of the target's corners a, b, c; only they have their whole 1-ring in
+  /// the patch, which the vertex rule needs.
+  void add_vertex_points(Local_split& split) const
+  {
+    std::vector<Real>& rows = split.rows;
+    for(int k = 0; k < 3; ++k)
+    {
+      const int v = target_[k];
+      const int n = valence_[v];
+      const Real beta = loop_vertex_weight<Real>(n);
+      const int r = new_row(rows);
+      add_scaled_row(rows, r, 1.0 - n * beta, v);
+      for(int w : neighbours_ccw(v, first_neighbour(v))) add_scaled_row(rows, r, beta, w);
+      split.vertex_point[v] = r;
+    }
+  }
+
+  /// The Loop edge points of every edge incident to a, b or c, each once; the edge rule needs both
+  /// triangles at the edge, which the closed fans of a, b and c guarantee.
+  void add_edge_points(Local_split& split) const
+  {
+    std::vector<Real>& rows = split.rows;
+    for(const Tri& t : tris_)
+      for(int e = 0; e < 3; ++e)
+      {
+        const int p = t[e], q = t[(e + 1) % 3];
+        if(!is_target(p) && !is_target(q)) continue;
+        int& slot = split.edge_point[edge_slot(p, q)];
+        if(slot >= 0) continue;
+        const int x = third(p, q), y = third(q, p);
+        if(x < 0 || y < 0) throw std::logic_error("Loop_local_patch: open fan at an edge");
+        slot = new_row(rows);
+        add_scaled_row(rows, slot, Real(0.375), p); add_scaled_row(rows, slot, Real(0.375), q);
+        add_scaled_row(rows, slot, Real(0.125), x); add_scaled_row(rows, slot, Real(0.125), y);
+      }
+  }
+
+  /// The children of every local triangle whose three new vertices were computed (the others
+  /// cannot be formed), in the ids of the split's rows.
+  std::vector<Tri> split_triangles(const Local_split& split) const
+  {
+    std::vector<Tri> kids;
+    for(const Tri& t : tris_)
+    {
+      const int i = t[0], j = t[1], k = t[2];
+      const int vi = split.vertex_point[i], vj = split.vertex_point[j], vk = split.vertex_point[k];
+      const int eij = split.edge_point[edge_slot(i, j)], ejk = split.edge_point[edge_slot(j, k)],
+                eki = split.edge_point[edge_slot(k, i)];
+      const Tri cand[4] = { {vi, eij, eki}, {vj, ejk, eij}, {vk, eki, ejk}, {eij, ejk, eki} };
+      for(const Tri& ct : cand)
+        if(ct[0] >= 0 && ct[1] >= 0 && ct[2] >= 0) kids.push_back(ct);
+    }
+    return kids;
+  }
+
+  /// The child `which` of the target, in the ids of the split's rows, oriented so that its
+  /// (xi1, xi2) are those that locate() gives.
+  Tri child_target(Child which, const Local_split& split) const
+  {
+    auto ep = [&](int p, int q) { return split.edge_point[edge_slot(p, q)]; };
+    const int a = target_[0], b = target_[1], cc = target_[2];
+    Tri nt;
+    switch(which)
+    {
+      case CHILD_A: nt = { split.vertex_point[a], ep(a, b), ep(cc, a) }; break;
+      case CHILD_B: nt = { ep(a, b), split.vertex_point[b], ep(b, cc) }; break;
+      case CHILD_C: nt = { ep(cc, a), ep(b, cc), split.vertex_point[cc] }; break;
+      default:      nt = { ep(b, cc), ep(cc, a), ep(a, b) }; break;
+    }
+    return nt;
+  }
+
+  /// The patch of m controls made of the triangles of `kids` incident to the new target `nt`, with
+  /// their vertices renumbered compactly (the target first: ids 0, 1, 2) and their W rows taken
+  /// from `rows`; dropping the rest keeps the next level of subdivision small.
+  static Loop_local_patch patch_around(int m, const std::vector<Real>& rows, const std::vector<Tri>& kids,
+                                       const Tri& nt)
+  {
+    Loop_local_patch c;
+    c.m_ = m;
+    const int total = int(rows.size() / m);
+    std::vector<int> remap(total, -1);
+    int used = 0;
+    for(int k = 0; k < 3; ++k) remap[nt[k]] = used++;   // target first: ids 0, 1, 2
+    for(const Tri& t : kids)
+    {
+      const bool incident = (t[0] == nt[0] || t[0] == nt[1] || t[0] == nt[2] ||
+                             t[1] == nt[0] || t[1] == nt[1] || t[1] == nt[2] ||
+                             t[2] == nt[0] || t[2] == nt[1] || t[2] == nt[2]);
+      if(!incident) continue;
+      Tri r;
+      for(int k = 0; k < 3; ++k)
+      {
+        if(remap[t[k]] < 0) remap[t[k]] = used++;
+        r[k] = remap[t[k]];
+      }
+      c.tris_.push_back(r);
+    }
+    c.nl_ = used;
+    c.W_.assign(std::size_t(used) * m, Real(0));
+    for(int old = 0; old < total; ++old)
+      if(remap[old] >= 0)
+        std::copy(rows.begin() + std::size_t(old) * m, rows.begin() + std::size_t(old + 1) * m,
+                  c.W_.begin() + std::size_t(remap[old]) * m);
+    c.target_ = { 0, 1, 2 };
+    c.build_adjacency();
+    return c;
+  }
+
   int first_neighbour(int v) const
   {
     for(const Tri& t : tris_)

@@ -91,62 +91,68 @@ struct Ghost_layer
   }
 };
 
-/// Builds the ghost layer of the triangle mesh (n vertices, faces). Throws Input_error for what the
-/// closed topology refuses too (non-manifold edges and vertices, including bow-tie boundary
-/// vertices, degenerate faces, interior valence < 3, and isolated vertices unless `allow_isolated`).
-inline Ghost_layer make_ghost_layer(std::size_t n, const std::vector<Triangle_topology::Face>& faces,
-                                    bool allow_isolated = false)
+/// Throws Input_error for the first face with a vertex index outside [0, n), before anything
+/// indexes by it.
+inline void check_vertex_indices(std::size_t n, const std::vector<Triangle_topology::Face>& faces)
 {
-  Ghost_layer gl;
-  gl.real_vertices = n;
-  gl.real_faces = faces.size();
-  auto key = &Triangle_topology::key;
   for(std::size_t f = 0; f < faces.size(); ++f)
     for(int k = 0; k < 3; ++k)
       if(faces[f][k] < 0 || std::size_t(faces[f][k]) >= n)
         throw Input_error(Input_error::INVALID_PARAMETER, f, "face " + std::to_string(f) + " has a vertex index out of range");
-  // the real mesh, its halfedges linked (degenerate faces and non-manifold edges refused), borders allowed
-  std::unique_ptr<Triangle_topology> real(new Triangle_topology(n, faces, 0, allow_isolated));
-  bool closed = true;
-  for(int h = 0; h < int(3 * faces.size()) && closed; ++h) closed = real->opposite(h) >= 0;
-  if(closed)
-  {
-    real->require_closed_fans();
-    gl.topology = std::move(real);
-    for(std::size_t v = 0; v < n; ++v)
-      if(gl.topology->outgoing(int(v)) < 0) gl.isolated_vertices.push_back(int(v));
-    return gl;
-  }
+}
 
-  std::vector<Triangle_topology::Face> ext = faces;
+/// Appends to gl.isolated_vertices, increasing, the real vertices without a face in gl.topology.
+inline void collect_isolated_vertices(Ghost_layer& gl, std::size_t n)
+{
+  for(std::size_t v = 0; v < n; ++v)
+    if(gl.topology->outgoing(int(v)) < 0) gl.isolated_vertices.push_back(int(v));
+}
+
+/// Builds the ghosts of a mesh with borders, one boundary fan at a time: the ghost rows (in
+/// gl.ghosts), the extended face list (the real faces, then the ghost faces) and each border
+/// edge's ghost, which the fans of both its endpoints share and so is made only once.
+struct Ghost_fan_closer
+{
+  Ghost_layer& gl;
+  std::size_t n;
+  std::vector<Triangle_topology::Face> ext;
   std::unordered_map<std::uint64_t, int> edge_ghost;   // boundary edge p->q -> ghost index
-  auto add_ghost = [&](Affine_row row) {
+
+  Ghost_fan_closer(Ghost_layer& layer, std::size_t real_vertices, const std::vector<Triangle_topology::Face>& faces)
+    : gl(layer), n(real_vertices), ext(faces) {}
+
+  /// Appends a ghost and returns its extended vertex index.
+  int add_ghost(Affine_row row)
+  {
     gl.ghosts.push_back(std::move(row));
     return int(n + gl.ghosts.size() - 1);
-  };
-  auto ghost_of_edge = [&](int p, int q, int r) {   // edge ghost of border edge p->q in real triangle (p,q,r)
-    auto it = edge_ghost.find(key(p, q));
+  }
+
+  /// The edge ghost of border edge p->q in real triangle (p,q,r), made with its triangle (q,p,g)
+  /// on first use.
+  int ghost_of_edge(int p, int q, int r)
+  {
+    auto it = edge_ghost.find(Triangle_topology::key(p, q));
     if(it != edge_ghost.end()) return it->second;
     const int g = add_ghost({ { p, 1.0 }, { q, 1.0 }, { r, -1.0 } });
-    edge_ghost.emplace(key(p, q), g);
+    edge_ghost.emplace(Triangle_topology::key(p, q), g);
     ext.push_back({ { q, p, g } });
     return g;
-  };
+  }
 
-  std::vector<char> on_boundary(n, 0);
-  for(int h = 0; h < int(3 * faces.size()); ++h)
+  /// Closes the fan of p for its border edge h = p->q (see the top of this file): the edge ghosts
+  /// g_0, g_m of both border edges, the c - 1 vertex ghosts and the c triangles between them.
+  void close_fan(const Triangle_topology& real, int h, std::size_t number_of_faces)
   {
-    if(real->opposite(h) >= 0) continue;
-    // h = p->q is a border edge: walk the fan of p counter-clockwise from p->r0 (= p->q) to the border edge r_m->p
-    const int p = real->source(h);
-    on_boundary[std::size_t(p)] = 1;
-    std::vector<int> r(1, real->target(h));
+    // walk the fan of p counter-clockwise from p->r0 (= p->q) to the border edge r_m->p
+    const int p = real.source(h);
+    std::vector<int> r(1, real.target(h));
     int g = h;
-    for(std::size_t guard = 0; guard <= faces.size(); ++guard)
+    for(std::size_t guard = 0; guard <= number_of_faces; ++guard)
     {
-      r.push_back(real->target(real->next(g)));          // g's face is (p, r_last, next)
-      const int back = real->opposite(real->prev(g));    // next->p, seen from the other side
-      if(back < 0) break;                                // r_m -> p is a border edge
+      r.push_back(real.target(real.next(g)));          // g's face is (p, r_last, next)
+      const int back = real.opposite(real.prev(g));    // next->p, seen from the other side
+      if(back < 0) break;                              // r_m -> p is a border edge
       g = back;
     }
     const int m = int(r.size()) - 1;
@@ -158,13 +164,14 @@ inline Ghost_layer make_ghost_layer(std::size_t n, const std::vector<Triangle_to
     fan.push_back(g0);
     for(std::size_t j = 0; j + 1 < fan.size(); ++j) ext.push_back({ { p, fan[j], fan[j + 1] } });
   }
-  for(std::size_t v = 0; v < n; ++v)
-    if(on_boundary[v]) gl.boundary_vertices.push_back(int(v));
-  gl.topology.reset(new Triangle_topology(gl.number_of_extended_vertices(), std::move(ext), n, allow_isolated));
-  for(std::size_t v = 0; v < n; ++v)
-    if(gl.topology->outgoing(int(v)) < 0) gl.isolated_vertices.push_back(int(v));
-  // boundary loops: the topology has checked that each boundary vertex has one fan, hence one
-  // outgoing border edge p -> q (whose edge ghost triangle is (q, p, g))
+};
+
+/// Counts gl.boundary_loops by following, from each boundary vertex not yet seen, the outgoing
+/// border edges p -> q (the keys of edge_ghost) until the loop closes; the topology has checked
+/// that each boundary vertex has one fan, hence one outgoing border edge.
+inline void count_boundary_loops(Ghost_layer& gl, std::size_t n,
+                                 const std::unordered_map<std::uint64_t, int>& edge_ghost)
+{
   std::vector<int> border_next(n, -1);
   for(const auto& e : edge_ghost) border_next[std::size_t(e.first >> 32)] = int(e.first & 0xffffffffu);
   std::vector<char> seen(n, 0);
@@ -174,6 +181,43 @@ inline Ghost_layer make_ghost_layer(std::size_t n, const std::vector<Triangle_to
     ++gl.boundary_loops;
     for(int w = v; w >= 0 && !seen[std::size_t(w)]; w = border_next[std::size_t(w)]) seen[std::size_t(w)] = 1;
   }
+}
+
+/// Builds the ghost layer of the triangle mesh (n vertices, faces). Throws Input_error for what the
+/// closed topology refuses too (non-manifold edges and vertices, including bow-tie boundary
+/// vertices, degenerate faces, interior valence < 3, and isolated vertices unless `allow_isolated`).
+inline Ghost_layer make_ghost_layer(std::size_t n, const std::vector<Triangle_topology::Face>& faces,
+                                    bool allow_isolated = false)
+{
+  Ghost_layer gl;
+  gl.real_vertices = n;
+  gl.real_faces = faces.size();
+  check_vertex_indices(n, faces);
+  // the real mesh, its halfedges linked (degenerate faces and non-manifold edges refused), borders allowed
+  std::unique_ptr<Triangle_topology> real(new Triangle_topology(n, faces, 0, allow_isolated));
+  bool closed = true;
+  for(int h = 0; h < int(3 * faces.size()) && closed; ++h) closed = real->opposite(h) >= 0;
+  if(closed)
+  {
+    real->require_closed_fans();
+    gl.topology = std::move(real);
+    collect_isolated_vertices(gl, n);
+    return gl;
+  }
+
+  Ghost_fan_closer closer(gl, n, faces);
+  std::vector<char> on_boundary(n, 0);
+  for(int h = 0; h < int(3 * faces.size()); ++h)
+  {
+    if(real->opposite(h) >= 0) continue;
+    on_boundary[std::size_t(real->source(h))] = 1;   // h is a border edge
+    closer.close_fan(*real, h, faces.size());
+  }
+  for(std::size_t v = 0; v < n; ++v)
+    if(on_boundary[v]) gl.boundary_vertices.push_back(int(v));
+  gl.topology.reset(new Triangle_topology(gl.number_of_extended_vertices(), std::move(closer.ext), n, allow_isolated));
+  collect_isolated_vertices(gl, n);
+  count_boundary_loops(gl, n, closer.edge_ghost);
   return gl;
 }
 

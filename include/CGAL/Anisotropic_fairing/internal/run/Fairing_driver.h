@@ -368,7 +368,7 @@ Fairing_report fair(TriangleMesh& tm, VertexPointMap vpm, AttributeMap attribute
   // run that writes control points (the tool does, to give exact limit normals) then stops where the
   // limit-surface run stops, and `limit_weight` says how far toward the limit points the latter writes
   s.limit_written = element == Finite_element::LOOP && output == Output_positions::LIMIT_SURFACE;
-  s.limit_output = element == Finite_element::LOOP &&
+  s.measure_limit_surface = element == Finite_element::LOOP &&
                    (output == Output_positions::LIMIT_SURFACE || s.stopping.noise_discrepancy > 0);
   std::string choices;
   if(automatic)

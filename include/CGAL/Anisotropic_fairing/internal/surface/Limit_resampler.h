@@ -37,40 +37,38 @@ struct Resampled_surface
   std::vector<std::array<double, 2>> parameter;
 };
 
-/// Output vertices: the control vertices first (in their order), then N-1 points per edge, then
-/// the interior points of each face, N = 2^levels. X holds the geometry (3 columns), A optional attributes,
-/// both with a row per vertex of `topo`. The faces refined are those of `cache` (the first faces of
-/// `topo`); their vertices must be the first `vertices` ones (with a ghost layer: the real vertices).
-inline Resampled_surface resample_limit_surface(const Triangle_topology& topo, const Patch_cache& cache,
-                                                std::size_t vertices, const Control_matrix& X,
-                                                const Control_matrix* A, unsigned levels)
+/// Numbering of the output vertices of the refined faces: lattice point (i, j), 0 <= i + j <= N, of face f.
+struct Resampling_lattice
 {
-  const int N = 1 << levels;
-  const std::size_t nv = vertices;
-  const std::size_t nf = cache.number_of_faces();
-  const Eigen::Index d = A ? A->cols() : 0;
+  const Triangle_topology& topo;
+  int N;                               // 2^levels: lattice points per edge of a control face, minus one
+  std::vector<std::size_t> edge_id;    // per halfedge owning its edge: the number of that edge
+  std::size_t per_edge = 0, per_face = 0, edge_base = 0, face_base = 0, n_out = 0;
 
-  // edge numbering: each edge is owned by its smaller halfedge; ghost faces come after the
-  // refined ones, so a border edge is owned by its only refined face
-  std::vector<std::size_t> edge_id(3 * nf, std::size_t(-1));
-  std::size_t ne = 0;
-  for(int h = 0; h < int(3 * nf); ++h)
-    if(h < topo.opposite(h)) edge_id[h] = ne++;
-  const std::size_t per_edge = std::size_t(N - 1);
-  const std::size_t per_face = std::size_t(N - 1) * std::size_t(N - 2) / 2;
-  const std::size_t edge_base = nv, face_base = nv + ne * per_edge;
-  const std::size_t n_out = face_base + nf * per_face;
+  // Numbers each edge once (owned by its smaller halfedge) so that neighbouring faces share edge points.
+  Resampling_lattice(const Triangle_topology& topo_, std::size_t nv, std::size_t nf, int N_)
+    : topo(topo_), N(N_), edge_id(3 * nf, std::size_t(-1))
+  {
+    // ghost faces come after the refined ones, so a border edge is owned by its only refined face
+    std::size_t ne = 0;
+    for(int h = 0; h < int(3 * nf); ++h)
+      if(h < topo.opposite(h)) edge_id[h] = ne++;
+    per_edge = std::size_t(N - 1);
+    per_face = std::size_t(N - 1) * std::size_t(N - 2) / 2;
+    edge_base = nv;
+    face_base = nv + ne * per_edge;
+    n_out = face_base + nf * per_face;
+  }
 
-  Resampled_surface out;
-  out.positions.resize(Eigen::Index(n_out), 3);
-  out.normals.resize(Eigen::Index(n_out), 3);
-  if(A) out.attributes.resize(Eigen::Index(n_out), d);
-  out.prototype.resize(n_out);
-  out.face.resize(n_out);
-  out.parameter.resize(n_out);
+  // Whether (i, j) is a corner of the face: those points are the control vertices, written separately.
+  bool is_corner(int i, int j) const { return (i == 0 && j == 0) || (i == N && j == 0) || (i == 0 && j == N); }
 
-  // lattice index (i, j), 0 <= i + j <= N, of face f -> output vertex
-  auto lattice_vertex = [&](std::size_t f, int i, int j) -> std::size_t {
+  // Position of (i, j) in a per-category table of lattice stencils, so that faces can share the table.
+  std::size_t stencil_index(int i, int j) const { return std::size_t(j) * (N + 1) + i; }
+
+  // Output vertex of lattice point (i, j) of face f: control vertex, shared edge point or interior point.
+  std::size_t output_vertex(std::size_t f, int i, int j) const
+  {
     const auto& t = topo.face(f);
     if(i == 0 && j == 0) return std::size_t(t[0]);
     if(i == N && j == 0) return std::size_t(t[1]);
@@ -87,16 +85,51 @@ inline Resampled_surface resample_limit_surface(const Triangle_topology& topo, c
     // interior: rows j = 1..N-2, i = 1..N-1-j
     const std::size_t before = std::size_t(j - 1) * std::size_t(2 * N - 2 - j) / 2;   // sum_{r<j} (N-1-r)
     return face_base + f * per_face + before + std::size_t(i - 1);
-  };
-  auto owns = [&](std::size_t f, int i, int j) {
-    // the face evaluates its interior points and the edge points of the edges it owns
+  }
+
+  // Whether face f evaluates (i, j): its interior points and its owned edges' points, so each is written once.
+  bool owns(std::size_t f, int i, int j) const
+  {
     if(j == 0)          return int(3 * f) < topo.opposite(int(3 * f));
     if(i + j == N)      return int(3 * f) + 1 < topo.opposite(int(3 * f) + 1);
     if(i == 0)          return int(3 * f) + 2 < topo.opposite(int(3 * f) + 2);
     return true;
-  };
+  }
+};
 
-  // control vertices: closed-form limit masks
+// Lattice stencils of each category's root patch, computed on first use: all faces of a category share them.
+class Lattice_stencil_cache
+{
+public:
+  Lattice_stencil_cache(const Patch_cache& cache, const Resampling_lattice& lattice)
+    : cache_(cache), lattice_(lattice) {}
+
+  // The stencils of category c by Resampling_lattice::stencil_index; corners stay empty (not evaluated there).
+  const std::vector<Stencil>& of_category(int c)
+  {
+    auto it = by_category_.find(c);
+    if(it != by_category_.end()) return it->second;
+    std::vector<Stencil>& s = by_category_[c];
+    const Loop_local_patch root = cache_.root_patch(c);
+    const int N = lattice_.N;
+    s.resize(std::size_t(N + 1) * std::size_t(N + 1));
+    for(int j = 0; j <= N; ++j)
+      for(int i = 0; i + j <= N; ++i)
+        if(!lattice_.is_corner(i, j))
+          root.stencil(double(i) / N, double(j) / N, s[lattice_.stencil_index(i, j)]);
+    return s;
+  }
+
+private:
+  const Patch_cache& cache_;
+  const Resampling_lattice& lattice_;
+  std::map<int, std::vector<Stencil>> by_category_;
+};
+
+// Control vertices: limit values by closed-form masks (exact, no patch evaluation), each at a corner of a refined face.
+inline void resample_control_vertices(const Triangle_topology& topo, std::size_t nv, std::size_t nf,
+                                      const Control_matrix& X, const Control_matrix* A, Resampled_surface& out)
+{
   for(std::size_t v = 0; v < nv; ++v)
   {
     vertex_limit_value(topo, X, int(v), out.positions.row(Eigen::Index(v)).data());
@@ -119,66 +152,96 @@ inline Resampled_surface resample_limit_surface(const Triangle_topology& topo, c
     out.face[v] = std::size_t(f);
     out.parameter[v] = { corner == 1 ? 1.0 : 0.0, corner == 2 ? 1.0 : 0.0 };
   }
+}
 
-  // lattice stencils, once per category
-  std::map<int, std::vector<Stencil>> lattice;
-  auto lattice_stencils = [&](int c) -> const std::vector<Stencil>& {
-    auto it = lattice.find(c);
-    if(it != lattice.end()) return it->second;
-    std::vector<Stencil>& s = lattice[c];
-    const Loop_local_patch root = cache.root_patch(c);
-    s.resize(std::size_t(N + 1) * std::size_t(N + 1));
-    for(int j = 0; j <= N; ++j)
-      for(int i = 0; i + j <= N; ++i)
-        if(!((i == 0 && j == 0) || (i == N && j == 0) || (i == 0 && j == N)))
-          root.stencil(double(i) / N, double(j) / N, s[std::size_t(j) * (N + 1) + i]);
-    return s;
-  };
+// Writes output vertex o's limit point, unit normal and attributes by applying stencil s to the face's control ring.
+inline void evaluate_lattice_point(const Stencil& s, const int* ring, const Control_matrix& X, const Control_matrix* A,
+                                   std::size_t o, Resampled_surface& out)
+{
+  double p[3] = { 0, 0, 0 }, t1[3] = { 0, 0, 0 }, t2[3] = { 0, 0, 0 };
+  for(int k = 0; k < s.m; ++k)
+    for(int c = 0; c < 3; ++c)
+    {
+      const double x = X(ring[k], c);
+      p[c] += s.row(VALUE)[k] * x;
+      t1[c] += s.row(D1)[k] * x;
+      t2[c] += s.row(D2)[k] * x;
+    }
+  double n[3];
+  unit_cross(t1, t2, n);
+  for(int c = 0; c < 3; ++c) { out.positions(Eigen::Index(o), c) = p[c]; out.normals(Eigen::Index(o), c) = n[c]; }
+  if(A)
+    for(Eigen::Index c = 0; c < A->cols(); ++c)
+    {
+      double a = 0;
+      for(int k = 0; k < s.m; ++k) a += s.row(VALUE)[k] * (*A)(ring[k], c);
+      out.attributes(Eigen::Index(o), c) = a;
+    }
+}
 
+// Evaluates the non-corner lattice points face f owns and records where they lie (shared edge points once).
+inline void resample_face_points(const Resampling_lattice& lattice, const std::vector<Stencil>& S, const int* ring,
+                                 std::size_t f, const Control_matrix& X, const Control_matrix* A,
+                                 Resampled_surface& out)
+{
+  const int N = lattice.N;
+  for(int j = 0; j <= N; ++j)
+    for(int i = 0; i + j <= N; ++i)
+    {
+      if(lattice.is_corner(i, j)) continue;
+      if(!lattice.owns(f, i, j)) continue;
+      const std::size_t o = lattice.output_vertex(f, i, j);
+      evaluate_lattice_point(S[lattice.stencil_index(i, j)], ring, X, A, o, out);
+      // nearest corner's control vertex as the prototype of attribute values
+      const double b[3] = { double(N - i - j), double(i), double(j) };
+      const int corner = int(std::max_element(b, b + 3) - b);
+      out.prototype[o] = std::size_t(lattice.topo.face(f)[corner]);
+      out.face[o] = f;
+      out.parameter[o] = { double(i) / N, double(j) / N };
+    }
+}
+
+// Appends the N^2 triangles that refine face f, oriented like f, giving the connectivity of `levels` Loop steps.
+inline void append_face_triangles(const Resampling_lattice& lattice, std::size_t f,
+                                  std::vector<std::array<std::size_t, 3>>& faces)
+{
+  const int N = lattice.N;
+  auto vertex = [&](int i, int j) { return lattice.output_vertex(f, i, j); };
+  for(int j = 0; j < N; ++j)
+    for(int i = 0; i + j < N; ++i)
+    {
+      faces.push_back({ vertex(i, j), vertex(i + 1, j), vertex(i, j + 1) });
+      if(i + j + 2 <= N)
+        faces.push_back({ vertex(i + 1, j), vertex(i + 1, j + 1), vertex(i, j + 1) });
+    }
+}
+
+/// Output vertices: the control vertices first (in their order), then N-1 points per edge, then
+/// the interior points of each face, N = 2^levels. X holds the geometry (3 columns), A optional attributes,
+/// both with a row per vertex of `topo`. The faces refined are those of `cache` (the first faces of
+/// `topo`); their vertices must be the first `vertices` ones (with a ghost layer: the real vertices).
+inline Resampled_surface resample_limit_surface(const Triangle_topology& topo, const Patch_cache& cache,
+                                                std::size_t vertices, const Control_matrix& X,
+                                                const Control_matrix* A, unsigned levels)
+{
+  const std::size_t nf = cache.number_of_faces();
+  const Resampling_lattice lattice(topo, vertices, nf, 1 << levels);
+  const std::size_t n_out = lattice.n_out;
+
+  Resampled_surface out;
+  out.positions.resize(Eigen::Index(n_out), 3);
+  out.normals.resize(Eigen::Index(n_out), 3);
+  if(A) out.attributes.resize(Eigen::Index(n_out), A->cols());
+  out.prototype.resize(n_out);
+  out.face.resize(n_out);
+  out.parameter.resize(n_out);
+
+  resample_control_vertices(topo, vertices, nf, X, A, out);
+  Lattice_stencil_cache stencils(cache, lattice);
   for(std::size_t f = 0; f < nf; ++f)
   {
-    const std::vector<Stencil>& S = lattice_stencils(cache.category(f));
-    const int* ring = cache.ring(f);
-    for(int j = 0; j <= N; ++j)
-      for(int i = 0; i + j <= N; ++i)
-      {
-        if((i == 0 && j == 0) || (i == N && j == 0) || (i == 0 && j == N)) continue;
-        if(!owns(f, i, j)) continue;
-        const std::size_t o = lattice_vertex(f, i, j);
-        const Stencil& s = S[std::size_t(j) * (N + 1) + i];
-        double p[3] = { 0, 0, 0 }, t1[3] = { 0, 0, 0 }, t2[3] = { 0, 0, 0 };
-        for(int k = 0; k < s.m; ++k)
-          for(int c = 0; c < 3; ++c)
-          {
-            const double x = X(ring[k], c);
-            p[c] += s.row(VALUE)[k] * x;
-            t1[c] += s.row(D1)[k] * x;
-            t2[c] += s.row(D2)[k] * x;
-          }
-        double n[3];
-        unit_cross(t1, t2, n);
-        for(int c = 0; c < 3; ++c) { out.positions(Eigen::Index(o), c) = p[c]; out.normals(Eigen::Index(o), c) = n[c]; }
-        if(A)
-          for(Eigen::Index c = 0; c < d; ++c)
-          {
-            double a = 0;
-            for(int k = 0; k < s.m; ++k) a += s.row(VALUE)[k] * (*A)(ring[k], c);
-            out.attributes(Eigen::Index(o), c) = a;
-          }
-        // nearest corner's control vertex as the prototype of attribute values
-        const double b[3] = { double(N - i - j), double(i), double(j) };
-        const int corner = int(std::max_element(b, b + 3) - b);
-        out.prototype[o] = std::size_t(topo.face(f)[corner]);
-        out.face[o] = f;
-        out.parameter[o] = { double(i) / N, double(j) / N };
-      }
-    for(int j = 0; j < N; ++j)
-      for(int i = 0; i + j < N; ++i)
-      {
-        out.faces.push_back({ lattice_vertex(f, i, j), lattice_vertex(f, i + 1, j), lattice_vertex(f, i, j + 1) });
-        if(i + j + 2 <= N)
-          out.faces.push_back({ lattice_vertex(f, i + 1, j), lattice_vertex(f, i + 1, j + 1), lattice_vertex(f, i, j + 1) });
-      }
+    resample_face_points(lattice, stencils.of_category(cache.category(f)), cache.ring(f), f, X, A, out);
+    append_face_triangles(lattice, f, out.faces);
   }
   return out;
 }
