@@ -1,10 +1,11 @@
 // The Python module anisotropic_fairing (pybind11): the package's fairing and limit surface on numpy
-// arrays. fair() turns its keyword arguments into the command-line program's options and makes the
+// arrays. fair() reads its keyword arguments straight into the command-line program's options and makes the
 // program's library call (fairing_call.h), so that its defaults, its checks, its result and its report
 // (the program's JSON, as a dict) are the program's.
 #include "fairing_call.h"
 #include "json_report.h"
 #include "mesh_file_check.h"
+#include "option_words.h"
 #include "options.h"
 
 #include <CGAL/Anisotropic_fairing/Input_error.h>
@@ -14,9 +15,12 @@
 #include <pybind11/numpy.h>
 #include <pybind11/pybind11.h>
 
+#include <algorithm>
 #include <cctype>
 #include <cmath>
 #include <cstring>
+#include <limits>
+#include <utility>
 #include <exception>
 #include <stdexcept>
 #include <memory>
@@ -137,96 +141,144 @@ py::array_t<double> vectors_array(const Vectors& values)
 
 // ---- fair() ----------------------------------------------------------------------------------------
 
-// A keyword argument of fair() and the program's option it is: the argument's value, as text, is the
-// option's value (True for a flag).
-struct Keyword
-{
-  const char* name;
-  const char* flag;
-};
-const Keyword keywords[] = {
-  {"time_step", "--time-step"}, {"relative_time_step", "--relative-time-step"}, {"flow_order", "--order"},
-  {"number_of_iterations", "--steps"}, {"stopping_criteria", "--stop"}, {"fidelity_weight", "--fidelity"},
-  {"relative_fidelity_weight", "--relative-fidelity"}, {"absolute_maximum_deviation", "--maximum-deviation"},
-  {"relative_maximum_deviation", "--relative-maximum-deviation"},
-  {"maximum_deviation", "--relative-maximum-deviation"}, {"attribute_maximum_deviation", "--attribute-maximum-deviation"},
-  {"finite_element", "--element"}, {"output_positions", "--output"}, {"tensor", "--tensor"}, {"lambda_", "--lambda"},
-  {"epsilon", "--epsilon"}, {"tangential_motion", "--tangential-motion"}, {"linear_solver", "--solver"},
-  {"boundary_handling", "--boundary"}, {"quadrature_degree", "--quadrature-degree"}, {"attribute_mode", "--mode"},
-  {"attribute_weight", "--attribute-weight"},
-};
+// The keyword arguments of fair(): the library's named parameters, and the anisotropic tensor's settings,
+// read straight into the program's Options (its Fairing_options and the words its report names); the
+// library checks the values' ranges and names the parameter when it refuses one.
 
-std::string option_text(py::handle value)
+double number_argument(const std::string& name, py::handle value)
 {
-  if(py::isinstance<py::bool_>(value)) throw py::type_error("expects a number or a name, not a bool");
-  if(py::isinstance<py::float_>(value)) return py::repr(value).cast<std::string>();   // repr: every digit
-  return py::str(value).cast<std::string>();
+  if(py::isinstance<py::bool_>(value) || py::isinstance<py::str>(value)) throw py::type_error(name + " expects a number");
+  double x = 0;
+  try
+  {
+    x = value.cast<double>();
+  }
+  catch(const py::cast_error&)
+  {
+    throw py::type_error(name + " expects a number, not " + py::str(py::type::of(value)).cast<std::string>());
+  }
+  if(!std::isfinite(x)) throw py::value_error(name + " must be a finite number");
+  return x;
 }
 
-// The program's options for these keyword arguments, read and checked by the program's own parser.
+long long integer_argument(const std::string& name, py::handle value)
+{
+  if(py::isinstance<py::bool_>(value) || !py::isinstance(value, py::module_::import("numbers").attr("Integral")))
+    throw py::type_error(name + " expects an integer");
+  return value.cast<long long>();
+}
+
+std::string word_argument(const std::string& name, py::handle value, const std::vector<const char*>& words)
+{
+  if(!py::isinstance<py::str>(value)) throw py::type_error(name + " expects " + word_list(words));
+  const std::string word = value.cast<std::string>();
+  for(const char* w : words)
+    if(word == w) return word;
+  throw py::value_error(name + " expects " + word_list(words) + ", not '" + word + "'");
+}
+
+template <typename T>
+T word_argument(const std::string& name, py::handle value, const Word_table<T>& table)
+{
+  const std::string word = word_argument(name, value, words_of(table));
+  for(const auto& w : table)
+    if(word == w.first) return w.second;
+  return table.front().second;
+}
+
+// One keyword argument (one of `keywords`) into `o`.
+void take_keyword(Options& o, const std::string& name, py::handle v)
+{
+  AF::Fairing_options& f = o.fairing;
+  if(name == "time_step") f.time_step = number_argument(name, v);
+  else if(name == "relative_time_step") f.relative_time_step = number_argument(name, v);
+  else if(name == "flow_order") f.flow_order = int(integer_argument(name, v));
+  else if(name == "number_of_iterations")
+  {
+    const long long n = integer_argument(name, v);
+    if(n < 0 || n > (long long)(std::numeric_limits<unsigned int>::max)()) throw py::value_error(name + " must be a non-negative integer");
+    f.number_of_iterations = unsigned(n);
+  }
+  else if(name == "stopping_criteria") f.stopping_criteria = stopping_rule(o.stop = word_argument(name, v, stop_words));
+  else if(name == "fidelity_weight") f.fidelity_weight = number_argument(name, v);
+  else if(name == "relative_fidelity_weight") f.relative_fidelity_weight = number_argument(name, v);
+  else if(name == "relative_maximum_deviation" || name == "maximum_deviation") f.relative_maximum_deviation = number_argument(name, v);
+  else if(name == "absolute_maximum_deviation") f.absolute_maximum_deviation = number_argument(name, v);
+  else if(name == "attribute_maximum_deviation") f.attribute_maximum_deviation = number_argument(name, v);
+  else if(name == "finite_element") f.finite_element = word_argument(name, v, element_words);
+  else if(name == "output_positions") f.output_positions = word_argument(name, v, output_words);
+  else if(name == "tensor") o.tensor = word_argument(name, v, tensor_words);
+  else if(name == "lambda_")
+  {
+    o.lambda = number_argument(name, v);
+    o.has_lambda = true;
+    if(!(o.lambda > 0)) throw py::value_error(name + " must be positive");
+  }
+  else if(name == "epsilon")
+  {
+    o.epsilon = number_argument(name, v);
+    o.has_epsilon = true;
+    if(!(o.epsilon >= 0)) throw py::value_error(name + " must be >= 0");
+  }
+  else if(name == "tangential_motion")
+  {
+    o.normal_motion_only = word_argument(name, v, tangential_words);
+    o.has_tangential_motion = true;
+  }
+  else if(name == "linear_solver") f.linear_solver = word_argument(name, v, solver_words);
+  else if(name == "boundary_handling") f.boundary_handling = word_argument(name, v, boundary_words);
+  else if(name == "quadrature_degree") f.quadrature_degree = int(integer_argument(name, v));
+  else if(name == "attribute_mode") f.attribute_mode = word_argument(name, v, mode_words);
+  else if(name == "attribute_weight")
+  {
+    f.attribute_weight = number_argument(name, v);
+    o.has_attribute_weight = true;
+  }
+}
+
+const std::vector<const char*> keywords = {
+  "time_step", "relative_time_step", "flow_order", "number_of_iterations", "stopping_criteria", "fidelity_weight",
+  "relative_fidelity_weight", "relative_maximum_deviation", "absolute_maximum_deviation", "maximum_deviation",
+  "attribute_maximum_deviation", "finite_element", "output_positions", "tensor", "lambda_", "epsilon", "tangential_motion",
+  "linear_solver", "boundary_handling", "quadrature_degree", "attribute_mode", "attribute_weight"};
+
+// The program's options for these keyword arguments (`attribute_columns`: of the attributes given).
 Options options_of(const py::kwargs& kwargs, py::ssize_t attribute_columns)
 {
-  std::vector<std::string> args = { "anisotropic_fairing", "input.off", "output.off" };
+  Options o;
+  o.quiet = true;
+  for(py::ssize_t c = 0; c < attribute_columns; ++c) o.attributes.push_back(std::to_string(c));
+  bool relative_bound = false;
   for(const auto& item : kwargs)
   {
     const std::string name = py::str(item.first).cast<std::string>();
-    const Keyword* k = nullptr;
-    for(const Keyword& w : keywords)
-      if(name == w.name) k = &w;
-    if(!k)
+    if(std::find_if(keywords.begin(), keywords.end(), [&](const char* k) { return name == k; }) == keywords.end())
     {
       std::string list;
-      for(const Keyword& w : keywords) list += (list.empty() ? "" : ", ") + std::string(w.name);
-      throw py::type_error("fair() got an unexpected keyword argument '" + name + "' (it takes: attributes, vertex_is_constrained, callback, " + list + ")");
+      for(const char* k : keywords) list += std::string(", ") + k;
+      throw py::type_error("fair() got an unexpected keyword argument '" + name + "' (it takes: attributes, vertex_is_constrained, "
+                           "callback" + list + ")");
     }
     if(item.second.is_none()) continue;   // None: the default
     if(name == "maximum_deviation" &&
        PyErr_WarnEx(PyExc_DeprecationWarning, "maximum_deviation is relative (units of l); write relative_maximum_deviation, or "
                     "absolute_maximum_deviation for model units", 1) != 0)
       throw py::error_already_set();
-    try
-    {
-      args.push_back(k->flag);
-      args.push_back(option_text(item.second));
-    }
-    catch(const py::type_error& e)
-    {
-      throw py::type_error(name + " " + e.what());
-    }
+    if((name == "maximum_deviation" || name == "relative_maximum_deviation") && std::exchange(relative_bound, true))
+      throw py::value_error("give one of relative_maximum_deviation and absolute_maximum_deviation (maximum_deviation: the "
+                            "relative one's deprecated spelling), not more");
+    take_keyword(o, name, item.second);
   }
-  if(attribute_columns > 0)
-  {
-    std::string names;
-    for(py::ssize_t c = 0; c < attribute_columns; ++c) names += (c ? "," : "") + std::to_string(c);
-    args.push_back("--attributes");
-    args.push_back(names);
-  }
-  std::vector<char*> argv;
-  for(std::string& a : args) argv.push_back(&a[0]);
-  Options o;
-  try
-  {
-    parse_arguments(int(argv.size()), argv.data(), o);
-  }
-  catch(const Failure& f)
-  {
-    std::string message = f.message;
-    const std::string see = " (see --help)";
-    if(message.size() > see.size() && message.compare(message.size() - see.size(), see.size(), see) == 0)
-      message.resize(message.size() - see.size());
-    // the keyword's name, not the program's flag (a whole flag: not followed by a letter or a dash)
-    for(const Keyword& w : keywords)
-    {
-      const std::size_t length = std::strlen(w.flag);
-      for(std::string::size_type at = message.find(w.flag); at != std::string::npos; at = message.find(w.flag, at + 1))
-      {
-        const char next = at + length < message.size() ? message[at + length] : ' ';
-        if(!std::isalnum((unsigned char)next) && next != '-') message.replace(at, length, w.name);
-      }
-    }
-    throw py::value_error(message);
-  }
-  o.quiet = true;
+  const bool asked_anisotropic = o.tensor == "anisotropic";   // the tensor's settings need it said
+  for(const auto& setting : {std::make_pair(o.has_lambda, "lambda_"), std::make_pair(o.has_epsilon, "epsilon"),
+                             std::make_pair(o.has_tangential_motion, "tangential_motion")})
+    if(setting.first && !asked_anisotropic) throw py::value_error(std::string(setting.second) + " needs tensor anisotropic");
+  const AF::Attribute_mode mode = effective_mode(o);
+  if(attribute_columns == 0 && (mode == AF::Attribute_mode::COUPLED || mode == AF::Attribute_mode::ATTRIBUTES_ONLY))
+    throw py::value_error(std::string("attribute_mode ") + mode_name(mode) + " needs attributes");
+  o.fairing.diffusion_tensor = package_tensor(o.tensor, o.fairing.automatic_parameters(),
+                                              o.has_lambda || o.has_epsilon || o.has_tangential_motion, o.lambda, o.epsilon,
+                                              o.normal_motion_only);
   return o;
 }
 

@@ -95,8 +95,7 @@ int main()
   const AFI::Control_matrix P = im.read_points(get(CGAL::vertex_point, mesh));
   m.X.resize(Eigen::Index(n), 3);
   for(std::size_t i = 0; i < n; ++i) m.X.row(Eigen::Index(i)) = P.row(m.ordering.old_of_new_vertex[i]);
-  m.mean_edge = AFI::mean_edge_length(layer, m.X);
-  m.component_edge.assign(m.components.count, m.mean_edge);
+  m.mean_edge = AFI::component_mean_edges(*layer.topology, layer.real_faces, m.components, m.X, m.component_edge);
   const AFI::Ghosted_patch_cache cache(layer, AFI::Quadrature_spec());
   const AFI::Noise_estimate noise(*layer.topology, m.X, std::vector<bool>(n, true));
 

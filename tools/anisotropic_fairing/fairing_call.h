@@ -1,5 +1,5 @@
 // The call of CGAL::Anisotropic_fairing::anisotropic_fairing() that the program's options ask for: the
-// one place that turns Options into named parameters, shared by the program and the Python module so
+// one place that hands Options to the library, shared by the program and the Python module so
 // that both give the same result for the same settings.
 #ifndef AF_TOOL_FAIRING_CALL_H
 #define AF_TOOL_FAIRING_CALL_H

@@ -118,13 +118,14 @@ int run(const Options& o, Run_record& r)
 
   // Exact limit normals and the curvature need the faired control points: see the comment at the top of
   // this file. With --mode attributes the geometry is fixed: positions and input normals are written as they are.
-  const bool limit_written = o.element == AF::Finite_element::LOOP && o.output_positions == AF::Output_positions::LIMIT_SURFACE;
+  const bool limit_written = o.fairing.finite_element == AF::Finite_element::LOOP &&
+                             o.fairing.output_positions == AF::Output_positions::LIMIT_SURFACE;
   const bool exact_limit_normals = info.has_normals && limit_written && fair_geometry;
   std::vector<Point> control_points(mesh.number_of_vertices());
   std::vector<unsigned char> held(mesh.number_of_vertices(), 0);
   if(!o.hold.empty()) r.held_vertices = read_held_vertices(mesh, o.hold, held);
 
-  const unsigned int max_steps = o.steps;
+  const unsigned int max_steps = o.fairing.maximum_steps();
   const bool quiet = o.quiet;
   std::size_t last_run = 0, steps_in_all = 0;
   auto progress = [max_steps, quiet, &last_run, &steps_in_all, &heartbeat](const AF::Fairing_step& s) {
@@ -166,7 +167,7 @@ int run(const Options& o, Run_record& r)
     // curvature's averages use the quadrature (the run's degree); otherwise degree 4 is the cheapest set-up.
     Mesh control = mesh;
     for(Vertex_index v : control.vertices()) control.point(v) = control_points[std::size_t(v)];
-    const Limit limit(control, AF::parameters::quadrature_degree(o.curvature ? o.quadrature_degree : 4));
+    const Limit limit(control, AF::parameters::quadrature_degree(o.curvature ? o.fairing.quadrature_degree : 4));
     if(o.curvature)
     {
       std::vector<Limit::Curvature> values(mesh.number_of_vertices());
@@ -204,7 +205,7 @@ int run(const Options& o, Run_record& r)
   {
     const std::vector<Attribute_column> none;
     resample_output(mesh, info, o.input, o.resample, {&control_points, fair_attributes ? &columns : &none, &attribute_controls},
-                    o.curvature, o.quadrature_degree);
+                    o.curvature, o.fairing.quadrature_degree);
     r.resampled_vertices = mesh.number_of_vertices();
     r.resampled_faces = mesh.number_of_faces();
   }

@@ -6,6 +6,7 @@
 
 #include <cmath>
 #include <string>
+#include <variant>
 
 namespace af_tool {
 
@@ -41,32 +42,36 @@ std::string report_json(const Options& o, const Run_record& r, double wall_secon
   j["output"] = known(r.output_written, o.output);
   j["vertices"] = known(r.mesh_read, r.vertices);
   j["faces"] = known(r.mesh_read, r.faces);
-  j["element"] = element_name(o.element);
-  j["output_positions"] = output_name(o.output_positions);
+  const AF::Fairing_options& given = o.fairing;
+  j["element"] = element_name(given.finite_element);
+  j["output_positions"] = output_name(given.output_positions);
   // the tensor the run used: with automatic parameters the package keeps the anisotropic, the
   // isotropic or the uniform result (selected_tensor)
+  const AF::Package_diffusion_tensor start = starting_tensor(given);
+  const auto* anisotropic = std::get_if<AF::Anisotropic_diffusion_tensor>(&start);
   const bool isotropic_kept = ran && (f.selected_tensor == "isotropic" || f.selected_tensor == "uniform");
-  j["tensor"] = o.uniform || (ran && f.selected_tensor == "uniform") ? "uniform"
-                : o.anisotropic && !isotropic_kept ? "anisotropic" : "isotropic";
+  j["tensor"] = std::holds_alternative<AF::Uniform_diffusion_tensor>(start) || (ran && f.selected_tensor == "uniform") ? "uniform"
+                : anisotropic && !isotropic_kept ? "anisotropic" : "isotropic";
   // the values the run used (chosen from the mesh when automatic), in units of l, l^2 and 1/length
-  const bool lambda_known = o.anisotropic && !isotropic_kept && (!automatic_tensor(o) || ran);
-  j["lambda"] = lambda_known ? number(automatic_tensor(o) ? f.feature_threshold * f.scale : o.lambda) : Json(nullptr);
+  const bool chosen = automatic_tensor(given);
+  const bool lambda_known = anisotropic && !isotropic_kept && (!chosen || ran);
+  j["lambda"] = lambda_known ? number(chosen ? f.feature_threshold * f.scale : anisotropic->lambda()) : Json(nullptr);
   j["lambda_model_units"] = lambda_known && ran && f.scale > 0 ? number(f.feature_threshold) : Json(nullptr);
-  j["epsilon"] = lambda_known ? number(automatic_tensor(o) ? f.prefilter_time / scale2 : o.epsilon) : Json(nullptr);
-  j["tangential_motion"] = o.anisotropic && !isotropic_kept && o.normal_motion_only ? "removed" : "kept";
+  j["epsilon"] = lambda_known ? number(chosen ? f.prefilter_time / scale2 : anisotropic->epsilon()) : Json(nullptr);
+  j["tangential_motion"] = anisotropic && !isotropic_kept && anisotropic->normal_motion_only() ? "removed" : "kept";
   j["solver"] = ran ? Json(f.used_cholesky ? "cholesky" : "cg") : Json(nullptr);
-  j["requested_solver"] = solver_name(o.solver);
+  j["requested_solver"] = solver_name(given.linear_solver);
   j["stop"] = o.stop;
-  j["max_steps"] = o.steps;
-  j["quadrature_degree"] = o.quadrature_degree;
-  j["time_step"] = ran ? number(f.time_step) : o.has_time_step ? number(o.time_step) : Json(nullptr);
-  j["order"] = ran ? f.flow_order : o.order;
+  j["max_steps"] = given.maximum_steps();
+  j["quadrature_degree"] = given.quadrature_degree;
+  j["time_step"] = ran ? number(f.time_step) : given.time_step ? number(*given.time_step) : Json(nullptr);
+  j["order"] = ran ? f.flow_order : given.flow_order;
   j["relative_time_step"] = ran && scale2 > 0 ? number(f.time_step / std::pow(scale2, f.flow_order / 2))
-                            : o.has_relative_time_step ? number(o.relative_time_step) : Json(nullptr);
+                            : given.relative_time_step ? number(*given.relative_time_step) : Json(nullptr);
   j["scale"] = ran ? number(f.scale) : Json(nullptr);
-  j["fidelity_weight"] = ran ? number(f.fidelity_weight) : o.has_fidelity ? number(o.fidelity) : Json(nullptr);
+  j["fidelity_weight"] = ran ? number(f.fidelity_weight) : given.fidelity_weight ? number(*given.fidelity_weight) : Json(nullptr);
   j["relative_fidelity_weight"] = ran ? number(f.fidelity_weight * scale2)
-                                  : o.has_relative_fidelity ? number(o.relative_fidelity) : Json(nullptr);
+                                  : given.relative_fidelity_weight ? number(*given.relative_fidelity_weight) : Json(nullptr);
   j["mean_edge_length"] = ran ? number(f.mean_edge_length) : Json(nullptr);
   j["normals"] = r.normals;
   j["curvature"] = r.curvature;
@@ -79,15 +84,15 @@ std::string report_json(const Options& o, const Run_record& r, double wall_secon
   j["mode"] = mode_name(effective_mode(o));
   j["attributes"] = o.attributes;
   j["attribute_dimension"] = known(ran, f.attribute_dimension);
-  j["attribute_weight"] = number(o.attribute_weight);
-  j["boundary_handling"] = o.boundary == AF::Boundary_handling::HOLD_BOUNDARY_CURVE ? "curve" : "vertices";
+  j["attribute_weight"] = number(given.attribute_weight);
+  j["boundary_handling"] = given.boundary_handling == AF::Boundary_handling::HOLD_BOUNDARY_CURVE ? "curve" : "vertices";
   j["boundary_vertices"] = known(ran, f.boundary_vertices);
   j["boundary_held_vertices"] = known(ran, f.boundary_held_vertices);
   j["boundary_loops"] = known(ran, f.boundary_loops);
   j["isolated_vertices"] = known(ran, f.isolated_vertices);
   j["constrained_vertices"] = known(ran, f.constrained_vertices);
   j["stop_reason"] = ran ? Json(AF::to_string(f.stop_reason)) : Json(nullptr);
-  j["automatic_parameters"] = automatic_parameters(o);
+  j["automatic_parameters"] = given.automatic_parameters();
   j["choices"] = known(ran, f.choices);
   j["noise_level"] = ran ? number(f.noise_level) : Json(nullptr);
   j["noise_deviation"] = ran ? number(f.noise_deviation) : Json(nullptr);
@@ -98,11 +103,11 @@ std::string report_json(const Options& o, const Run_record& r, double wall_secon
   j["rejected_steps"] = known(ran, f.rejected_steps);
   // the bounds the run used, model units (and in units of l), and the largest deviations written
   j["maximum_deviation"] = ran ? (f.maximum_deviation > 0 ? number(f.maximum_deviation) : Json(nullptr))
-                           : o.has_bound ? number(o.bound) : Json(nullptr);
-  j["relative_maximum_deviation"] = o.has_relative_bound && o.relative_bound > 0 ? number(o.relative_bound)
+                           : given.absolute_maximum_deviation ? number(*given.absolute_maximum_deviation) : Json(nullptr);
+  j["relative_maximum_deviation"] = given.relative_maximum_deviation.value_or(0) > 0 ? number(*given.relative_maximum_deviation)
                                     : ran && f.maximum_deviation > 0 && f.scale > 0 ? number(f.maximum_deviation / f.scale) : Json(nullptr);
   j["largest_deviation"] = ran ? number(f.largest_deviation) : Json(nullptr);
-  j["attribute_maximum_deviation"] = o.attribute_bound > 0 ? number(o.attribute_bound) : Json(nullptr);
+  j["attribute_maximum_deviation"] = given.attribute_maximum_deviation > 0 ? number(given.attribute_maximum_deviation) : Json(nullptr);
   j["largest_attribute_deviation"] = ran && f.attribute_dimension > 0 ? number(f.largest_attribute_deviation) : Json(nullptr);
   j["bound_fidelity_weight"] = ran ? number(f.bound_fidelity_weight) : Json(nullptr);
   j["bound_held_vertices"] = known(ran, f.bound_held_vertices);

@@ -3,6 +3,7 @@
 // from the help (the test cli_option_docs checks they agree).
 #include "options.h"
 #include "json_report.h"
+#include "option_words.h"
 
 #include <CGAL/Anisotropic_fairing/Fairing_settings.h>
 #include <CGAL/version.h>
@@ -19,6 +20,8 @@
 #include <fstream>
 #include <initializer_list>
 #include <limits>
+#include <optional>
+#include <stdexcept>
 #include <string>
 #include <utility>
 #include <vector>
@@ -84,23 +87,28 @@ void set_number(double& value, bool& given, const std::string& flag, const std::
   given = true;
 }
 
+// A number option of the library's: set once read and checked as above.
+void set_number(std::optional<double>& value, const std::string& flag, const std::string& text, bool zero_allowed)
+{
+  double v = 0;
+  bool given = false;
+  set_number(v, given, flag, text, zero_allowed);
+  value = v;
+}
+
 // The index of `text` among `names`; for any other text a usage error that lists them ("a, b or c").
 std::size_t choice_index(const std::string& flag, const std::string& text, const std::vector<const char*>& names)
 {
   for(std::size_t i = 0; i < names.size(); ++i)
     if(text == names[i]) return i;
-  std::string list;
-  for(std::size_t i = 0; i < names.size(); ++i) list += std::string(i == 0 ? "" : i + 1 == names.size() ? " or " : ", ") + names[i];
-  usage_error(flag + " expects " + list + ", not " + quoted_excerpt(text));
+  usage_error(flag + " expects " + word_list(names) + ", not " + quoted_excerpt(text));
 }
 
-// The value that `text` names among `choices` (name, value); for any other text that usage error.
+// The value that `text` names in `table`; for any other text that usage error.
 template <typename T>
-T choice(const std::string& flag, const std::string& text, std::initializer_list<std::pair<const char*, T> > choices)
+T choice(const std::string& flag, const std::string& text, const Word_table<T>& table)
 {
-  std::vector<const char*> names;
-  for(const auto& c : choices) names.push_back(c.first);
-  return (choices.begin() + choice_index(flag, text, names))->second;
+  return table[choice_index(flag, text, words_of(table))].second;
 }
 
 // Whether two paths name one file: the same file if both exist (links included), else the same path.
@@ -129,7 +137,7 @@ struct Option_spec
 
 const Option_spec option_table[] = {
   {"--time-step", nullptr, "T", "time step tau in model units (length^2), as in the paper (time_step)",
-   [](Options& o, const std::string& flag, const std::string& v) { set_number(o.time_step, o.has_time_step, flag, v, false); }},
+   [](Options& o, const std::string& flag, const std::string& v) { set_number(o.fairing.time_step, flag, v, false); }},
   {"--relative-time-step", nullptr, "R",
    "time step in units of l^2, l = sqrt(area/4pi) of the input (per connected\n"
    "component; relative_time_step); give at most one of the two. Neither:\n"
@@ -138,7 +146,7 @@ const Option_spec option_table[] = {
    "(unless --tensor is given), steps of 0.3 h^2 (h: the edge length) until\n"
    "the surface has moved off the input by the noise",
    [](Options& o, const std::string& flag, const std::string& v) {
-     set_number(o.relative_time_step, o.has_relative_time_step, flag, v, false);
+     set_number(o.fairing.relative_time_step, flag, v, false);
    }},
   {"--order", nullptr, "2|4",
    "the flow's order: 2 (default: diffusion, as in the paper) or 4\n"
@@ -148,12 +156,11 @@ const Option_spec option_table[] = {
    "default run uses the fourth-order flow itself for its uniform candidate\n"
    "(the report's choices say so)",
    [](Options& o, const std::string& flag, const std::string& v) {
-     o.order = choice<int>(flag, v, {{"2", 2}, {"4", 4}});
-     o.has_order = true;
+     o.fairing.flow_order = choice(flag, v, order_words);
    }},
   {"--steps", nullptr, "N", "the most time steps to run, all runs of the automatic comparison\n"
    "together (default 10; with automatic parameters 200; number_of_iterations)",
-   [](Options& o, const std::string& flag, const std::string& v) { o.steps = parse_unsigned(flag, v); o.has_steps = true; }},
+   [](Options& o, const std::string& flag, const std::string& v) { o.fairing.number_of_iterations = parse_unsigned(flag, v); }},
   {"--stop", nullptr, "auto|noise|paper|off",
    "auto (default): noise with automatic parameters, paper otherwise;\n"
    "noise: stop when the surface has moved off the input by the estimated\n"
@@ -166,15 +173,16 @@ const Option_spec option_table[] = {
    "of it fails",
    [](Options& o, const std::string& flag, const std::string& v) {
      o.stop = v;   // set before the check: a usage error's report shows what was asked
-     choice_index(flag, v, {"auto", "noise", "paper", "off"});
+     choice_index(flag, v, stop_words);
+     o.fairing.stopping_criteria = stopping_rule(v);
    }},
   {"--fidelity", nullptr, "W", "fidelity weight omega in model units (1/time), as in the paper (default 0;\n"
    "fidelity_weight)",
-   [](Options& o, const std::string& flag, const std::string& v) { set_number(o.fidelity, o.has_fidelity, flag, v, true); }},
+   [](Options& o, const std::string& flag, const std::string& v) { set_number(o.fairing.fidelity_weight, flag, v, true); }},
   {"--relative-fidelity", nullptr, "W", "fidelity weight in units of 1/l^2 (relative_fidelity_weight); give at most\n"
    "one of the two",
    [](Options& o, const std::string& flag, const std::string& v) {
-     set_number(o.relative_fidelity, o.has_relative_fidelity, flag, v, true);
+     set_number(o.fairing.relative_fidelity_weight, flag, v, true);
    }},
   {"--maximum-deviation", "--absolute-maximum-deviation", "D",
    "no written vertex moves farther than D (model units) off its input\n"
@@ -182,26 +190,28 @@ const Option_spec option_table[] = {
    "their own, and one it cannot hold is written on the bound (default:\n"
    "no bound; 0: none; absolute_maximum_deviation; also spelt\n"
    "--absolute-maximum-deviation)",
-   [](Options& o, const std::string& flag, const std::string& v) { set_number(o.bound, o.has_bound, flag, v, true); }},
+   [](Options& o, const std::string& flag, const std::string& v) { set_number(o.fairing.absolute_maximum_deviation, flag, v, true); }},
   {"--relative-maximum-deviation", nullptr, "R", "the same in units of l (relative_maximum_deviation); give at most one of the two",
-   [](Options& o, const std::string& flag, const std::string& v) { set_number(o.relative_bound, o.has_relative_bound, flag, v, true); }},
+   [](Options& o, const std::string& flag, const std::string& v) { set_number(o.fairing.relative_maximum_deviation, flag, v, true); }},
   {"--attribute-maximum-deviation", nullptr, "D",
    "no vertex's attribute values move farther than D (their units,\n"
    "Euclidean over the components) off the input's (default: no bound;\n"
    "attribute_maximum_deviation)",
-   [](Options& o, const std::string& flag, const std::string& v) { set_number(o.attribute_bound, o.has_attribute_bound, flag, v, true); }},
+   [](Options& o, const std::string& flag, const std::string& v) {
+     bool given = false;
+     set_number(o.fairing.attribute_maximum_deviation, given, flag, v, true);
+   }},
   {"--element", nullptr, "loop|linear", "Loop limit-surface elements (default) or linear (P1) elements\n"
    "(finite_element)",
    [](Options& o, const std::string& flag, const std::string& v) {
-     o.element = choice<AF::Finite_element>(flag, v, {{"loop", AF::Finite_element::LOOP}, {"linear", AF::Finite_element::LINEAR}});
+     o.fairing.finite_element = choice(flag, v, element_words);
    }},
   {"--output", nullptr, "limit|control",
    "write the points of the faired limit surface (default) or the faired\n"
    "control points (the mesh whose Loop limit surface is the faired surface;\n"
    "output_positions)",
    [](Options& o, const std::string& flag, const std::string& v) {
-     o.output_positions = choice<AF::Output_positions>(flag, v, {{"limit", AF::Output_positions::LIMIT_SURFACE},
-                                                                  {"control", AF::Output_positions::CONTROL_POINTS}});
+     o.fairing.output_positions = choice(flag, v, output_words);
    }},
   {"--tensor", nullptr, "isotropic|anisotropic|uniform",
    "the diffusion tensor: isotropic (mean-curvature flow; the\n"
@@ -214,10 +224,8 @@ const Option_spec option_table[] = {
    "graded triangulation; it rounds creases like the isotropic tensor);\n"
    "diffusion_tensor",
    [](Options& o, const std::string& flag, const std::string& v) {
-     o.has_tensor = true;   // set before the check: a usage error's report shows what was asked
-     o.anisotropic = v == "anisotropic";
-     o.uniform = v == "uniform";
-     choice_index(flag, v, {"isotropic", "anisotropic", "uniform"});
+     o.tensor = v;   // set before the check: a usage error's report shows what was asked
+     choice_index(flag, v, tensor_words);
    }},
   {"--lambda", nullptr, "L",
    "the anisotropic tensor's feature threshold, a curvature in units of 1/l\n"
@@ -235,15 +243,13 @@ const Option_spec option_table[] = {
    "folds noisy meshes) or also within it, as the paper does (keep;\n"
    "set_normal_motion_only)",
    [](Options& o, const std::string& flag, const std::string& v) {
-     o.normal_motion_only = choice<bool>(flag, v, {{"remove", true}, {"keep", false}});
+     o.normal_motion_only = choice(flag, v, tangential_words);
      o.has_tangential_motion = true;
    }},
   {"--solver", nullptr, "auto|cg|cholesky", "linear solver: automatic (default), conjugate gradients, sparse LDL^T\n"
    "(linear_solver)",
    [](Options& o, const std::string& flag, const std::string& v) {
-     o.solver = choice<AF::Linear_solver>(flag, v, {{"auto", AF::Linear_solver::AUTOMATIC},
-                                                    {"cg", AF::Linear_solver::CONJUGATE_GRADIENT},
-                                                    {"cholesky", AF::Linear_solver::CHOLESKY}});
+     o.fairing.linear_solver = choice(flag, v, solver_words);
    }},
   {"--boundary", nullptr, "curve|vertices",
    "on a mesh with borders, hold the limit boundary curve (default: the\n"
@@ -251,12 +257,11 @@ const Option_spec option_table[] = {
    "the boundary vertices (the paper's choice; the border may slide;\n"
    "boundary_handling). Boundary vertices are written unchanged either way",
    [](Options& o, const std::string& flag, const std::string& v) {
-     o.boundary = choice<AF::Boundary_handling>(flag, v, {{"curve", AF::Boundary_handling::HOLD_BOUNDARY_CURVE},
-                                                          {"vertices", AF::Boundary_handling::HOLD_BOUNDARY_VERTICES}});
+     o.fairing.boundary_handling = choice(flag, v, boundary_words);
    }},
   {"--quadrature-degree", nullptr, "4|6|8", "Gauss rule per face for the Loop element (default 8; quadrature_degree)",
    [](Options& o, const std::string& flag, const std::string& v) {
-     o.quadrature_degree = choice<int>(flag, v, {{"4", 4}, {"6", 6}, {"8", 8}});
+     o.fairing.quadrature_degree = choice(flag, v, quadrature_words);
    }},
   {"--attributes", nullptr, "NAME,...",
    "the per-vertex attributes to fair, in this order, as one vector per\n"
@@ -276,16 +281,12 @@ const Option_spec option_table[] = {
    "without --attributes): the attributes are not faired. coupled and\n"
    "attributes need --attributes (attribute_mode)",
    [](Options& o, const std::string& flag, const std::string& v) {
-     o.mode = choice<AF::Attribute_mode>(flag, v, {{"separate", AF::Attribute_mode::SEPARATE},
-                                                   {"coupled", AF::Attribute_mode::COUPLED},
-                                                   {"attributes", AF::Attribute_mode::ATTRIBUTES_ONLY},
-                                                   {"geometry", AF::Attribute_mode::GEOMETRY_ONLY}});
-     o.has_mode = true;
+     o.fairing.attribute_mode = choice(flag, v, mode_words);
    }},
   {"--attribute-weight", nullptr, "W", "coupled: the length that one attribute unit counts for (> 0, default 1;\n"
    "attribute_weight)",
    [](Options& o, const std::string& flag, const std::string& v) {
-     set_number(o.attribute_weight, o.has_attribute_weight, flag, v, false);
+     set_number(o.fairing.attribute_weight, o.has_attribute_weight, flag, v, false);
    }},
   {"--curvature", nullptr, nullptr,
    "also write the curvature of the faired Loop limit surface at each vertex\n"
@@ -398,29 +399,50 @@ const Option_spec* find_option(const std::string& arg)
 
 } // namespace
 
-bool automatic_parameters(const Options& o) { return !o.has_time_step && !o.has_relative_time_step; }
-// the anisotropic tensor whose threshold and prefilter are chosen from the mesh
-bool automatic_tensor(const Options& o)
+std::optional<AF::Stopping_criteria> stopping_rule(const std::string& word)
 {
-  return automatic_parameters(o) && o.anisotropic && !o.has_lambda && !o.has_epsilon && o.normal_motion_only;
+  if(word == "noise") return AF::Stopping_criteria::automatic();
+  if(word == "paper") return AF::Stopping_criteria();
+  if(word == "off") return AF::Stopping_criteria::none();
+  return std::nullopt;
+}
+
+std::optional<AF::Package_diffusion_tensor> package_tensor(const std::string& word, bool automatic, bool has_settings, double lambda,
+                                                           double epsilon, bool normal_motion_only)
+{
+  if(word.empty()) return std::nullopt;
+  if(word == "isotropic") return AF::Isotropic_diffusion_tensor();
+  if(word == "uniform") return AF::Uniform_diffusion_tensor();
+  if(word != "anisotropic") throw std::invalid_argument("no tensor is called " + word);
+  if(automatic && !has_settings) return AF::Anisotropic_diffusion_tensor::automatic();
+  return AF::Anisotropic_diffusion_tensor().set_lambda(lambda).set_epsilon(epsilon).set_normal_motion_only(normal_motion_only);
+}
+
+AF::Package_diffusion_tensor starting_tensor(const AF::Fairing_options& f)
+{
+  if(f.diffusion_tensor) return *f.diffusion_tensor;
+  if(f.automatic_parameters()) return AF::Anisotropic_diffusion_tensor::automatic();
+  return AF::Isotropic_diffusion_tensor();
+}
+
+bool automatic_tensor(const AF::Fairing_options& f)
+{
+  const AF::Package_diffusion_tensor t = starting_tensor(f);
+  return f.automatic_parameters() && std::holds_alternative<AF::Anisotropic_diffusion_tensor>(t) &&
+         std::get<AF::Anisotropic_diffusion_tensor>(t).is_automatic();
 }
 
 // --mode, or its default: separate with --attributes, geometry without
 AF::Attribute_mode effective_mode(const Options& o)
 {
-  if(o.has_mode) return o.mode;
-  return o.attributes.empty() ? AF::Attribute_mode::GEOMETRY_ONLY : AF::Attribute_mode::SEPARATE;
+  return o.fairing.attribute_mode.value_or(o.attributes.empty() ? AF::Attribute_mode::GEOMETRY_ONLY : AF::Attribute_mode::SEPARATE);
 }
 
 const char* mode_name(AF::Attribute_mode m)
 {
-  switch(m)
-  {
-    case AF::Attribute_mode::COUPLED: return "coupled";
-    case AF::Attribute_mode::SEPARATE: return "separate";
-    case AF::Attribute_mode::ATTRIBUTES_ONLY: return "attributes";
-    default: return "geometry";
-  }
+  for(const auto& w : mode_words)
+    if(w.second == m) return w.first;
+  return "geometry";
 }
 
 std::string extension(const std::string& path)
@@ -545,18 +567,20 @@ void parse_arguments(int argc, char** argv, Options& o)
   if(positional.size() > 2) usage_error("unexpected argument " + quoted_excerpt(positional[2], 200));
   o.input = positional[0];
   o.output = positional[1];
-  if(o.has_time_step && o.has_relative_time_step) usage_error("give either --time-step or --relative-time-step, not both");
-  if(o.has_fidelity && o.has_relative_fidelity) usage_error("give either --fidelity or --relative-fidelity, not both");
-  if(o.has_bound && o.has_relative_bound) usage_error("give either --maximum-deviation or --relative-maximum-deviation, not both");
-  if(o.attributes.empty() && (o.mode == AF::Attribute_mode::COUPLED || o.mode == AF::Attribute_mode::ATTRIBUTES_ONLY))
-    usage_error(std::string("--mode ") + mode_name(o.mode) + " needs --attributes");
-  // without a time step the parameters are automatic: the anisotropic tensor unless --tensor is given
-  if(automatic_parameters(o) && !o.has_tensor) o.anisotropic = true;
-  if(!o.has_steps && automatic_parameters(o)) o.steps = AF::automatic_maximum_steps;
-  const bool asked_anisotropic = o.has_tensor && o.anisotropic;   // the tensor's options need it said
+  const AF::Fairing_options& given = o.fairing;
+  if(given.time_step && given.relative_time_step) usage_error("give either --time-step or --relative-time-step, not both");
+  if(given.fidelity_weight && given.relative_fidelity_weight) usage_error("give either --fidelity or --relative-fidelity, not both");
+  if(given.absolute_maximum_deviation && given.relative_maximum_deviation)
+    usage_error("give either --maximum-deviation or --relative-maximum-deviation, not both");
+  const AF::Attribute_mode mode = effective_mode(o);
+  if(o.attributes.empty() && (mode == AF::Attribute_mode::COUPLED || mode == AF::Attribute_mode::ATTRIBUTES_ONLY))
+    usage_error(std::string("--mode ") + mode_name(mode) + " needs --attributes");
+  const bool asked_anisotropic = o.tensor == "anisotropic";   // the tensor's options need it said
   if(o.has_lambda && !asked_anisotropic) usage_error("--lambda needs --tensor anisotropic");
   if(o.has_epsilon && !asked_anisotropic) usage_error("--epsilon needs --tensor anisotropic");
   if(o.has_tangential_motion && !asked_anisotropic) usage_error("--tangential-motion needs --tensor anisotropic");
+  o.fairing.diffusion_tensor = package_tensor(o.tensor, given.automatic_parameters(), o.has_lambda || o.has_epsilon || o.has_tangential_motion,
+                                              o.lambda, o.epsilon, o.normal_motion_only);
   Format f;
   if(!format_of(o.input, f)) usage_error("INPUT must be an .off, .obj, .ply or .stl file: " + o.input);
   if(!format_of(o.output, f) || f == Format::STL) usage_error("OUTPUT must be an .off, .obj or .ply file: " + o.output);
@@ -579,9 +603,9 @@ void parse_arguments(int argc, char** argv, Options& o)
   }
   if(o.curvature && f != Format::PLY)
     usage_error("--curvature needs a .ply OUTPUT (k1, k2 and mean_curvature are written as vertex properties)");
-  if(o.has_resample && o.element != AF::Finite_element::LOOP)
+  if(o.has_resample && given.finite_element != AF::Finite_element::LOOP)
     usage_error("--resample needs --element loop (it writes the Loop limit surface)");
-  if(o.has_resample && o.output_positions != AF::Output_positions::LIMIT_SURFACE)
+  if(o.has_resample && given.output_positions != AF::Output_positions::LIMIT_SURFACE)
     usage_error("--resample writes the limit surface: not with --output control");
   if(!o.snapshot.empty())
   {
@@ -591,7 +615,7 @@ void parse_arguments(int argc, char** argv, Options& o)
     for(const std::string& other : {o.input, o.output, o.report})
       if(!other.empty() && same_file(o.snapshot, other)) usage_error("--snapshot " + o.snapshot + " is also " + other);
   }
-  if(o.curvature && o.element != AF::Finite_element::LOOP)
+  if(o.curvature && given.finite_element != AF::Finite_element::LOOP)
     usage_error("--curvature needs --element loop (the linear element has no curvature)");
 }
 

@@ -5,8 +5,9 @@
 
 #include "tool_common.h"
 
-#include <CGAL/Anisotropic_fairing/Fairing_settings.h>
+#include <CGAL/Anisotropic_fairing/Fairing_options.h>
 
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -15,30 +16,17 @@ namespace af_tool {
 struct Options
 {
   std::string input, output, report;
-  bool has_time_step = false, has_relative_time_step = false;
-  double time_step = 0, relative_time_step = 0;
-  unsigned int steps = 10;
-  int order = 2;                   // --order: of the flow (2 or 4)
-  bool has_order = false;
-  bool has_steps = false;
-  std::string stop = "auto";   // auto, noise, paper, off
-  bool has_fidelity = false, has_relative_fidelity = false;
-  double fidelity = 0, relative_fidelity = 0;
-  bool has_bound = false, has_relative_bound = false, has_attribute_bound = false;   // --maximum-deviation ...
-  double bound = 0, relative_bound = 0, attribute_bound = 0;
-  AF::Finite_element element = AF::Finite_element::LOOP;
-  AF::Output_positions output_positions = AF::Output_positions::LIMIT_SURFACE;
-  AF::Linear_solver solver = AF::Linear_solver::AUTOMATIC;
-  AF::Boundary_handling boundary = AF::Boundary_handling::HOLD_BOUNDARY_CURVE;
-  int quadrature_degree = 8;
-  bool anisotropic = false, uniform = false, has_tensor = false, has_lambda = false, has_epsilon = false;
-  bool normal_motion_only = true, has_tangential_motion = false;   // --tangential-motion remove|keep
+  // what the library is asked for, in its own terms (CGAL::Anisotropic_fairing::Fairing_options): the
+  // options below that name a named parameter set it directly; the tensor's words are put into it last
+  AF::Fairing_options fairing;
+  std::string stop = "auto";   // auto, noise, paper, off: the word given to --stop (fairing.stopping_criteria)
+  // --tensor, --lambda, --epsilon, --tangential-motion as given, in any order: fairing.diffusion_tensor
+  std::string tensor;          // empty: not given
+  bool has_lambda = false, has_epsilon = false, has_tangential_motion = false;
   double lambda = 2.0, epsilon = 1e-3;
+  bool normal_motion_only = true;
+  bool has_attribute_weight = false;   // (a warning without --mode coupled)
   std::vector<std::string> attributes;   // the names given to --attributes, in their order
-  bool has_mode = false;
-  AF::Attribute_mode mode = AF::Attribute_mode::GEOMETRY_ONLY;
-  bool has_attribute_weight = false;
-  double attribute_weight = 1;
   bool curvature = false;   // --curvature: k1, k2, mean_curvature written as PLY vertex properties
   bool quiet = false;
   double progress_interval = 2;   // seconds of silence before a line says what the program is doing (0: never)
@@ -69,9 +57,17 @@ std::string version_text();
 // program.
 std::string report_refused_on_failure(const Options& o);
 
-bool automatic_parameters(const Options& o);
+// The stopping rule that --stop's word names (auto: none given, the library's default).
+std::optional<AF::Stopping_criteria> stopping_rule(const std::string& word);
+// The tensor that --tensor's word and the anisotropic tensor's settings name (no word: none given, the
+// library's default; the anisotropic tensor without settings is chosen from the mesh with automatic
+// parameters). Throws std::invalid_argument for an unknown word.
+std::optional<AF::Package_diffusion_tensor> package_tensor(const std::string& word, bool automatic, bool has_settings,
+                                                           double lambda, double epsilon, bool normal_motion_only);
+// the tensor the run starts from, whether given or the library's default
+AF::Package_diffusion_tensor starting_tensor(const AF::Fairing_options& f);
 // the anisotropic tensor whose threshold and prefilter are chosen from the mesh
-bool automatic_tensor(const Options& o);
+bool automatic_tensor(const AF::Fairing_options& f);
 // --mode, or its default: separate with --attributes, geometry without
 AF::Attribute_mode effective_mode(const Options& o);
 const char* mode_name(AF::Attribute_mode m);

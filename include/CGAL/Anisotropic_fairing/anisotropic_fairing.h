@@ -4,6 +4,7 @@
 #ifndef CGAL_ANISOTROPIC_FAIRING_ANISOTROPIC_FAIRING_H
 #define CGAL_ANISOTROPIC_FAIRING_ANISOTROPIC_FAIRING_H
 
+#include <CGAL/Anisotropic_fairing/Fairing_options.h>
 #include <CGAL/Anisotropic_fairing/Fairing_report.h>
 #include <CGAL/Anisotropic_fairing/Fairing_settings.h>
 #include <CGAL/Anisotropic_fairing/Input_error.h>
@@ -72,6 +73,12 @@ of its area per step. `time_step` and `fidelity_weight` give them in model units
 \param np optional named parameters among:
 
 \cgalNamedParamsBegin
+  \cgalParamNBegin{fairing_options}
+    \cgalParamDescription{all the parameters below but the maps, the callback, a tensor type of one's own and
+                          `sparse_linear_solver`, as one value; the named parameters given beside it apply on top
+                          (giving both parameters of a pair, one in the value and one beside it, is refused)}
+    \cgalParamType{`Fairing_options`} \cgalParamDefault{`Fairing_options()`: every default below}
+  \cgalParamNEnd
   \cgalParamNBegin{vertex_point_map}
     \cgalParamDescription{the positions of the vertices, read and written; only in the overloads without a point-map
                           argument (with one, passing it too is a compile-time error)}

@@ -24,6 +24,14 @@ inline void check_parameter(bool ok, const std::string& message)
   if(!ok) throw Input_error(Input_error::INVALID_PARAMETER, Input_error::no_element, message);
 }
 
+/// Refuses a quadrature of the Loop element that does not exist.
+inline void check_quadrature_spec(const Quadrature_spec& spec)
+{
+  check_parameter(spec.degree == 4 || spec.degree == 6 || spec.degree == 8,
+                  "quadrature degree " + std::to_string(spec.degree) + " is not available (use 4, 6 or 8)");
+  check_parameter(spec.tiling_depth >= 0 && spec.tiling_depth <= 12, "quadrature tiling depth must lie in [0, 12]");
+}
+
 /// The quadrature of the Loop element, checked.
 template <typename NamedParameters>
 Quadrature_spec read_quadrature_spec(const NamedParameters& np)
@@ -33,9 +41,7 @@ Quadrature_spec read_quadrature_spec(const NamedParameters& np)
   Quadrature_spec spec;
   spec.degree = choose_parameter(get_parameter(np, internal_np::quadrature_degree), spec.degree);
   spec.tiling_depth = choose_parameter(get_parameter(np, internal_np::quadrature_tiling_depth), spec.tiling_depth);
-  check_parameter(spec.degree == 4 || spec.degree == 6 || spec.degree == 8,
-                  "quadrature degree " + std::to_string(spec.degree) + " is not available (use 4, 6 or 8)");
-  check_parameter(spec.tiling_depth >= 0 && spec.tiling_depth <= 12, "quadrature tiling depth must lie in [0, 12]");
+  check_quadrature_spec(spec);
   return spec;
 }
 

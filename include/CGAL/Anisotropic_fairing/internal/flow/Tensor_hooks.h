@@ -10,6 +10,7 @@
 
 #include <type_traits>
 #include <utility>
+#include <variant>
 
 namespace CGAL {
 namespace Anisotropic_fairing {
@@ -71,6 +72,25 @@ void choose_tensor(Tensor& t, double lambda, double epsilon)
 {
   if constexpr(has_tensor_member<Tensor, choose_member>::value) t.choose(lambda, epsilon);
 }
+
+
+// A tensor chosen at run time (Package_diffusion_tensor): the same questions, asked of the one it holds.
+template <typename... Tensors>
+bool is_automatic_tensor(const std::variant<Tensors...>& t)
+{
+  return std::visit([](const auto& held) { return is_automatic_tensor(held); }, t);
+}
+template <typename... Tensors>
+void choose_tensor(std::variant<Tensors...>& t, double lambda, double epsilon)
+{
+  std::visit([&](auto& held) { choose_tensor(held, lambda, epsilon); }, t);
+}
+
+/// `f(t)`, or `f` of the tensor a variant holds: the flow runs on the tensor's own type.
+template <typename Tensor, typename F>
+decltype(auto) with_tensor(const Tensor& t, F&& f) { return f(t); }
+template <typename... Tensors, typename F>
+decltype(auto) with_tensor(const std::variant<Tensors...>& t, F&& f) { return std::visit(std::forward<F>(f), t); }
 
 } // namespace internal
 } // namespace Anisotropic_fairing

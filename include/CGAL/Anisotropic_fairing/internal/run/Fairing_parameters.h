@@ -1,15 +1,15 @@
 // Copyright (c) 2026 Anisotropic_fairing developers.
 // SPDX-License-Identifier: GPL-3.0-or-later
 //
-// The named parameters read and checked in one place: what anisotropic_fairing() was asked for, as
-// one struct that the driver reads before it touches the mesh (the quadrature through
-// Quadrature_parameters.h, which Loop_limit_surface reads too). A value out of range is refused with
-// Input_error::INVALID_PARAMETER and a message naming the parameter; the defaults are those
-// documented with anisotropic_fairing() and Loop_limit_surface.
+// The named parameters read in one place into a Fairing_options value, which is then checked and
+// resolved into what the driver runs with, before it touches the mesh. A value out of range is refused
+// with Input_error::INVALID_PARAMETER and a message naming the parameter; the defaults are those
+// documented with anisotropic_fairing() and Fairing_options.
 
 #ifndef CGAL_ANISOTROPIC_FAIRING_INTERNAL_RUN_FAIRING_PARAMETERS_H
 #define CGAL_ANISOTROPIC_FAIRING_INTERNAL_RUN_FAIRING_PARAMETERS_H
 
+#include <CGAL/Anisotropic_fairing/Fairing_options.h>
 #include <CGAL/Anisotropic_fairing/Fairing_settings.h>
 #include <CGAL/Anisotropic_fairing/Input_error.h>
 #include <CGAL/Anisotropic_fairing/named_function_parameters.h>
@@ -19,6 +19,7 @@
 
 #include <cmath>
 #include <cstddef>
+#include <optional>
 #include <string>
 #include <type_traits>
 
@@ -26,25 +27,18 @@ namespace CGAL {
 namespace Anisotropic_fairing {
 namespace internal {
 
-/// Without a time step the package chooses the time step, the stopping rule and (unless given) the
-/// tensor from the mesh (Automatic_parameters.h). A constant: the default tensor's type depends on it.
-template <typename NamedParameters>
-struct uses_automatic_parameters
-  : std::integral_constant<bool, parameters::is_default_parameter<NamedParameters, internal_np::time_step_t>::value &&
-                                 parameters::is_default_parameter<NamedParameters, internal_np::relative_time_step_t>::value>
-{};
-
-/// What anisotropic_fairing() reads from its named parameters, but for those whose type the caller
-/// chooses (the tensor, vertex_is_constrained and the callback), which fair() reads itself.
+/// What anisotropic_fairing() runs with, resolved from a `Fairing_options` (the tensor, the maps and the
+/// callback, whose types are the caller's, are read by fair() itself).
 struct Fairing_parameters
 {
   Stepper_settings settings;   // the stepper's numbers as given (the driver adds the noise and the automatic choices)
+  bool automatic = true;       // no time step given: the run chooses its parameters from the mesh
   Finite_element element = Finite_element::LOOP;
   Output_positions output = Output_positions::LIMIT_SURFACE;
   Attribute_mode mode = Attribute_mode::GEOMETRY_ONLY;
   double attribute_weight = 1;  // of the attribute columns in the coupled mode
   Boundary_handling boundary = Boundary_handling::HOLD_BOUNDARY_CURVE;
-  Quadrature_spec quadrature;   // read and checked for the Loop element only (the linear element has none)
+  Quadrature_spec quadrature;   // checked for the Loop element only (the linear element has none)
 };
 
 /// sparse_linear_solver: the user's factorisation, or none given
@@ -52,74 +46,117 @@ inline Direct_solver_factory direct_solver_of(CGAL::internal_np::Param_not_found
 template <typename SolverTraits>
 Direct_solver_factory direct_solver_of(const SolverTraits& traits) { return user_direct_solver(traits); }
 
-/// Reads and checks the named parameters of a run (`has_attributes`: an attribute map is given).
-template <typename NamedParameters>
-Fairing_parameters read_fairing_parameters(const NamedParameters& np, bool has_attributes)
+/// The tensors a `Package_diffusion_tensor` holds (and that value itself).
+template <typename T>
+struct is_package_tensor
+  : std::integral_constant<bool, std::is_same<T, Anisotropic_diffusion_tensor>::value || std::is_same<T, Isotropic_diffusion_tensor>::value ||
+                                 std::is_same<T, Uniform_diffusion_tensor>::value || std::is_same<T, Package_diffusion_tensor>::value>
+{};
+
+template <typename T, typename V> void assign_option(T& field, const V& value) { field = T(value); }
+template <typename T, typename V> void assign_option(std::optional<T>& field, const V& value) { field = T(value); }
+
+/// `field` = the named parameter `tag`, if it is given.
+template <typename NamedParameters, typename Tag, typename T>
+void take_option(const NamedParameters& np, Tag tag, T& field)
 {
-  using parameters::choose_parameter;
-  using parameters::get_parameter;
+  if constexpr(!parameters::is_default_parameter<NamedParameters, Tag>::value) assign_option(field, parameters::get_parameter(np, tag));
+}
+
+/// The options of a run: the named parameter `fairing_options` (or the defaults), and on top of it every
+/// other named parameter given; a tensor of the package's own types goes into the value too.
+template <typename NamedParameters>
+Fairing_options read_fairing_options(const NamedParameters& np)
+{
   using parameters::is_default_parameter;
-  Fairing_parameters p;
-  Stepper_settings& s = p.settings;
-  const bool absolute_tau = !is_default_parameter<NamedParameters, internal_np::time_step_t>::value;
-  const bool relative_tau = !is_default_parameter<NamedParameters, internal_np::relative_time_step_t>::value;
-  constexpr bool automatic = uses_automatic_parameters<NamedParameters>::value;
-  check_parameter(!(absolute_tau && relative_tau), "give either time_step or relative_time_step, not both");
-  s.time_unit = absolute_tau ? Length_unit::MODEL : relative_tau ? Length_unit::SCALE : Length_unit::EDGE;
-  s.time_step = absolute_tau ? double(choose_parameter(get_parameter(np, internal_np::time_step), 0.0))
-                             : double(choose_parameter(get_parameter(np, internal_np::relative_time_step), 1e-3));
-  check_parameter(std::isfinite(s.time_step) && s.time_step > 0, "the time step must be positive and finite");
-  const bool absolute_w = !is_default_parameter<NamedParameters, internal_np::fidelity_weight_t>::value;
-  const bool relative_w = !is_default_parameter<NamedParameters, internal_np::relative_fidelity_weight_t>::value;
-  check_parameter(!(absolute_w && relative_w), "give either fidelity_weight or relative_fidelity_weight, not both");
-  s.relative_fidelity = !absolute_w;
-  s.fidelity_weight = absolute_w ? double(choose_parameter(get_parameter(np, internal_np::fidelity_weight), 0.0))
-                                 : double(choose_parameter(get_parameter(np, internal_np::relative_fidelity_weight), 0.0));
-  check_parameter(std::isfinite(s.fidelity_weight) && s.fidelity_weight >= 0, "the fidelity weight must be finite and >= 0");
+  Fairing_options o = parameters::choose_parameter(parameters::get_parameter(np, internal_np::fairing_options), Fairing_options());
+  take_option(np, internal_np::time_step, o.time_step);
+  take_option(np, internal_np::relative_time_step, o.relative_time_step);
+  take_option(np, internal_np::flow_order, o.flow_order);
+  take_option(np, CGAL::internal_np::number_of_iterations, o.number_of_iterations);
+  take_option(np, internal_np::stopping_criteria, o.stopping_criteria);
+  take_option(np, internal_np::fidelity_weight, o.fidelity_weight);
+  take_option(np, internal_np::relative_fidelity_weight, o.relative_fidelity_weight);
   // relative_maximum_deviation, or its deprecated spelling maximum_deviation; or absolute_maximum_deviation
-  const bool relative_bound = !is_default_parameter<NamedParameters, internal_np::relative_maximum_deviation_t>::value;
-  const bool old_bound = !is_default_parameter<NamedParameters, internal_np::maximum_deviation_t>::value;
-  const bool absolute_bound = !is_default_parameter<NamedParameters, internal_np::absolute_maximum_deviation_t>::value;
-  check_parameter(int(relative_bound) + int(old_bound) + int(absolute_bound) <= 1,
+  check_parameter(int(!is_default_parameter<NamedParameters, internal_np::relative_maximum_deviation_t>::value) +
+                  int(!is_default_parameter<NamedParameters, internal_np::maximum_deviation_t>::value) +
+                  int(!is_default_parameter<NamedParameters, internal_np::absolute_maximum_deviation_t>::value) <= 1,
                   "give one of relative_maximum_deviation and absolute_maximum_deviation (maximum_deviation: the relative one's "
                   "deprecated spelling), not more");
-  s.relative_deviation = !absolute_bound;
-  s.maximum_deviation = absolute_bound ? double(choose_parameter(get_parameter(np, internal_np::absolute_maximum_deviation), 0.0))
-                        : old_bound    ? double(choose_parameter(get_parameter(np, internal_np::maximum_deviation), 0.0))
-                                       : double(choose_parameter(get_parameter(np, internal_np::relative_maximum_deviation), 0.0));
+  take_option(np, internal_np::relative_maximum_deviation, o.relative_maximum_deviation);
+  take_option(np, internal_np::maximum_deviation, o.relative_maximum_deviation);
+  take_option(np, internal_np::absolute_maximum_deviation, o.absolute_maximum_deviation);
+  take_option(np, internal_np::attribute_maximum_deviation, o.attribute_maximum_deviation);
+  typedef typename std::decay<decltype(parameters::get_parameter(np, internal_np::diffusion_tensor))>::type Tensor;
+  if constexpr(is_package_tensor<Tensor>::value) take_option(np, internal_np::diffusion_tensor, o.diffusion_tensor);
+  take_option(np, internal_np::finite_element, o.finite_element);
+  take_option(np, internal_np::output_positions, o.output_positions);
+  take_option(np, internal_np::attribute_mode, o.attribute_mode);
+  take_option(np, internal_np::attribute_weight, o.attribute_weight);
+  take_option(np, internal_np::boundary_handling, o.boundary_handling);
+  take_option(np, internal_np::linear_solver, o.linear_solver);
+  take_option(np, internal_np::solver_tolerance, o.solver_tolerance);
+  take_option(np, internal_np::solver_maximum_iterations, o.solver_maximum_iterations);
+  take_option(np, internal_np::quadrature_degree, o.quadrature_degree);
+  take_option(np, internal_np::quadrature_tiling_depth, o.quadrature_tiling_depth);
+  take_option(np, CGAL::internal_np::verbose, o.verbose);
+  return o;
+}
+
+/// Checks the options of a run and resolves what was not given (`has_attributes`: an attribute map is
+/// given); whether the parameters are automatic is read from the value: no time step given.
+inline Fairing_parameters resolve_fairing_parameters(const Fairing_options& o, bool has_attributes)
+{
+  Fairing_parameters p;
+  Stepper_settings& s = p.settings;
+  p.automatic = o.automatic_parameters();
+  check_parameter(!(o.time_step && o.relative_time_step), "give either time_step or relative_time_step, not both");
+  s.time_unit = o.time_step ? Length_unit::MODEL : o.relative_time_step ? Length_unit::SCALE : Length_unit::EDGE;
+  s.time_step = o.time_step ? *o.time_step : o.relative_time_step.value_or(1e-3);
+  check_parameter(std::isfinite(s.time_step) && s.time_step > 0,
+                  std::string(o.time_step ? "time_step" : "relative_time_step") + " must be positive and finite");
+  check_parameter(!(o.fidelity_weight && o.relative_fidelity_weight), "give either fidelity_weight or relative_fidelity_weight, not both");
+  s.relative_fidelity = !o.fidelity_weight;
+  s.fidelity_weight = o.fidelity_weight ? *o.fidelity_weight : o.relative_fidelity_weight.value_or(0.0);
+  check_parameter(std::isfinite(s.fidelity_weight) && s.fidelity_weight >= 0,
+                  std::string(o.fidelity_weight ? "fidelity_weight" : "relative_fidelity_weight") + " must be finite and >= 0");
+  check_parameter(!(o.relative_maximum_deviation && o.absolute_maximum_deviation),
+                  "give one of relative_maximum_deviation and absolute_maximum_deviation (maximum_deviation: the relative one's "
+                  "deprecated spelling), not more");
+  s.relative_deviation = !o.absolute_maximum_deviation;
+  s.maximum_deviation = o.absolute_maximum_deviation ? *o.absolute_maximum_deviation : o.relative_maximum_deviation.value_or(0.0);
   // 0: no bound
-  check_parameter(std::isfinite(s.maximum_deviation) && s.maximum_deviation >= 0, "the maximum deviation must be finite and >= 0");
-  s.attribute_maximum_deviation = double(choose_parameter(get_parameter(np, internal_np::attribute_maximum_deviation), 0.0));
+  check_parameter(std::isfinite(s.maximum_deviation) && s.maximum_deviation >= 0,
+                  std::string(o.absolute_maximum_deviation ? "absolute" : "relative") + "_maximum_deviation must be finite and >= 0");
+  s.attribute_maximum_deviation = o.attribute_maximum_deviation;
   check_parameter(std::isfinite(s.attribute_maximum_deviation) && s.attribute_maximum_deviation >= 0,
-                  "the attribute maximum deviation must be finite and >= 0");
-  s.maximum_steps = std::size_t(choose_parameter(get_parameter(np, CGAL::internal_np::number_of_iterations),
-                                                  automatic ? automatic_maximum_steps : 10u));
-  s.order = choose_parameter(get_parameter(np, internal_np::flow_order), 2);
-  check_parameter(s.order == 2 || s.order == 4, "the flow's order must be 2 (diffusion) or 4");
-  s.solver = choose_parameter(get_parameter(np, internal_np::linear_solver), Linear_solver::AUTOMATIC);
-  s.solver_tolerance = choose_parameter(get_parameter(np, internal_np::solver_tolerance), 1e-8);
-  check_parameter(s.solver_tolerance > 0 && s.solver_tolerance < 1, "the solver tolerance must lie in (0, 1)");
-  s.solver_maximum_iterations = choose_parameter(get_parameter(np, internal_np::solver_maximum_iterations), 10000);
-  check_parameter(s.solver_maximum_iterations >= 1, "the solver needs at least one iteration");
-  s.direct_solver = direct_solver_of(get_parameter(np, CGAL::internal_np::sparse_linear_solver));
-  s.verbose = choose_parameter(get_parameter(np, CGAL::internal_np::verbose), false);
-  p.element = choose_parameter(get_parameter(np, internal_np::finite_element), Finite_element::LOOP);
-  p.output = choose_parameter(get_parameter(np, internal_np::output_positions), Output_positions::LIMIT_SURFACE);
-  p.mode = choose_parameter(get_parameter(np, internal_np::attribute_mode),
-                            has_attributes ? Attribute_mode::SEPARATE : Attribute_mode::GEOMETRY_ONLY);
+                  "attribute_maximum_deviation must be finite and >= 0");
+  s.maximum_steps = o.maximum_steps();
+  s.order = o.flow_order;
+  check_parameter(s.order == 2 || s.order == 4, "flow_order must be 2 (diffusion) or 4");
+  s.solver = o.linear_solver;
+  s.solver_tolerance = o.solver_tolerance;
+  check_parameter(s.solver_tolerance > 0 && s.solver_tolerance < 1, "solver_tolerance must lie in (0, 1)");
+  s.solver_maximum_iterations = o.solver_maximum_iterations;
+  check_parameter(s.solver_maximum_iterations >= 1, "solver_maximum_iterations must be at least 1");
+  s.verbose = o.verbose;
+  p.element = o.finite_element;
+  p.output = o.output_positions;
+  p.mode = o.attribute_mode.value_or(has_attributes ? Attribute_mode::SEPARATE : Attribute_mode::GEOMETRY_ONLY);
   check_parameter(has_attributes || p.mode == Attribute_mode::GEOMETRY_ONLY || p.mode == Attribute_mode::SEPARATE,
-                  "the coupled and attributes-only modes need an attribute map");
+                  "attribute_mode: the coupled and attributes-only modes need an attribute map");
   // (the noise criterion measures the geometry: with the geometry fixed, the paper's criteria)
-  s.stopping = choose_parameter(get_parameter(np, internal_np::stopping_criteria),
-                                automatic && p.mode != Attribute_mode::ATTRIBUTES_ONLY ? Stopping_criteria::automatic()
-                                                                                       : Stopping_criteria());
+  s.stopping = o.stopping_criteria.value_or(p.automatic && p.mode != Attribute_mode::ATTRIBUTES_ONLY ? Stopping_criteria::automatic()
+                                                                                                     : Stopping_criteria());
   check_parameter(std::isfinite(s.stopping.curvature_rate_ratio) && std::isfinite(s.stopping.curvature_rate) &&
                   std::isfinite(s.stopping.displacement) && std::isfinite(s.stopping.steady_speed) &&
-                  std::isfinite(s.stopping.noise_discrepancy), "stopping thresholds must be finite");
-  p.attribute_weight = choose_parameter(get_parameter(np, internal_np::attribute_weight), 1.0);
-  check_parameter(std::isfinite(p.attribute_weight) && p.attribute_weight > 0, "the attribute weight must be positive and finite");
-  p.boundary = choose_parameter(get_parameter(np, internal_np::boundary_handling), Boundary_handling::HOLD_BOUNDARY_CURVE);
-  if(p.element == Finite_element::LOOP) p.quadrature = read_quadrature_spec(np);
+                  std::isfinite(s.stopping.noise_discrepancy), "stopping_criteria: the thresholds must be finite");
+  p.attribute_weight = o.attribute_weight;
+  check_parameter(std::isfinite(p.attribute_weight) && p.attribute_weight > 0, "attribute_weight must be positive and finite");
+  p.boundary = o.boundary_handling;
+  p.quadrature.degree = o.quadrature_degree;
+  p.quadrature.tiling_depth = o.quadrature_tiling_depth;
+  if(p.element == Finite_element::LOOP) check_quadrature_spec(p.quadrature);
   return p;
 }
 
