@@ -1,6 +1,7 @@
 // The JSON report of anisotropic_fairing (see json_report.h), built with nlohmann-json: numbers in the
 // shortest form that reads back to the same double.
 #include "json_report.h"
+#include "option_words.h"
 
 #include <nlohmann/json.hpp>
 
@@ -47,7 +48,7 @@ std::string report_json(const Options& o, const Run_record& r, double wall_secon
   j["output_positions"] = output_name(given.output_positions);
   // the tensor the run used: with automatic parameters the package keeps the anisotropic, the
   // isotropic or the uniform result (selected_tensor)
-  const AF::Package_diffusion_tensor start = starting_tensor(given);
+  const AF::Package_diffusion_tensor start = given.diffusion_tensor_or_default();
   const auto* anisotropic = std::get_if<AF::Anisotropic_diffusion_tensor>(&start);
   const bool isotropic_kept = ran && (f.selected_tensor == "isotropic" || f.selected_tensor == "uniform");
   j["tensor"] = std::holds_alternative<AF::Uniform_diffusion_tensor>(start) || (ran && f.selected_tensor == "uniform") ? "uniform"

@@ -1,13 +1,17 @@
-// The words of the options that choose among values, one table each, read by the program's parser and
-// by the Python module's keyword arguments alike.
+// The words of the options that choose among values, one table each, and the library values that the
+// words of --stop and --tensor name: read by the program's parser and the Python module alike.
 #ifndef AF_TOOL_OPTION_WORDS_H
 #define AF_TOOL_OPTION_WORDS_H
 
 #include "tool_common.h"
 
+#include <CGAL/Anisotropic_fairing/Fairing_options.h>
 #include <CGAL/Anisotropic_fairing/Fairing_settings.h>
 
+#include <optional>
+#include <stdexcept>
 #include <string>
+#include <variant>
 #include <utility>
 #include <vector>
 
@@ -47,6 +51,37 @@ std::vector<const char*> words_of(const Word_table<T>& table)
   std::vector<const char*> words;
   for(const auto& w : table) words.push_back(w.first);
   return words;
+}
+
+// The stopping rule that --stop's word names (auto: none given, the library's default).
+inline std::optional<AF::Stopping_criteria> stopping_rule(const std::string& word)
+{
+  if(word == "noise") return AF::Stopping_criteria::automatic();
+  if(word == "paper") return AF::Stopping_criteria();
+  if(word == "off") return AF::Stopping_criteria::none();
+  return std::nullopt;
+}
+
+// The tensor that --tensor's word and the anisotropic tensor's settings name (no word: none given, the
+// library's default; the anisotropic tensor without settings is chosen from the mesh with automatic
+// parameters). Throws std::invalid_argument for an unknown word.
+inline std::optional<AF::Package_diffusion_tensor> package_tensor(const std::string& word, bool automatic, bool has_settings, double lambda,
+                                                           double epsilon, bool normal_motion_only)
+{
+  if(word.empty()) return std::nullopt;
+  if(word == "isotropic") return AF::Isotropic_diffusion_tensor();
+  if(word == "uniform") return AF::Uniform_diffusion_tensor();
+  if(word != "anisotropic") throw std::invalid_argument("no tensor is called " + word);
+  if(automatic && !has_settings) return AF::Anisotropic_diffusion_tensor::automatic();
+  return AF::Anisotropic_diffusion_tensor().set_lambda(lambda).set_epsilon(epsilon).set_normal_motion_only(normal_motion_only);
+}
+
+// the anisotropic tensor whose threshold and prefilter are chosen from the mesh
+inline bool automatic_tensor(const AF::Fairing_options& f)
+{
+  const AF::Package_diffusion_tensor t = f.diffusion_tensor_or_default();
+  return f.automatic_parameters() && std::holds_alternative<AF::Anisotropic_diffusion_tensor>(t) &&
+         std::get<AF::Anisotropic_diffusion_tensor>(t).is_automatic();
 }
 
 } // namespace af_tool

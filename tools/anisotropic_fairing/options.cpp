@@ -399,39 +399,6 @@ const Option_spec* find_option(const std::string& arg)
 
 } // namespace
 
-std::optional<AF::Stopping_criteria> stopping_rule(const std::string& word)
-{
-  if(word == "noise") return AF::Stopping_criteria::automatic();
-  if(word == "paper") return AF::Stopping_criteria();
-  if(word == "off") return AF::Stopping_criteria::none();
-  return std::nullopt;
-}
-
-std::optional<AF::Package_diffusion_tensor> package_tensor(const std::string& word, bool automatic, bool has_settings, double lambda,
-                                                           double epsilon, bool normal_motion_only)
-{
-  if(word.empty()) return std::nullopt;
-  if(word == "isotropic") return AF::Isotropic_diffusion_tensor();
-  if(word == "uniform") return AF::Uniform_diffusion_tensor();
-  if(word != "anisotropic") throw std::invalid_argument("no tensor is called " + word);
-  if(automatic && !has_settings) return AF::Anisotropic_diffusion_tensor::automatic();
-  return AF::Anisotropic_diffusion_tensor().set_lambda(lambda).set_epsilon(epsilon).set_normal_motion_only(normal_motion_only);
-}
-
-AF::Package_diffusion_tensor starting_tensor(const AF::Fairing_options& f)
-{
-  if(f.diffusion_tensor) return *f.diffusion_tensor;
-  if(f.automatic_parameters()) return AF::Anisotropic_diffusion_tensor::automatic();
-  return AF::Isotropic_diffusion_tensor();
-}
-
-bool automatic_tensor(const AF::Fairing_options& f)
-{
-  const AF::Package_diffusion_tensor t = starting_tensor(f);
-  return f.automatic_parameters() && std::holds_alternative<AF::Anisotropic_diffusion_tensor>(t) &&
-         std::get<AF::Anisotropic_diffusion_tensor>(t).is_automatic();
-}
-
 // --mode, or its default: separate with --attributes, geometry without
 AF::Attribute_mode effective_mode(const Options& o)
 {

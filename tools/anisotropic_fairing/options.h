@@ -57,17 +57,6 @@ std::string version_text();
 // program.
 std::string report_refused_on_failure(const Options& o);
 
-// The stopping rule that --stop's word names (auto: none given, the library's default).
-std::optional<AF::Stopping_criteria> stopping_rule(const std::string& word);
-// The tensor that --tensor's word and the anisotropic tensor's settings name (no word: none given, the
-// library's default; the anisotropic tensor without settings is chosen from the mesh with automatic
-// parameters). Throws std::invalid_argument for an unknown word.
-std::optional<AF::Package_diffusion_tensor> package_tensor(const std::string& word, bool automatic, bool has_settings,
-                                                           double lambda, double epsilon, bool normal_motion_only);
-// the tensor the run starts from, whether given or the library's default
-AF::Package_diffusion_tensor starting_tensor(const AF::Fairing_options& f);
-// the anisotropic tensor whose threshold and prefilter are chosen from the mesh
-bool automatic_tensor(const AF::Fairing_options& f);
 // --mode, or its default: separate with --attributes, geometry without
 AF::Attribute_mode effective_mode(const Options& o);
 const char* mode_name(AF::Attribute_mode m);

@@ -61,6 +61,15 @@ struct Fairing_options
   /// whether the run chooses its parameters from the mesh: no time step was given
   bool automatic_parameters() const { return !time_step && !relative_time_step; }
 
+  /// the tensor the run starts from: `diffusion_tensor`, or its default (chosen from the mesh with
+  /// automatic parameters)
+  Package_diffusion_tensor diffusion_tensor_or_default() const
+  {
+    if(diffusion_tensor) return *diffusion_tensor;
+    if(automatic_parameters()) return Anisotropic_diffusion_tensor::automatic();
+    return Isotropic_diffusion_tensor();
+  }
+
   /// the most steps of the run: `number_of_iterations`, or its default
   unsigned int maximum_steps() const { return number_of_iterations.value_or(automatic_parameters() ? automatic_maximum_steps : 10u); }
 };

@@ -146,7 +146,7 @@ struct Fairing_report
   /// first step, the input's own limit surface being off it by more than the noise (Loop element; with
   /// `Output_positions::CONTROL_POINTS` the input is written and this says what the limit output would be)
   double limit_weight = 1;
-  double maximum_deviation = 0;   ///< the bound on how far a written vertex moves off the input (named parameter `maximum_deviation` or `absolute_maximum_deviation`), model units; 0 without a bound
+  double maximum_deviation = 0;   ///< the bound on how far a written vertex moves off the input (named parameter `relative_maximum_deviation` or `absolute_maximum_deviation`), model units; 0 without a bound
   double largest_deviation = 0;   ///< the largest distance from a written vertex to its input position, model units (with or without a bound)
   double attribute_maximum_deviation = 0; ///< the bound on each vertex's attribute values (`attribute_maximum_deviation`), the attributes' units; 0 without
   double largest_attribute_deviation = 0; ///< the largest Euclidean distance between a vertex's written and input attribute values

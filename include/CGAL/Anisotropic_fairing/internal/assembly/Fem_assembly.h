@@ -75,22 +75,18 @@ void scatter_local_matrices(const Local* const (&local)[N], const int* ring, int
   }
 }
 
-// cosines of the turning angles at which a surface counts as folded, and as nearly folded
-constexpr double turn_120 = -0.5;
-constexpr double turn_110 = -0.34202014332566871;
-
 struct Assembly_statistics
 {
   double area = 0;
   double energy = 0;       // trace(X^T L X) over the metric columns = sum_q c_q tr(A_q G_q)
   double H_integral = 0;   // int |H|^2 dA
-  double bounded_H_integral = 0;   // int min(|H|, B)^2 dA, B per component (set_curvature_bounds): sees a
+  double bounded_H_integral = 0;   // int min(|H|, B)^2 dA, B per component (Assembly_context): sees a
                                    // blow-up over an area, not a cusp on a tiny face
   bool degenerate = false; // sqrt(det G) <= 0 or not finite somewhere
   std::size_t degenerate_face = 0;
   std::size_t degenerate_points = 0;  // quadrature points where it is
-  std::size_t reversed_faces = 0;     // faces whose limit normal turns by more than 120 degrees within the face
-  std::size_t bent_faces = 0;         // ... by more than 110 degrees (nearly reversed: Step_safety.h)
+  std::size_t reversed_faces = 0;     // faces whose limit normal turns within the face by more than the angle
+  std::size_t bent_faces = 0;         // ... of Assembly_context::folded_turn, and of bent_turn (Step_safety.h)
   std::vector<double> component_area; // per connected component (when the assembler knows them)
 
   void add(const Assembly_statistics& o)
@@ -103,6 +99,28 @@ struct Assembly_statistics
     if(component_area.size() < o.component_area.size()) component_area.resize(o.component_area.size(), 0.0);
     for(std::size_t c = 0; c < o.component_area.size(); ++c) component_area[c] += o.component_area[c];
   }
+};
+
+/// What the assembler is told about one run, once (null members: none).
+struct Assembly_context
+{
+  // indices reported to the tensor (Quadrature_point_geometry::face and ring) and in statistics are
+  // translated through these maps when the cache works in a private numbering
+  const std::vector<int>* original_vertex = nullptr;
+  const std::vector<std::size_t>* original_face = nullptr;
+  // vertices left out of the discrete curvature integral of an element without second derivatives: on a
+  // border, (L X)_i is the conormal term of the boundary, not a mean curvature
+  const std::vector<bool>* border = nullptr;
+  // the connected component of each face: the statistics then carry the area per component
+  const std::vector<int>* face_component = nullptr;
+  std::size_t components = 0;
+  // each component's length scale relative to the tensor's (Quadrature_point_geometry::component_scale)
+  const std::vector<double>* component_scale = nullptr;
+  // the bound B of each component's mean curvature in Assembly_statistics::bounded_H_integral
+  const std::vector<double>* curvature_bound = nullptr;
+  // cosines of the turning angles within a face at which it counts as reversed and as bent (Step_safety's
+  // folds); -2: none counted
+  double folded_turn = -2, bent_turn = -2;
 };
 
 template <typename Cache>
@@ -121,32 +139,12 @@ public:
     if(with_pattern && chunks_ > 1) share_columns(number_of_vertices);
   }
 
-  /// Indices reported to the tensor (Quadrature_point_geometry::face and ring) and in statistics are
-  /// translated through these maps when the cache works in a private numbering.
-  void use_original_indices(const std::vector<int>* vertex_of, const std::vector<std::size_t>* face_of)
-  {
-    original_vertex_ = vertex_of;
-    original_face_ = face_of;
-  }
+  /// What the faces' numbers and components are (Assembly_context); read at every assembly.
+  void set_context(const Assembly_context& context) { context_ = context; }
 
   /// The control points of a prefiltered surface (same rows and columns as X): its derivatives at each
   /// quadrature point are passed to the tensor (Quadrature_point_geometry::prefiltered_t1, ...); null: none.
   void set_prefiltered(const Control_matrix* Xp) { prefiltered_ = Xp; }
-
-  /// Vertices left out of the discrete curvature integral of an element without second derivatives:
-  /// on a border, (L X)_i is the conormal term of the boundary, not a mean curvature.
-  void exclude_from_curvature(const std::vector<bool>* border) { border_ = border; }
-
-  /// The connected component of each face and each component's length scale relative to the tensor's
-  /// (Quadrature_point_geometry::component_scale); the statistics then carry the area per component.
-  void use_components(const std::vector<int>* face_component, std::size_t count)
-  {
-    face_component_ = face_component;
-    components_ = count;
-  }
-  void set_component_scales(const std::vector<double>* scale) { component_scale_ = scale; }
-  /// The bound B of each component's mean curvature in Assembly_statistics::bounded_H_integral.
-  void set_curvature_bounds(const std::vector<double>* bound) { curvature_bound_ = bound; }
 
   /// The symmetric pattern (all values zero) that M and L fill: value arrays index its non-zeros.
   const Eigen::SparseMatrix<double>& pattern() const { return pattern_; }
@@ -171,7 +169,7 @@ public:
       }, std::size_t(65536));
     }
     std::vector<Assembly_statistics> stats{ std::size_t(chunks_) };
-    for(Assembly_statistics& st : stats) st.component_area.assign(components_, 0.0);
+    for(Assembly_statistics& st : stats) st.component_area.assign(context_.components, 0.0);
     // chunk k: the k-th range of faces. Each writes the columns only its faces touch into M and L; chunk 0
     // writes the shared columns there too, every other chunk into its own short arrays, added below
     auto run_chunk = [&](int k) {
@@ -209,7 +207,7 @@ public:
           for(int p = pattern_.outerIndexPtr()[j]; p < pattern_.outerIndexPtr()[j + 1]; ++p) { M[std::size_t(p)] += pm[p + d]; L[std::size_t(p)] += pl[p + d]; }
         }
     Assembly_statistics total;
-    total.component_area.assign(components_, 0.0);
+    total.component_area.assign(context_.components, 0.0);
     for(const Assembly_statistics& s : stats) total.add(s);
     if(!Cache::has_second_derivatives) total.bounded_H_integral = total.H_integral = discrete_H_integral(X, metric_columns, M, L);
     return total;
@@ -285,20 +283,64 @@ private:
     else assemble_face_with(ws.any, f, X, kappa, tensor, ws, mv, lv, stats);
   }
 
+  // What one face sums over its quadrature points, before it is added to the statistics: fewer roundings
+  // in the totals (a planar regular grid's area comes out exact)
+  struct Face_sums
+  {
+    double area = 0, energy = 0, H = 0, bounded_H = 0;
+    double first_normal[3] = { 0, 0, 0 };
+    double lowest_dot = 1;   // of the normals at the points with the first one's: a fold inside the face
+    double bound = std::numeric_limits<double>::infinity();   // of the mean curvature (Assembly_context)
+  };
+
   // mv == nullptr: statistics only
   template <typename Buffers, typename Tensor>
   void assemble_face_with(Buffers& b, std::size_t f, const Control_matrix& X, int kappa, const Tensor& tensor,
                           Workspace& ws, double* mv, double* lv, Assembly_statistics& stats) const
   {
+    const int m = cache_.ring_size(f);
+    const int* ring = cache_.ring(f);
+    const Eigen::Index nq = cache_.quadrature_weights(cache_.category(f)).size();
+    const bool prefiltered = load_face(b, f, X, kappa);
+    b.Bm.resize(nq, m);
+    b.Bl.resize(2 * nq, m);
+    if(ws.zeros.size() != std::size_t(kappa)) { ws.zeros.assign(std::size_t(kappa), 0.0); ws.mean_curvature.resize(std::size_t(kappa)); }
+
+    Quadrature_point_geometry g;
+    const Assembly_context& x = context_;
+    g.face = x.original_face ? (*x.original_face)[f] : f;
+    const int component = x.face_component ? (*x.face_component)[f] : -1;
+    if(component >= 0 && x.component_scale) g.component_scale = (*x.component_scale)[std::size_t(component)];
+    g.dimension = kappa; g.ring = ring; g.ring_size = m;
+    if(x.original_vertex)
+    {
+      ws.original_ring.resize(std::size_t(m));
+      for(int k = 0; k < m; ++k) ws.original_ring[std::size_t(k)] = (*x.original_vertex)[std::size_t(ring[k])];
+      g.ring = ws.original_ring.data();
+    }
+    Face_sums sums;
+    if(component >= 0 && x.curvature_bound) sums.bound = (*x.curvature_bound)[std::size_t(component)];
+    for(Eigen::Index q = 0; q < nq; ++q) assemble_point(b, f, q, prefiltered, tensor, g, ws, mv != nullptr, sums, stats);
+    stats.area += sums.area;
+    if(component >= 0) stats.component_area[std::size_t(component)] += sums.area;
+    if(sums.lowest_dot < x.folded_turn) ++stats.reversed_faces;
+    if(sums.lowest_dot < x.bent_turn) ++stats.bent_faces;
+    stats.energy += sums.energy;
+    stats.H_integral += sums.H;
+    stats.bounded_H_integral += sums.bounded_H;
+    if(mv) add_local_matrices(b, ring, m, ws, mv, lv);
+  }
+
+  // The ring's control points of face f (b.Xr) and their derivatives at the quadrature points (b.T), and
+  // those of the prefiltered surface (b.Pr, b.P) when there is one; returns whether there is
+  template <typename Buffers>
+  bool load_face(Buffers& b, std::size_t f, const Control_matrix& X, int kappa) const
+  {
     typedef Eigen::Map<const typename Buffers::Stencil_rows> Rows;
     const int m = cache_.ring_size(f);
     const int* ring = cache_.ring(f);
     const int cat = cache_.category(f);
-    const Eigen::VectorXd& w = cache_.quadrature_weights(cat);
-    const Eigen::Index nq = w.size();
-    const Rows S0(cache_.quadrature_rows(cat, VALUE).data(), nq, m);
-    const Rows S1(cache_.quadrature_rows(cat, D1).data(), nq, m);
-    const Rows S2(cache_.quadrature_rows(cat, D2).data(), nq, m);
+    const Eigen::Index nq = cache_.quadrature_weights(cat).size();
     b.Xr.resize(m, kappa);
     for(int k = 0; k < m; ++k)
       for(int c = 0; c < kappa; ++c) b.Xr(k, c) = X(ring[k], c);
@@ -314,92 +356,83 @@ private:
       for(int r = 0; r < 5; ++r)
         b.P[r].noalias() = Rows(cache_.quadrature_rows(cat, D1 + r).data(), nq, m).lazyProduct(b.Pr);
     }
-    b.Bm.resize(nq, m);
-    b.Bl.resize(2 * nq, m);
-    if(ws.zeros.size() != std::size_t(kappa)) { ws.zeros.assign(std::size_t(kappa), 0.0); ws.mean_curvature.resize(std::size_t(kappa)); }
+    return prefiltered;
+  }
+
+  // Quadrature point q of face f: the metric, the tensor, the point's share of the sums and, `with_matrices`,
+  // its rows of B_M and B_L (M = B_M^T B_M, L = B_L^T B_L); a degenerate metric gives zero rows
+  template <typename Buffers, typename Tensor>
+  void assemble_point(Buffers& b, std::size_t f, Eigen::Index q, bool prefiltered, const Tensor& tensor, Quadrature_point_geometry& g,
+                      Workspace& ws, bool with_matrices, Face_sums& sums, Assembly_statistics& stats) const
+  {
+    typedef Eigen::Map<const typename Buffers::Stencil_rows> Rows;
+    const int m = cache_.ring_size(f);
+    const int cat = cache_.category(f);
+    const Eigen::VectorXd& w = cache_.quadrature_weights(cat);
+    const Eigen::Index nq = w.size();
+    const double* t1 = b.T[0].row(q).data();
+    const double* t2 = b.T[1].row(q).data();
+    double g11 = 0, g12 = 0, g22 = 0;
+    for(int c = 0; c < g.dimension; ++c) { g11 += t1[c] * t1[c]; g12 += t1[c] * t2[c]; g22 += t2[c] * t2[c]; }
+    const double det = g11 * g22 - g12 * g12;
+    if(!(det > 0) || !std::isfinite(det))
+    {
+      ++stats.degenerate_points;
+      if(!stats.degenerate) { stats.degenerate = true; stats.degenerate_face = g.face; }
+      b.Bm.row(q).setZero(); b.Bl.row(2 * q).setZero(); b.Bl.row(2 * q + 1).setZero();
+      return;
+    }
+    const double c = w[q] * std::sqrt(det);
+    {
+      // a fold inside the face: the normal (of the geometry's 3 coordinates) turns by more than 120
+      // degrees between the first point and this one
+      double n[3];
+      unit_cross(t1, t2, n);
+      double* first = sums.first_normal;
+      if(first[0] == 0 && first[1] == 0 && first[2] == 0) { first[0] = n[0]; first[1] = n[1]; first[2] = n[2]; }
+      else sums.lowest_dot = std::min(sums.lowest_dot, n[0] * first[0] + n[1] * first[1] + n[2] * first[2]);
+    }
     const double* no_second = ws.zeros.data();
+    g.point = int(q); g.t1 = t1; g.t2 = t2;
+    g.t11 = Cache::has_second_derivatives ? b.T[2].row(q).data() : no_second;
+    g.t12 = Cache::has_second_derivatives ? b.T[3].row(q).data() : no_second;
+    g.t22 = Cache::has_second_derivatives ? b.T[4].row(q).data() : no_second;
+    g.g11 = g11; g.g12 = g12; g.g22 = g22; g.det = det;
+    const Rows S0(cache_.quadrature_rows(cat, VALUE).data(), nq, m);
+    g.basis = S0.row(q).data();
+    g.prefiltered_t1 = prefiltered ? b.P[0].row(q).data() : nullptr;
+    g.prefiltered_t2 = prefiltered ? b.P[1].row(q).data() : nullptr;
+    g.prefiltered_t11 = prefiltered ? b.P[2].row(q).data() : nullptr;
+    g.prefiltered_t12 = prefiltered ? b.P[3].row(q).data() : nullptr;
+    g.prefiltered_t22 = prefiltered ? b.P[4].row(q).data() : nullptr;
+    const Parametric_tensor A = tensor(g);
 
-    Quadrature_point_geometry g;
-    g.face = original_face_ ? (*original_face_)[f] : f;
-    const int component = face_component_ ? (*face_component_)[f] : -1;
-    if(component >= 0 && component_scale_) g.component_scale = (*component_scale_)[std::size_t(component)];
-    double first_normal[3] = { 0, 0, 0 };
-    double lowest_dot = 1;
-    g.dimension = kappa; g.ring = ring; g.ring_size = m;
-    if(original_vertex_)
+    sums.area += c;
+    sums.energy += c * (A.a11 * g11 + 2 * A.a12 * g12 + A.a22 * g22);
+    if(Cache::has_second_derivatives)
     {
-      ws.original_ring.resize(std::size_t(m));
-      for(int k = 0; k < m; ++k) ws.original_ring[std::size_t(k)] = (*original_vertex_)[std::size_t(ring[k])];
-      g.ring = ws.original_ring.data();
+      const double H2 = mean_curvature_squared(g, ws.mean_curvature.data());
+      sums.H += c * H2;
+      sums.bounded_H += c * std::min(H2, sums.bound * sums.bound);
     }
-    // per-face sums first: fewer roundings in the totals (a planar regular grid's area comes out exact)
-    double face_area = 0, face_energy = 0, face_H = 0, face_bounded_H = 0;
-    const double bound = component >= 0 && curvature_bound_ ? (*curvature_bound_)[std::size_t(component)]
-                                                           : std::numeric_limits<double>::infinity();
-    for(Eigen::Index q = 0; q < nq; ++q)
-    {
-      const double* t1 = b.T[0].row(q).data();
-      const double* t2 = b.T[1].row(q).data();
-      double g11 = 0, g12 = 0, g22 = 0;
-      for(int c = 0; c < kappa; ++c) { g11 += t1[c] * t1[c]; g12 += t1[c] * t2[c]; g22 += t2[c] * t2[c]; }
-      const double det = g11 * g22 - g12 * g12;
-      if(!(det > 0) || !std::isfinite(det))
-      {
-        ++stats.degenerate_points;
-        if(!stats.degenerate) { stats.degenerate = true; stats.degenerate_face = g.face; }
-        b.Bm.row(q).setZero(); b.Bl.row(2 * q).setZero(); b.Bl.row(2 * q + 1).setZero();
-        continue;
-      }
-      const double c = w[q] * std::sqrt(det);
-      {
-        // a fold inside the face: the normal (of the geometry's 3 coordinates) turns by more than 120
-        // degrees between the first point and this one
-        double nq[3];
-        unit_cross(t1, t2, nq);
-        if(first_normal[0] == 0 && first_normal[1] == 0 && first_normal[2] == 0) { first_normal[0] = nq[0]; first_normal[1] = nq[1]; first_normal[2] = nq[2]; }
-        else lowest_dot = std::min(lowest_dot, nq[0] * first_normal[0] + nq[1] * first_normal[1] + nq[2] * first_normal[2]);
-      }
-      g.point = int(q); g.t1 = t1; g.t2 = t2;
-      g.t11 = Cache::has_second_derivatives ? b.T[2].row(q).data() : no_second;
-      g.t12 = Cache::has_second_derivatives ? b.T[3].row(q).data() : no_second;
-      g.t22 = Cache::has_second_derivatives ? b.T[4].row(q).data() : no_second;
-      g.g11 = g11; g.g12 = g12; g.g22 = g22; g.det = det;
-      g.basis = S0.row(q).data();
-      g.prefiltered_t1 = prefiltered ? b.P[0].row(q).data() : nullptr;
-      g.prefiltered_t2 = prefiltered ? b.P[1].row(q).data() : nullptr;
-      g.prefiltered_t11 = prefiltered ? b.P[2].row(q).data() : nullptr;
-      g.prefiltered_t12 = prefiltered ? b.P[3].row(q).data() : nullptr;
-      g.prefiltered_t22 = prefiltered ? b.P[4].row(q).data() : nullptr;
-      const Parametric_tensor A = tensor(g);
+    if(!with_matrices) return;
+    const Rows S1(cache_.quadrature_rows(cat, D1).data(), nq, m);
+    const Rows S2(cache_.quadrature_rows(cat, D2).data(), nq, m);
+    b.Bm.row(q) = std::sqrt(c) * S0.row(q);
+    // c A = R R^T (2x2 Cholesky; A is positive semi-definite), then d phi^T (cA) d phi = |R^T d phi|^2
+    const double b11 = c * A.a11, b12 = c * A.a12, b22 = c * A.a22;
+    const double r11 = b11 > 0 ? std::sqrt(b11) : 0.0;
+    const double r21 = r11 > 0 ? b12 / r11 : 0.0;
+    const double r22 = std::sqrt(std::max(0.0, b22 - r21 * r21));
+    b.Bl.row(2 * q) = r11 * S1.row(q) + r21 * S2.row(q);
+    b.Bl.row(2 * q + 1) = r22 * S2.row(q);
+  }
 
-      face_area += c;
-      face_energy += c * (A.a11 * g11 + 2 * A.a12 * g12 + A.a22 * g22);
-      if(Cache::has_second_derivatives)
-      {
-        const double H2 = mean_curvature_squared(g, ws.mean_curvature.data());
-        face_H += c * H2;
-        face_bounded_H += c * std::min(H2, bound * bound);
-      }
-      if(!mv) continue;
-
-      b.Bm.row(q) = std::sqrt(c) * S0.row(q);
-      // c A = R R^T (2x2 Cholesky; A is positive semi-definite), then d phi^T (cA) d phi = |R^T d phi|^2
-      const double b11 = c * A.a11, b12 = c * A.a12, b22 = c * A.a22;
-      const double r11 = b11 > 0 ? std::sqrt(b11) : 0.0;
-      const double r21 = r11 > 0 ? b12 / r11 : 0.0;
-      const double r22 = std::sqrt(std::max(0.0, b22 - r21 * r21));
-      b.Bl.row(2 * q) = r11 * S1.row(q) + r21 * S2.row(q);
-      b.Bl.row(2 * q + 1) = r22 * S2.row(q);
-    }
-    stats.area += face_area;
-    if(component >= 0) stats.component_area[std::size_t(component)] += face_area;
-    if(lowest_dot < turn_120) ++stats.reversed_faces;
-    if(lowest_dot < turn_110) ++stats.bent_faces;
-    stats.energy += face_energy;
-    stats.H_integral += face_H;
-    stats.bounded_H_integral += face_bounded_H;
-    if(!mv) return;
-    // local matrices B^T B (only the lower triangle is read by the scatter, so symmetry is exact)
+  // The face's local matrices B^T B, added into the value arrays mv and lv (only the lower triangle is read
+  // by the scatter, so symmetry is exact)
+  template <typename Buffers>
+  void add_local_matrices(Buffers& b, const int* ring, int m, Workspace& ws, double* mv, double* lv) const
+  {
     if(Buffers::fixed)
     {
       b.localM.noalias() = b.Bm.transpose().lazyProduct(b.Bm);
@@ -446,7 +479,7 @@ private:
       }
     double s = 0;
     for(Eigen::Index i = 0; i < n; ++i)
-      if(area[i] > 0 && !(border_ && (*border_)[std::size_t(i)])) s += LX.row(i).squaredNorm() / (4 * area[i]);
+      if(area[i] > 0 && !(context_.border && (*context_.border)[std::size_t(i)])) s += LX.row(i).squaredNorm() / (4 * area[i]);
     return s;
   }
 
@@ -457,14 +490,8 @@ private:
   std::vector<std::ptrdiff_t> shift_;               // per column (share_columns)
   std::size_t shared_size_ = 0;
   std::vector<std::vector<double>> shared_values_;  // M and L of the shared columns, per chunk but the first
-  const std::vector<int>* original_vertex_ = nullptr;
-  const std::vector<std::size_t>* original_face_ = nullptr;
-  const std::vector<bool>* border_ = nullptr;
+  Assembly_context context_;
   const Control_matrix* prefiltered_ = nullptr;
-  const std::vector<int>* face_component_ = nullptr;
-  const std::vector<double>* component_scale_ = nullptr;
-  const std::vector<double>* curvature_bound_ = nullptr;
-  std::size_t components_ = 0;
 };
 
 /// trace(F^T L F) over all columns of F: the Dirichlet energy of F.

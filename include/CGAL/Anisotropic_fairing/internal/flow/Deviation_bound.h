@@ -21,6 +21,7 @@
 #include <CGAL/Anisotropic_fairing/internal/types/Control_matrix.h>
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <cstddef>
 #include <limits>
@@ -67,6 +68,16 @@ inline void clamp_to_bound(Control_matrix& Y, const Control_matrix& input, const
     }
     moved[std::size_t(i)] = true;
   }
+}
+
+/// The user's two bounds on the columns of a matrix: the geometry's first 3 columns, if `geometry_moves`,
+/// and the attributes' from `first_attribute` on; radii in model units, 0 for none.
+inline std::array<Column_bound, 2> user_bounds(Eigen::Index columns, bool geometry_moves, Eigen::Index first_attribute,
+                                               double geometry_radius, double attribute_radius)
+{
+  const double none = std::numeric_limits<double>::infinity();
+  return { Column_bound{ 0, geometry_moves ? 3 : 0, geometry_radius > 0 ? geometry_radius : none },
+           Column_bound{ first_attribute, columns - first_attribute, attribute_radius > 0 ? attribute_radius : none } };
 }
 
 /// The largest deviation of a written row over the bound's columns

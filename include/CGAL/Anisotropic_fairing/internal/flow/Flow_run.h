@@ -82,7 +82,8 @@ private:
     // automatic isotropic runs: a time step that follows the mesh's density (Local_time_scale.h)
     if(s_.local_time_scale && !fixed_)
       mass_weight_ = mass_weights(local_time_scale(*t_.layer_.topology, t_.layer_.real_faces, Z0_, t_.components_, t_.component_edge_));
-    if(!fixed_) unknown_scale_ = t_.unknown_scale_;
+    // (on a fixed surface the attributes are solved in their own units)
+    unknown_scale_ = fixed_ ? &no_scale_ : &t_.unknown_scale_;
     time_unit_ = s_.stopping.relative_units ? std::pow(report_.scale, s_.order) : 1.0;   // (28), steady speed
     start_criteria(a);
     start_surface(a);
@@ -234,7 +235,7 @@ private:
     if(probe.active()) probe.augment(Z_, Z0_, ZZ_, ZZ0_);
     const double factor = control_.factor();
     const Solve_statistics sol =
-      solver_->solve(t_.operator_.M(), t_.operator_.L(), t_.units_, mass_weight_, unknown_scale_, factor,
+      solver_->solve(t_.operator_.M(), t_.operator_.L(), t_.units_, mass_weight_, *unknown_scale_, factor,
                      system_scale(t_.units_, t_.block_.free, factor, s_.order, t_.mean_edge_), probe.active() ? ZZ_ : Z_,
                      probe.active() ? ZZ0_ : Z0_, bound_->weights(), st.direct_solve);
     st.solve_seconds = solver_->solve_seconds();
@@ -475,7 +476,9 @@ private:
   Fairing_report report_;
   double assemble_seconds_ = 0, time_unit_ = 1, time_ = 0;
   Control_matrix Z0_, Y_, Yb_, anchor_, ZZ_, ZZ0_, dZ_run_, Zc_, Z_previous_, Z_unfolded_;
-  std::vector<double> mass_weight_, unknown_scale_, row_unit_;
+  std::vector<double> mass_weight_, row_unit_;
+  const std::vector<double> no_scale_;
+  const std::vector<double>* unknown_scale_ = &no_scale_;   // the stepper's, per row (Time_stepper::unknown_scale_)
   int measured_columns_ = 0;
   std::optional<Stopping_monitor> monitor_;
   bool noise_stop_ = false;

@@ -34,6 +34,11 @@ namespace CGAL {
 namespace Anisotropic_fairing {
 namespace internal {
 
+/// Cosines of the turning angles at which a surface counts as folded, and as nearly folded: between the
+/// normals of two faces at an edge, and within a face (Assembly_context::folded_turn, bent_turn).
+constexpr double turn_120 = -0.5;
+constexpr double turn_110 = -0.34202014332566871;
+
 /// Interior edges between two of the first `real_faces` faces whose normals (of the triangles of Y)
 /// turn by more than the angle of cosine `turn` (120 degrees: the mesh folds over there). A triangle
 /// smaller than 10^-4 h^2 (h: `edge[c]`, the mean edge length of its component `face_component[f]`) is
@@ -82,15 +87,6 @@ struct Surface_soundness
   /// the same beyond 110 degrees: places that may tip over into a fold without the step being at fault
   std::size_t near_folds() const { return bent_edges + statistics.bent_faces; }
 };
-
-/// Y = the Loop limit points of the control points X (real vertices; the ghosts from the layer).
-inline void limit_points(const Ghost_layer& layer, const Control_matrix& X, Control_matrix& Y)
-{
-  const Control_matrix extended = layer.has_boundary() ? layer.extend(X) : Control_matrix();
-  const Control_matrix& E = layer.has_boundary() ? extended : X;
-  Y.resize(X.rows(), X.cols());
-  for(Eigen::Index i = 0; i < X.rows(); ++i) vertex_limit_value(*layer.topology, E, int(i), Y.row(i).data());
-}
 
 /// The folded (and nearly folded) edges of the surface of X: of its limit points for the Loop element
 /// (`loop`), whatever is written: a control mesh oscillates about its surface, and its edges fold

@@ -58,15 +58,21 @@ class Time_stepper
 public:
   /// `constrained[i]` holds vertex i fixed. `layer`: the mesh (with its ghosts); `components`: its
   /// connected components, `component_edge[c]` the mean edge length of component c, `mean_edge` of all.
+  /// `numbering`: the caller's numbering and border for the assembler (Assembly_context: its first three).
   Time_stepper(const Cache& cache, std::size_t n, const std::vector<bool>& constrained, const Ghost_layer& layer,
-               const Mesh_components& components, const std::vector<double>& component_edge, double mean_edge)
+               const Mesh_components& components, const std::vector<double>& component_edge, double mean_edge,
+               const Assembly_context& numbering = Assembly_context())
     : operator_(cache, n), block_(operator_.pattern(), constrained), layer_(layer), components_(components),
-      component_edge_(component_edge), mean_edge_(mean_edge)
+      component_edge_(component_edge), mean_edge_(mean_edge), context_(numbering)
   {
-    operator_.assembler().use_components(&components_.of_face, components_.count);
     // the curvature a component's edges can show: |H| up to 2 / h (a sphere of diameter h)
     for(double h : component_edge_) curvature_bound_.push_back(2 / h);
-    operator_.assembler().set_curvature_bounds(&curvature_bound_);
+    context_.face_component = &components_.of_face;
+    context_.components = components_.count;
+    context_.curvature_bound = &curvature_bound_;
+    context_.folded_turn = turn_120;
+    context_.bent_turn = turn_110;
+    operator_.assembler().set_context(context_);
   }
 
   /// Each step's displacement of the surface's columns then loses its tangential part (null: kept).
@@ -77,7 +83,6 @@ public:
   void set_probe_maker(std::function<Control_matrix(const Control_matrix&)> make) { probe_maker_ = std::move(make); }
   /// After a run: where its probe ended (empty: it carried none).
   const Control_matrix& probe_result() const { return probe_.result(); }
-  Fem_assembler<Cache>& assembler() { return operator_.assembler(); }
   /// 1, or the fraction of the way from the input to the limit points of the result to write (a run
   /// that ended before its first step because the limit surface alone moved by more than the noise)
   double limit_weight() const { return limit_weight_; }
@@ -125,13 +130,10 @@ private:
   // attributes (the others, all of them on a fixed surface)
   Deviation_bound make_bound(const Stepper_settings& s, const Control_matrix& Z, bool fixed, bool uniform, Fairing_report& report) const
   {
-    Column_bound g, a;
     if(s.maximum_deviation > 0)
       report.maximum_deviation = s.relative_deviation ? s.maximum_deviation * units_.scale : s.maximum_deviation;
-    if(s.maximum_deviation > 0 && !fixed) { g.count = 3; g.radius = report.maximum_deviation; }
-    a.first = fixed ? 0 : 3;
-    if(s.attribute_maximum_deviation > 0 && Z.cols() > a.first) { a.count = Z.cols() - a.first; a.radius = s.attribute_maximum_deviation; }
-    return Deviation_bound(g, a, std::size_t(Z.rows()), uniform);
+    const auto bounds = user_bounds(Z.cols(), !fixed, fixed ? 0 : 3, report.maximum_deviation, s.attribute_maximum_deviation);
+    return Deviation_bound(bounds[0], bounds[1], std::size_t(Z.rows()), uniform);
   }
 
   // The units of every vertex from the input's area per component, the tensor told its length scale,
@@ -191,7 +193,8 @@ private:
       }
       for(std::size_t i = 0; i < eps.size(); ++i)
         if(components_.of_vertex[i] >= 0) eps[i] = component_eps[std::size_t(components_.of_vertex[i])];
-      operator_.assembler().set_component_scales(&units_.tensor_scale);
+      context_.component_scale = &units_.tensor_scale;
+      operator_.assembler().set_context(context_);
       give_length_scale(tensor, units_.tensor_unit);
       report.feature_threshold = std::isfinite(threshold_of(tensor)) ? threshold_of(tensor) : 0.0;
       report.prefilter_time = prefilter_time(tensor);
@@ -254,6 +257,7 @@ private:
   double moved_relative_ = 0, max_relative_ = 0;
   double limit_weight_ = 1;
   std::vector<double> unknown_scale_;   // per row, with several components (else empty)
+  Assembly_context context_;            // the assembler's (Fem_assembly.h)
 };
 
 } // namespace internal

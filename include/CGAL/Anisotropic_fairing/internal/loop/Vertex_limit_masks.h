@@ -9,6 +9,7 @@
 #include <CGAL/Anisotropic_fairing/internal/types/Control_matrix.h>
 #include <CGAL/Anisotropic_fairing/internal/types/Vector3.h>
 #include <CGAL/Anisotropic_fairing/internal/loop/Loop_rules.h>
+#include <CGAL/Anisotropic_fairing/internal/mesh/Ghost_layer.h>
 #include <CGAL/Anisotropic_fairing/internal/mesh/Triangle_topology.h>
 
 #include <cmath>
@@ -42,6 +43,16 @@ inline void vertex_limit_value(const Triangle_topology& topo, const Control_matr
     for(Eigen::Index c = 0; c < kappa; ++c) out[c] = first ? weight * X(w, c) : out[c] + weight * X(w, c);
     first = false;
   });
+}
+
+/// Y = the Loop limit points of the control points X (real vertices; the ghosts from the layer); Y must
+/// not be X. A vertex on no face keeps its value.
+inline void limit_points(const Ghost_layer& layer, const Control_matrix& X, Control_matrix& Y)
+{
+  const Control_matrix extended = layer.has_boundary() ? layer.extend(X) : Control_matrix();
+  const Control_matrix& E = layer.has_boundary() ? extended : X;
+  Y.resize(X.rows(), X.cols());
+  for(Eigen::Index i = 0; i < X.rows(); ++i) vertex_limit_value(*layer.topology, E, int(i), Y.row(i).data());
 }
 
 /// Tangent masks t_u = sum cos(2 pi j/n) x_j, t_v = sum sin(2 pi j/n) x_j over the neighbours in

@@ -97,12 +97,15 @@ Fairing_report run_stepper(const Cache& cache, const Locality_ordering& ordering
   // (Local_time_scale.h)
   Stepper_settings settings = s;
   settings.local_time_scale = s.local_time_scale && density_scaled_flow(tensor) != nullptr;
-  Time_stepper<Cache> stepper(cache, std::size_t(X.rows()), constrained, ordering.layer, components, component_edge, mean_edge);
+  Assembly_context numbering;
+  numbering.original_vertex = &ordering.old_of_new_vertex;
+  numbering.original_face = &ordering.old_of_new_face;
+  numbering.border = &border;
+  Time_stepper<Cache> stepper(cache, std::size_t(X.rows()), constrained, ordering.layer, components, component_edge, mean_edge,
+                              numbering);
   const Tangential_motion_filter filter(ordering.layer);
   const bool normal_motion = wants_normal_motion(tensor) && mode != Attribute_mode::ATTRIBUTES_ONLY;
   if(normal_motion) stepper.set_tangential_filter(&filter);
-  stepper.assembler().use_original_indices(&ordering.old_of_new_vertex, &ordering.old_of_new_face);
-  stepper.assembler().exclude_from_curvature(&border);
   const int metric_columns = mode == Attribute_mode::COUPLED ? int(X.cols()) : 3;
   setup_seconds += clock.time();
   if(probe_end) probe_end->resize(0, 0);
@@ -398,9 +401,9 @@ private:
   // the written positions of control points Y of a run from `start`: their limit points, `limit_weight` of the way
   void write_limit(Control_matrix& Y, const Control_matrix& start, double limit_weight) const
   {
-    const Control_matrix extended = layer_.extend(Y);
-    for(std::size_t i = 0; i < n_; ++i)
-      if(!isolated_[i]) vertex_limit_value(*layer_.topology, extended, int(i), Y.row(Eigen::Index(i)).data());
+    Control_matrix limit;
+    limit_points(layer_, Y, limit);
+    Y = limit;
     if(limit_weight < 1) Y.leftCols(3) = start.leftCols(3) + limit_weight * (Y.leftCols(3) - start.leftCols(3));
   }
 
@@ -409,9 +412,10 @@ private:
   void bound_written(Control_matrix& Y, const Control_matrix& start, Fairing_report& r) const
   {
     if(!r.succeeded()) return;
-    const double none = std::numeric_limits<double>::infinity();
-    const Column_bound geometry{ 0, given_.mode == Attribute_mode::ATTRIBUTES_ONLY ? 0 : 3, r.maximum_deviation > 0 ? r.maximum_deviation : none };
-    const Column_bound values{ 3, Y.cols() - 3, s_.attribute_maximum_deviation > 0 ? s_.attribute_maximum_deviation : none };
+    const auto bounds = user_bounds(Y.cols(), given_.mode != Attribute_mode::ATTRIBUTES_ONLY, 3, r.maximum_deviation,
+                                    s_.attribute_maximum_deviation);
+    const Column_bound& geometry = bounds[0];
+    const Column_bound& values = bounds[1];
     std::vector<bool> moved(n_, false);
     clamp_to_bound(Y, start, geometry, written_, moved);
     clamp_to_bound(Y, start, values, written_, moved);

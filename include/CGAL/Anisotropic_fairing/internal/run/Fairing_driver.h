@@ -8,11 +8,9 @@
 #ifndef CGAL_ANISOTROPIC_FAIRING_INTERNAL_RUN_FAIRING_DRIVER_H
 #define CGAL_ANISOTROPIC_FAIRING_INTERNAL_RUN_FAIRING_DRIVER_H
 
-#include <CGAL/Anisotropic_fairing/Anisotropic_diffusion_tensor.h>
 #include <CGAL/Anisotropic_fairing/Fairing_options.h>
 #include <CGAL/Anisotropic_fairing/Fairing_report.h>
 #include <CGAL/Anisotropic_fairing/Input_error.h>
-#include <CGAL/Anisotropic_fairing/Isotropic_diffusion_tensor.h>
 #include <CGAL/Anisotropic_fairing/named_function_parameters.h>
 #include <CGAL/Anisotropic_fairing/internal/mesh/Indexed_mesh.h>
 #include <CGAL/Anisotropic_fairing/internal/run/Caller_maps.h>
@@ -37,15 +35,6 @@ std::true_type named_parameters_test(const CGAL::Named_function_parameters<T, Ta
 std::false_type named_parameters_test(...);
 template <typename X>
 struct is_named_parameters : decltype(named_parameters_test(static_cast<const X*>(nullptr))) {};
-
-/// The tensor of a run without a tensor of the caller's own type: the one given, or the default, chosen
-/// from the mesh when the time step is too (automatic parameters).
-inline Package_diffusion_tensor package_tensor(const Fairing_options& options)
-{
-  if(options.diffusion_tensor) return *options.diffusion_tensor;
-  if(options.automatic_parameters()) return Anisotropic_diffusion_tensor::automatic();
-  return Isotropic_diffusion_tensor();
-}
 
 /// The run of anisotropic_fairing() on `options` with `tensor` (a package tensor chosen at run time, or a
 /// tensor type of the caller's own).
@@ -105,7 +94,7 @@ Fairing_report fair(TriangleMesh& tm, VertexPointMap vpm, AttributeMap attribute
   const auto hooks = caller_hooks<TriangleMesh>(attributes, np);
   typedef typename std::decay<decltype(parameters::get_parameter(np, internal_np::diffusion_tensor))>::type Tensor;
   if constexpr(parameters::is_default_parameter<NamedParameters, internal_np::diffusion_tensor_t>::value || is_package_tensor<Tensor>::value)
-    return fair_with_options(tm, vpm, attributes, options, hooks, package_tensor(options));
+    return fair_with_options(tm, vpm, attributes, options, hooks, options.diffusion_tensor_or_default());
   else
     return fair_with_options(tm, vpm, attributes, options, hooks, parameters::get_parameter(np, internal_np::diffusion_tensor));
 }
