@@ -118,9 +118,9 @@ static void measure(const AFi::Indexed_mesh<Mesh>& im, const AFi::Control_matrix
   t.assemble.push_back(clock.time());
   // (M + tau L) dX = -tau L X, tau = 1e-3 l^2: a time step
   const double tau = 1e-3 * a.area / (4 * 3.14159265358979323846);
-  Eigen::SparseMatrix<double> A = assembler.pattern();
+  Eigen::SparseMatrix<double> A = assembler.pattern().matrix();
   for(Eigen::Index p = 0; p < A.nonZeros(); ++p) A.valuePtr()[p] = M[std::size_t(p)] + tau * L[std::size_t(p)];
-  Eigen::SparseMatrix<double> Lm = assembler.pattern();
+  Eigen::SparseMatrix<double> Lm = assembler.pattern().matrix();
   for(Eigen::Index p = 0; p < Lm.nonZeros(); ++p) Lm.valuePtr()[p] = -tau * L[std::size_t(p)];
   const AFi::Control_matrix B = Lm * X;
   AFi::Control_matrix dX = AFi::Control_matrix::Zero(X.rows(), 3);

@@ -134,14 +134,11 @@ Eigen::MatrixXd stiffness(const Mesh& mesh, const AF::Anisotropic_diffusion_tens
   AFI::Fem_assembler<AFI::Patch_cache> as(cache, im.number_of_vertices());
   std::vector<double> mv, lv;
   as.assemble(X, 3, D, mv, lv);
-  Eigen::SparseMatrix<double> L = as.pattern();
-  std::copy(lv.begin(), lv.end(), L.valuePtr());
+  const Eigen::SparseMatrix<double> L = as.pattern().matrix(lv);
   if(L_iso)
   {
     as.assemble(X, 3, AF::Isotropic_diffusion_tensor(), mv, lv);
-    Eigen::SparseMatrix<double> Li = as.pattern();
-    std::copy(lv.begin(), lv.end(), Li.valuePtr());
-    *L_iso = Eigen::MatrixXd(Li);
+    *L_iso = Eigen::MatrixXd(as.pattern().matrix(lv));
   }
   return Eigen::MatrixXd(L);
 }

@@ -44,11 +44,9 @@ namespace AFI = CGAL::Anisotropic_fairing::internal;
 
 std::string data_dir;
 
-Eigen::SparseMatrix<double> with_values(const Eigen::SparseMatrix<double>& pattern, const std::vector<double>& v)
+Eigen::SparseMatrix<double> with_values(const CGAL::Anisotropic_fairing::internal::Sparse_structure& pattern, const std::vector<double>& v)
 {
-  Eigen::SparseMatrix<double> A = pattern;
-  std::copy(v.begin(), v.end(), A.valuePtr());
-  return A;
+  return pattern.matrix(v);
 }
 
 // real spherical harmonics (unnormalised) of degree 1, 2, 3 at a unit vector

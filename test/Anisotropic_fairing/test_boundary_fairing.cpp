@@ -430,7 +430,7 @@ void irregular_planar_patch_test()
     AFI::Fem_assembler<AFI::Ghosted_patch_cache> assembler(cache, gl.real_vertices);
     std::vector<double> M, L;
     assembler.assemble(X, 3, AF::Isotropic_diffusion_tensor(), M, L);
-    const Eigen::SparseMatrix<double>& P = assembler.pattern();
+    const AFI::Sparse_structure& P = assembler.pattern();
     double residual = 0, far = 0;
     held = 0;
     for(Eigen::Index j = 0; j < P.cols(); ++j)

@@ -188,11 +188,9 @@ void check_bow_tie()
   AF_CHECK(refused, "a bow-tie boundary vertex is refused, naming the vertex");
 }
 
-Eigen::MatrixXd dense(const Eigen::SparseMatrix<double>& pattern, const std::vector<double>& values)
+Eigen::MatrixXd dense(const CGAL::Anisotropic_fairing::internal::Sparse_structure& pattern, const std::vector<double>& values)
 {
-  Eigen::SparseMatrix<double> A = pattern;
-  std::copy(values.begin(), values.end(), A.valuePtr());
-  return Eigen::MatrixXd(A);
+  return Eigen::MatrixXd(pattern.matrix(values));
 }
 
 // Assembly over the real vertices with ghosts substituted (Ghosted_patch_cache) equals

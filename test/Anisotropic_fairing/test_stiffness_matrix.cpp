@@ -34,11 +34,9 @@ typedef CGAL::Surface_mesh<K::Point_3> Mesh;
 namespace AF = CGAL::Anisotropic_fairing;
 namespace AFI = CGAL::Anisotropic_fairing::internal;
 
-Eigen::SparseMatrix<double> with_values(const Eigen::SparseMatrix<double>& pattern, const std::vector<double>& v)
+Eigen::SparseMatrix<double> with_values(const CGAL::Anisotropic_fairing::internal::Sparse_structure& pattern, const std::vector<double>& v)
 {
-  Eigen::SparseMatrix<double> A = pattern;
-  std::copy(v.begin(), v.end(), A.valuePtr());
-  return A;
+  return pattern.matrix(v);
 }
 
 // Checks the identities of (M, L) assembled on X (n x kappa), with `cache` any element cache.

@@ -344,9 +344,7 @@ public:
     internal::Fem_assembler<internal::Ghosted_patch_cache> assembler(*cache_, n);
     std::vector<double> m, l;
     assembler.assemble(X_.topRows(Eigen::Index(n)), int(X_.cols()), Isotropic_diffusion_tensor(), m, l);
-    Eigen::SparseMatrix<double> M = assembler.pattern();
-    std::copy(m.begin(), m.end(), M.valuePtr());
-    return M;
+    return assembler.pattern().matrix(m);
   }
   /// @}
 
@@ -425,6 +423,7 @@ private:
   void init(PointMap vpm, const NamedParameters& np)
   {
     indexed_.reset(new internal::Indexed_mesh<TriangleMesh>(mesh_, internal::Borders::GHOSTED, true));
+    indexed_->index_faces();
     // rows of the ghosts appended, so patches next to a border evaluate like any other
     const internal::Ghost_layer& gl = indexed_->ghost_layer();
     X_ = gl.extend(indexed_->read_points(vpm));

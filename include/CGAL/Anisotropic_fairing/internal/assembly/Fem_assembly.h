@@ -14,6 +14,7 @@
 #include <CGAL/Anisotropic_fairing/Surface_curvature.h>
 #include <CGAL/Anisotropic_fairing/internal/types/Control_matrix.h>
 #include <CGAL/Anisotropic_fairing/internal/types/Parallel_blocks.h>
+#include <CGAL/Anisotropic_fairing/internal/types/Sparse_structure.h>
 #include <CGAL/Anisotropic_fairing/internal/types/Stencil_row.h>
 #include <CGAL/Anisotropic_fairing/internal/types/Vector3.h>
 #include <CGAL/Anisotropic_fairing/internal/assembly/Sparse_pattern.h>
@@ -146,8 +147,8 @@ public:
   /// quadrature point are passed to the tensor (Quadrature_point_geometry::prefiltered_t1, ...); null: none.
   void set_prefiltered(const Control_matrix* Xp) { prefiltered_ = Xp; }
 
-  /// The symmetric pattern (all values zero) that M and L fill: value arrays index its non-zeros.
-  const Eigen::SparseMatrix<double>& pattern() const { return pattern_; }
+  /// The symmetric structure that M and L fill: value arrays index its entries.
+  const Sparse_structure& pattern() const { return pattern_; }
   std::size_t number_of_nonzeros() const { return std::size_t(pattern_.nonZeros()); }
 
   /// Assembles M and L (value arrays over pattern()) on the surface whose control points are the
@@ -484,7 +485,7 @@ private:
   }
 
   const Cache& cache_;
-  Eigen::SparseMatrix<double> pattern_;
+  Sparse_structure pattern_;
   int chunks_ = 1;
   std::vector<int> shared_columns_;
   std::vector<std::ptrdiff_t> shift_;               // per column (share_columns)
@@ -495,7 +496,7 @@ private:
 };
 
 /// trace(F^T L F) over all columns of F: the Dirichlet energy of F.
-inline double dirichlet_energy(const Eigen::SparseMatrix<double>& pattern, const std::vector<double>& L, const Control_matrix& F)
+inline double dirichlet_energy(const Sparse_structure& pattern, const std::vector<double>& L, const Control_matrix& F)
 {
   double e = 0;
   for(Eigen::Index i = 0; i < pattern.cols(); ++i)

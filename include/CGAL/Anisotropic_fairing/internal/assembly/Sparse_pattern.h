@@ -9,34 +9,21 @@
 #define CGAL_ANISOTROPIC_FAIRING_INTERNAL_ASSEMBLY_SPARSE_PATTERN_H
 
 #include <CGAL/Anisotropic_fairing/internal/types/Parallel_blocks.h>
-#include <Eigen/SparseCore>
+#include <CGAL/Anisotropic_fairing/internal/types/Sparse_structure.h>
 
 #include <algorithm>
 #include <cstddef>
+#include <utility>
 #include <vector>
 
 namespace CGAL {
 namespace Anisotropic_fairing {
 namespace internal {
 
-/// A compressed column-major matrix with the given structure and zero values, written in place (no
-/// temporary copy: at a million triangles the pattern holds 20 million entries).
-inline Eigen::SparseMatrix<double> sparse_matrix_from_pattern(Eigen::Index rows, Eigen::Index cols,
-                                                             const std::vector<int>& outer, const std::vector<int>& inner)
-{
-  Eigen::SparseMatrix<double> A(rows, cols);
-  A.data().resize(Eigen::Index(inner.size()));
-  std::copy(outer.begin(), outer.end(), A.outerIndexPtr());
-  std::copy(inner.begin(), inner.end(), A.innerIndexPtr());
-  std::fill(A.valuePtr(), A.valuePtr() + inner.size(), 0.0);
-  return A;
-}
-
-/// Returns an n x n compressed, symmetric matrix whose structural non-zeros are all pairs of
-/// vertices sharing a triangle ring, with zero values. `Cache` is any element cache (Patch_cache,
+/// Returns the n x n symmetric structure whose entries are all pairs of vertices sharing a triangle ring. `Cache` is any element cache (Patch_cache,
 /// Linear_element_cache) exposing faces and their rings.
 template <typename Cache>
-Eigen::SparseMatrix<double> ring_sparsity_pattern(const Cache& cache, std::size_t n)
+Sparse_structure ring_sparsity_pattern(const Cache& cache, std::size_t n)
 {
   // faces whose ring contains each vertex (CSR)
   std::vector<std::size_t> start(n + 1, 0);
@@ -80,7 +67,7 @@ Eigen::SparseMatrix<double> ring_sparsity_pattern(const Cache& cache, std::size_
       std::copy(rows.begin(), rows.end(), inner.begin() + outer[j]);
     }
   });
-  return sparse_matrix_from_pattern(Eigen::Index(n), Eigen::Index(n), outer, inner);
+  return Sparse_structure(Eigen::Index(n), std::move(outer), std::move(inner));
 }
 
 } // namespace internal

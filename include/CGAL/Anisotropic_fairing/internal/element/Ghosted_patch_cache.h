@@ -36,7 +36,6 @@ public:
     const int base_categories = int(base_.number_of_categories());
     const std::size_t nf = base_.number_of_faces();
     category_.resize(nf);
-    offset_.assign(nf + 1, 0);
     std::vector<int> slot(gl.number_of_extended_vertices(), -1);
     for(std::size_t f = 0; f < nf; ++f)
     {
@@ -45,11 +44,7 @@ public:
       bool ghosted = false;
       for(int k = 0; k < m; ++k) ghosted = ghosted || ext[k] >= n;
       const std::size_t begin = ring_.size();
-      if(!ghosted)
-      {
-        ring_.insert(ring_.end(), ext, ext + m);
-        category_[f] = base_.category(f);
-      }
+      if(!ghosted) category_[f] = base_.category(f);   // its ring is the base cache's
       else
       {
         // the real ring: every real vertex of the ring or of a ghost's row, in first-seen order
@@ -65,21 +60,30 @@ public:
         for(std::size_t j = begin; j < ring_.size(); ++j) slot[std::size_t(ring_[j])] = -1;
         Ghosted_face g;
         g.face = f;
+        g.ring_begin = begin;
+        g.ring_size = mr;
         g.substitution = P;
         g.base_category = base_.category(f);
         for(int r = 0; r < STENCIL_ROWS; ++r) g.rows[r] = base_.quadrature_rows(g.base_category, r) * P;
         category_[f] = base_categories + int(ghosted_.size());
         ghosted_.push_back(std::move(g));
       }
-      offset_[f + 1] = ring_.size();
     }
     base_categories_ = base_categories;
   }
 
   std::size_t number_of_faces() const { return category_.size(); }
   int category(std::size_t f) const { return category_[f]; }
-  int ring_size(std::size_t f) const { return int(offset_[f + 1] - offset_[f]); }
-  const int* ring(std::size_t f) const { return ring_.data() + offset_[f]; }
+  int ring_size(std::size_t f) const
+  {
+    const int c = category_[f];
+    return c < base_categories_ ? base_.ring_size(f) : ghosted_[std::size_t(c - base_categories_)].ring_size;
+  }
+  const int* ring(std::size_t f) const
+  {
+    const int c = category_[f];
+    return c < base_categories_ ? base_.ring(f) : ring_.data() + ghosted_[std::size_t(c - base_categories_)].ring_begin;
+  }
   const Control_matrix& quadrature_rows(int c, int r) const
   {
     return c < base_categories_ ? base_.quadrature_rows(c, r) : ghosted_[std::size_t(c - base_categories_)].rows[r];
@@ -109,6 +113,8 @@ private:
   struct Ghosted_face
   {
     std::size_t face;
+    std::size_t ring_begin;   // in ring_
+    int ring_size;
     Eigen::MatrixXd substitution;   // P: extended ring slot -> real ring slot
     int base_category;
     Control_matrix rows[STENCIL_ROWS];
@@ -117,8 +123,7 @@ private:
   Patch_cache base_;
   int base_categories_ = 0;
   std::vector<int> category_;
-  std::vector<std::size_t> offset_;
-  std::vector<int> ring_;
+  std::vector<int> ring_;   // the real rings of the ghosted faces (the others' are the base cache's)
   std::vector<Ghosted_face> ghosted_;
 };
 

@@ -213,7 +213,7 @@ private:
     if(bound_->active() && finite && bound_retakes_ < step_control::maximum_bound_retakes)
       if(bound_->exceeded_and_raised(written(Zc_), Z0_, t_.block_.free, scaled_tau(control_.factor())))
       {
-        if(!fixed_) t_.operator_.restore();
+        restore_accepted();
         ++bound_retakes_;
         ++report_.bound_retaken_steps;
         return Outcome::RETRY;
@@ -222,7 +222,7 @@ private:
     if(noise_stop_ && bound_->active())
     {
       candidate_discrepancy_ = s_.noise->relative_displacement(Y_, Z0_, {});
-      if(control_.retake_for_noise_level(discrepancy_, candidate_discrepancy_, target_)) { t_.operator_.restore(); return Outcome::RETRY; }
+      if(control_.retake_for_noise_level(discrepancy_, candidate_discrepancy_, target_)) { restore_accepted(); return Outcome::RETRY; }
     }
     return accept(st, theta);
   }
@@ -279,6 +279,12 @@ private:
     else t_.move_free_rows(Zc_, dZ, Z0_, measured_columns_, row_unit_, st);
   }
 
+  // back to the accepted surface's operator after a candidate was assembled (a fixed surface has one)
+  void restore_accepted()
+  {
+    if(!fixed_) t_.operator_.restore(Z_, metric_columns_, tensor_);
+  }
+
   // the candidate judged (Step_safety.h): NEXT when sound, else failed, retried shorter or the run ended
   Outcome judge(std::size_t step, bool finite, bool last_step)
   {
@@ -321,7 +327,7 @@ private:
       return Outcome::FAILED;
     }
     if(verdict != Step_verdict::UNSOUND) return Outcome::NEXT;
-    if(saved) t_.operator_.restore();
+    if(saved) restore_accepted();
     ++report_.rejected_steps;
     last_why_ = why;
     if(s_.verbose) std::cerr << "step " << step << " rejected (" << why << "); retrying with a quarter of the time step\n";

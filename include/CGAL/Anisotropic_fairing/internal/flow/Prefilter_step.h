@@ -35,23 +35,28 @@ struct Prefilter_solver
   Direct_solver_factory direct;   // empty: Sparse_cholesky
 };
 
-/// M, L: value arrays over `pattern` (isotropic); A: a matrix of the structure of `block.matrix`, whose
-/// values are overwritten. dX: the displacement of the free rows' first `columns` columns; when it has
+/// M, L: value arrays over `pattern` (isotropic); A: the system's values over `block.structure()`,
+/// overwritten. dX: the displacement of the free rows' first `columns` columns; when it has
 /// their size on entry, conjugate gradients start from it (the last step's M_eps is a close guess).
 /// `choice` and `cg` persist over a run's prefilters, as a time step's do: iterations that stall
 /// (near-degenerate faces of quantised scans) give way to the factorisation, analysed once per run.
-inline Solve_statistics prefilter_step(const Eigen::SparseMatrix<double>& pattern, const std::vector<double>& M,
+inline Solve_statistics prefilter_step(const Sparse_structure& pattern, const std::vector<double>& M,
                                        const std::vector<double>& L, const std::vector<double>& eps,
-                                       const Free_block& block, Eigen::SparseMatrix<double>& A,
+                                       const Free_block& block, std::vector<double>& A,
                                        const Control_matrix& X, int columns, const Prefilter_solver& settings,
                                        Solver_choice& choice, Block_conjugate_gradient& cg, Control_matrix& dX)
 {
   const std::vector<int>& free = block.free;
-  double* av = A.valuePtr();
-  for(std::size_t e = 0; e < block.source.size(); ++e)
+  const Sparse_structure& S = block.structure();
+  A.resize(std::size_t(S.nonZeros()));
+  for(Eigen::Index k = 0; k < S.cols(); ++k)
   {
-    const std::size_t p = std::size_t(block.source[e]);
-    av[e] = M[p] + eps[std::size_t(free[std::size_t(block.entry_column[e])])] * L[p];
+    const double e_k = eps[std::size_t(free[std::size_t(k)])];
+    for(int e = S.outerIndexPtr()[k]; e < S.outerIndexPtr()[k + 1]; ++e)
+    {
+      const std::size_t p = block.source(std::size_t(e));
+      A[std::size_t(e)] = M[p] + e_k * L[p];
+    }
   }
   const Eigen::Index nfree = Eigen::Index(free.size());
   Control_matrix B(nfree, columns);
@@ -66,13 +71,13 @@ inline Solve_statistics prefilter_step(const Eigen::SparseMatrix<double>& patter
   CGAL::Real_timer clock;
   clock.start();
   bool direct = false;
-  Solve_statistics sol = choice.solve(A, B, dX, cg, direct);
+  Solve_statistics sol = choice.solve(S, A, B, dX, cg, direct);
   choice.record(direct, sol, clock.time());
   if(!sol.ok && !direct && settings.solver == Linear_solver::AUTOMATIC)
   {
     // above automatic_cholesky_limit the choice does not factorise; M_eps is needed all the same
     dX.setZero();
-    sol = choice.direct_solver().solve(A, B, dX);
+    sol = choice.direct_solver().solve(S.matrix(A), B, dX);
   }
   return sol;
 }

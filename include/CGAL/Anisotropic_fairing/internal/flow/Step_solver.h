@@ -34,10 +34,10 @@ class Step_solver
 public:
   /// `columns`: of the unknowns; `constant_matrix`: every step has the same system (a fixed surface).
   /// `fidelity`: what a vertex's own fidelity holds (null: no bound), at `anchor` (the input's written positions).
-  Step_solver(const Eigen::SparseMatrix<double>& pattern, const Free_block& block, const Stepper_settings& s,
+  Step_solver(const Sparse_structure& pattern, const Free_block& block, const Stepper_settings& s,
               Eigen::Index columns, bool constant_matrix, const Output_fidelity* fidelity = nullptr,
               const Control_matrix* anchor = nullptr)
-    : pattern_(pattern), block_(block), fidelity_(fidelity), anchor_(anchor), A_(block.matrix), cg_(s.solver_tolerance, s.solver_maximum_iterations),
+    : pattern_(pattern), block_(block), fidelity_(fidelity), anchor_(anchor), cg_(s.solver_tolerance, s.solver_maximum_iterations),
       choice_(s.solver, block.size(), constant_matrix, s.direct_solver), constant_(constant_matrix),
       R_(pattern.rows(), columns), B_(Eigen::Index(block.size()), columns), dX_(Control_matrix::Zero(Eigen::Index(block.size()), columns))
   {
@@ -83,10 +83,11 @@ public:
     {
       if(form)
       {
-        fill_step_matrix(A_, block_.source, block_.entry_column, block_.free, M, L, u.tau, u.omega, factor, sys, unknown_scale, mass_weight);
+        fill_step_matrix(A_, block_, M, L, u.tau, u.omega, factor, sys, unknown_scale, mass_weight);
         if(held)
           for(Eigen::Index k = 0; k < extra_.outerSize(); ++k)
-            for(Eigen::SparseMatrix<double>::InnerIterator it(extra_, k); it; ++it) A_.coeffRef(it.row(), it.col()) += it.value();
+            for(Eigen::SparseMatrix<double>::InnerIterator it(extra_, k); it; ++it)   // a 1-ring's pairs: in the pattern
+              A_[std::size_t(block_.structure().find(it.row(), it.col()))] += it.value();
       }
       step_residual(pattern_, M, L, u.tau, u.omega, X, X0, factor / sys, R_, mass_weight);
     }
@@ -105,11 +106,17 @@ public:
     // CG warm-started from the last dX
     choice_.set_step_factor(factor);
     Fourth_order_system* q = fourth_order_.get();
-    const Solve_statistics sol = !q ? choice_.solve(A_, B_, dX_, cg_, direct)
+    const Solve_statistics sol = !q ? choice_.solve(block_.structure(), A_, B_, dX_, cg_, direct)
       : choice_.solve([q](const Control_matrix& P, Control_matrix& AP) { q->product(P, AP); }, q->diagonal(),
                       [q]() -> const Eigen::SparseMatrix<double>& { return q->matrix(); }, B_, dX_, cg_, direct);
     solve_seconds_ = clock.time();
     choice_.record(direct, sol, solve_seconds_);
+    // on a surface that moves the system is formed anew at every solve: not kept while the next is assembled
+    if(!constant_)
+    {
+      std::vector<double>().swap(A_);
+      if(q) q->release();
+    }
     scaled_ = !unknown_scale.empty();
     if(scaled_)
     {
@@ -134,11 +141,12 @@ private:
     for(std::size_t i = 0; i < mu.size(); ++i) held_[i] = mu[i] * D[Eigen::Index(i)];
   }
 
-  const Eigen::SparseMatrix<double>& pattern_;
+  const Sparse_structure& pattern_;
   const Free_block& block_;
   const Output_fidelity* fidelity_;
   const Control_matrix* anchor_;
-  Eigen::SparseMatrix<double> A_, extra_;   // the system of a second-order step
+  std::vector<double> A_;   // the system of a second-order step: values over block_.structure()
+  Eigen::SparseMatrix<double> extra_;
   std::unique_ptr<Fourth_order_system> fourth_order_;
   Block_conjugate_gradient cg_;
   Solver_choice choice_;

@@ -3,8 +3,9 @@
 //
 // M and L(D) on the current surface, what a step is built from: the assembler, and for a tensor that reads
 // its curvature on the prefiltered surface M_eps (prefilter time eps > 0), that surface first
-// (Prefilter_step.h). While a candidate step is judged, the accepted surface's operator is kept aside so
-// that a rejected step costs no new assembly.
+// (Prefilter_step.h). While a candidate step is judged, the accepted surface's M_eps is kept aside; its M
+// and L are not (two more arrays of the pattern's size, a third of a step's memory): a rejected candidate's
+// are assembled again from the accepted surface and its M_eps, the same values.
 
 #ifndef CGAL_ANISOTROPIC_FAIRING_INTERNAL_FLOW_SURFACE_OPERATOR_H
 #define CGAL_ANISOTROPIC_FAIRING_INTERNAL_FLOW_SURFACE_OPERATOR_H
@@ -30,7 +31,7 @@ public:
   Surface_operator(const Cache& cache, std::size_t n) : assembler_(cache, n) {}
 
   Fem_assembler<Cache>& assembler() { return assembler_; }
-  const Eigen::SparseMatrix<double>& pattern() const { return assembler_.pattern(); }
+  const Sparse_structure& pattern() const { return assembler_.pattern(); }
   /// M and L(D) of the last assembly, as value arrays over pattern()
   const std::vector<double>& M() const { return M_; }
   const std::vector<double>& L() const { return L_; }
@@ -47,8 +48,9 @@ public:
     for(double e : eps_) prefilter_ = prefilter_ || e > 0;
   }
 
-  /// M and L(D) at X (`with_matrices` false: the statistics only). On failure of the prefilter,
-  /// error() says why and the matrices are those of the tensor read on the current surface.
+  /// M and L(D) at X (`with_matrices` false: the statistics only, and M and L are no surface's until
+  /// restore() or the next assembly with matrices). On failure of the prefilter, error() says why and the
+  /// matrices are those of the tensor read on the current surface.
   template <typename Tensor>
   Assembly_statistics assemble(const Control_matrix& X, int metric_columns, const Tensor& tensor, bool with_matrices)
   {
@@ -57,12 +59,14 @@ public:
     prefiltered_valid_ = false;
     if(prefilter_ && block_ && block_->size() > 0)
     {
-      std::vector<double> Mi, Li;
-      assembler_.assemble(X, metric_columns, Isotropic_diffusion_tensor(), Mi, Li);
-      if(prefilter_A_.rows() != block_->matrix.rows()) prefilter_A_ = block_->matrix;
+      // the isotropic M and L in M_ and L_ (no two more arrays of the pattern's size), which the tensor's
+      // own assembly then overwrites, or leaves as scratch when it computes statistics only
+      overwritten_ = true;
+      assembler_.assemble(X, metric_columns, Isotropic_diffusion_tensor(), M_, L_);
       Control_matrix& dX = prefilter_dX_;   // warm start: the last M_eps's displacement
-      const Solve_statistics sol = prefilter_step(assembler_.pattern(), Mi, Li, eps_, *block_, prefilter_A_, X, metric_columns,
+      const Solve_statistics sol = prefilter_step(assembler_.pattern(), M_, L_, eps_, *block_, prefilter_A_, X, metric_columns,
                                                   prefilter_solver_, *prefilter_choice_, *prefilter_cg_, dX);
+      std::vector<double>().swap(prefilter_A_);   // not kept while the step's system is formed
       if(!sol.ok) dX.resize(0, 0);
       if(!sol.ok || !dX.allFinite())
         error_ = "the prefiltered surface M_eps could not be computed: " + (sol.ok ? std::string("not finite") : sol.message);
@@ -76,6 +80,7 @@ public:
     }
     const Assembly_statistics a = assembler_.assemble(X, metric_columns, tensor, M_, L_, with_matrices);
     assembler_.set_prefiltered(nullptr);
+    overwritten_ = overwritten_ || with_matrices;
     return a;
   }
 
@@ -83,32 +88,38 @@ public:
   /// M_eps of the last assembly, or null
   const Control_matrix* prefiltered() const { return prefiltered_valid_ ? &prefiltered_X_ : nullptr; }
 
-  /// Keeps the accepted surface's operator aside while a candidate is assembled; restore() brings it back.
+  /// Before a candidate is assembled: keeps the accepted surface's M_eps aside.
   void save()
   {
-    saved_M_.swap(M_);
-    saved_L_.swap(L_);
     saved_prefiltered_X_ = prefiltered_X_;
     saved_prefiltered_valid_ = prefiltered_valid_;
+    overwritten_ = false;
   }
-  void restore()
+  /// The operator of the accepted surface X again, after a candidate was assembled (no prefilter: its M_eps
+  /// was kept).
+  template <typename Tensor>
+  void restore(const Control_matrix& X, int metric_columns, const Tensor& tensor)
   {
-    saved_M_.swap(M_);
-    saved_L_.swap(L_);
     prefiltered_X_.swap(saved_prefiltered_X_);
     prefiltered_valid_ = saved_prefiltered_valid_;
+    if(!overwritten_) return;
+    assembler_.set_prefiltered(prefiltered_valid_ ? &prefiltered_X_ : nullptr);
+    assembler_.assemble(X, metric_columns, tensor, M_, L_, true);
+    assembler_.set_prefiltered(nullptr);
+    overwritten_ = false;
   }
 
 private:
   Fem_assembler<Cache> assembler_;
-  std::vector<double> M_, L_, saved_M_, saved_L_;
+  std::vector<double> M_, L_;
+  bool overwritten_ = false;   // M_ and L_ were assembled since save()
   std::vector<double> eps_;   // prefilter time per row
   bool prefilter_ = false;
   const Free_block* block_ = nullptr;
   Prefilter_solver prefilter_solver_;
   std::unique_ptr<Solver_choice> prefilter_choice_;
   std::unique_ptr<Block_conjugate_gradient> prefilter_cg_;
-  Eigen::SparseMatrix<double> prefilter_A_;
+  std::vector<double> prefilter_A_;   // the prefilter system's values over the free block
   Control_matrix prefiltered_X_, saved_prefiltered_X_, prefilter_dX_;
   bool prefiltered_valid_ = false, saved_prefiltered_valid_ = false;
   std::string error_;

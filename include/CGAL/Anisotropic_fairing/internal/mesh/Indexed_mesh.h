@@ -50,22 +50,22 @@ public:
   /// With `allow_isolated`, vertices without a face are accepted (listed in ghost_layer()) rather than refused.
   explicit Indexed_mesh(const TriangleMesh& tm, Borders borders = Borders::REFUSED, bool allow_isolated = false)
   {
+    std::unordered_map<vertex_descriptor, std::size_t> vertex_index;
     for(vertex_descriptor v : vertices(tm))
     {
-      vertex_index_.emplace(v, vertices_.size());
+      vertex_index.emplace(v, vertices_.size());
       vertices_.push_back(v);
     }
     std::vector<Triangle_topology::Face> tris;
     for(face_descriptor f : faces(tm))
     {
       const std::size_t fi = faces_.size();
-      face_index_.emplace(f, fi);
       faces_.push_back(f);
       Triangle_topology::Face t{ { -1, -1, -1 } };
       std::size_t degree = 0;
       for(vertex_descriptor v : CGAL::vertices_around_face(halfedge(f, tm), tm))
       {
-        if(degree < 3) t[degree] = int(vertex_index_.at(v));
+        if(degree < 3) t[degree] = int(vertex_index.at(v));
         ++degree;
       }
       if(degree != 3)
@@ -97,7 +97,16 @@ public:
   std::size_t number_of_faces() const { return faces_.size(); }
   vertex_descriptor vertex(std::size_t i) const { return vertices_[i]; }
   face_descriptor face(std::size_t i) const { return faces_[i]; }
-  std::size_t index(vertex_descriptor v) const { return vertex_index_.at(v); }
+  /// Frees the topology and the ghost layer once nothing reads them (a fairing, after its own numbering
+  /// is made: 30 bytes a face); topology() and ghost_layer() are then empty.
+  void release_ghost_layer() { ghost_layer_ = Ghost_layer(); }
+  /// Makes index(f) available (a hash map of the faces: 40 bytes a face, which a fairing does not need).
+  void index_faces()
+  {
+    face_index_.reserve(faces_.size());
+    for(std::size_t i = 0; i < faces_.size(); ++i) face_index_.emplace(faces_[i], i);
+  }
+  /// The index of f; after index_faces().
   std::size_t index(face_descriptor f) const { return face_index_.at(f); }
 
   /// The largest coordinate, and the inverse of the smallest span, the fairing's arithmetic can hold.
@@ -171,10 +180,9 @@ public:
 private:
   std::vector<vertex_descriptor> vertices_;
   std::vector<face_descriptor> faces_;
-  // hash maps rather than CGAL's dynamic property maps: on a const Surface_mesh those (CGAL 5.5) are a
+  // a hash map rather than CGAL's dynamic property map: on a const Surface_mesh those (CGAL 5.5) are a
   // vector of num_vertices() entries indexed by idx(), out of range on a mesh with removed elements, and
   // on a mutable one they add a property to the user's mesh for as long as a Loop_limit_surface lives
-  std::unordered_map<vertex_descriptor, std::size_t> vertex_index_;
   std::unordered_map<face_descriptor, std::size_t> face_index_;
   Ghost_layer ghost_layer_;
 };

@@ -160,7 +160,7 @@ inline std::string automatic_choices(const Noise_estimate& noise, const Stepper_
 /// What a run starts from: the mesh as a ghost layer and the input's matrices, in the caller's numbering.
 struct Fairing_input
 {
-  const Ghost_layer& layer;
+  const Ghost_layer& layer;            // read by the constructor only
   const Control_matrix& points;        // n x 3
   const Control_matrix& attributes;    // n x d, in their own units (d = 0: none faired)
   const std::vector<bool>& held;       // the caller's constrained vertices

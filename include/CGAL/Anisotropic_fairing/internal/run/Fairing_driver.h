@@ -53,7 +53,7 @@ Fairing_report fair_with_options(TriangleMesh& tm, VertexPointMap vpm, Attribute
   const double weight = given.attribute_weight;
 
   // input, read and checked before anything is touched
-  const Mesh im(tm, Borders::GHOSTED, true);   // isolated vertices: held, never written
+  Mesh im(tm, Borders::GHOSTED, true);   // isolated vertices: held, never written
   const Control_matrix P = im.read_points(vpm);
   const Control_matrix A = mode == Attribute_mode::GEOMETRY_ONLY ? Control_matrix() : read_attribute_columns(im, attributes);
   const double largest = A.size() > 0 ? A.cwiseAbs().maxCoeff() : 0.0;
@@ -68,7 +68,9 @@ Fairing_report fair_with_options(TriangleMesh& tm, VertexPointMap vpm, Attribute
     for(std::size_t i = 0; i < held.size(); ++i) held[i] = hooks.constrained(im.vertex(i));
 
   const Fairing_input in{ im.ghost_layer(), P, A, held, bool(hooks.control_point) || bool(hooks.attribute_control) };
-  Fairing_result result = Fairing_core<Tensor>(in, given, tensor, hooks.callback).run();
+  Fairing_core<Tensor> core(in, given, tensor, hooks.callback);
+  im.release_ghost_layer();   // the run has its own numbering's
+  Fairing_result result = core.run();
   Fairing_report& report = result.report;
   if(mode == Attribute_mode::COUPLED && A.cols() > 0 && report.status == Fairing_status::DEGENERATE_METRIC)
     report.message += "; in the coupled mode the surface is that of the points and the attributes times the attribute weight (" +

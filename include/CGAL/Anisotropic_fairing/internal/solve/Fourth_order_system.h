@@ -34,7 +34,7 @@ class Fourth_order_system
 {
 public:
   /// `pattern`: the n x n symmetric pattern of M and L; `free`: the unknowns' rows (increasing).
-  Fourth_order_system(const Eigen::SparseMatrix<double>& pattern, const std::vector<int>& free)
+  Fourth_order_system(const Sparse_structure& pattern, const std::vector<int>& free)
     : pattern_(pattern), select_(Eigen::Index(free.size()), pattern.rows()), is_free_(std::size_t(pattern.rows()), false), free_(free)
   {
     for(int i : free) is_free_[std::size_t(i)] = true;
@@ -44,19 +44,19 @@ public:
     select_.setFromTriplets(t.begin(), t.end());
   }
 
-  /// Forms M (with the local time scale `mass_weight`, empty: none), L and D^-1 from the pattern's values.
+  /// Forms M (with the local time scale `mass_weight`, empty: none) and D^-1 from the pattern's values; L
+  /// is read where it is, and must stay unchanged until release() or the next set_operator().
   void set_operator(const std::vector<double>& M, const std::vector<double>& L, const std::vector<double>& mass_weight)
   {
-    M_ = pattern_;
-    L_ = pattern_;
+    M_.resize(std::size_t(pattern_.nonZeros()));
+    L_ = &L;
     const int* outer = pattern_.outerIndexPtr();
     const int* inner = pattern_.innerIndexPtr();
     const Eigen::Index n = pattern_.rows();
     for(Eigen::Index j = 0; j < n; ++j)
       for(int p = outer[j]; p < outer[j + 1]; ++p)
       {
-        M_.valuePtr()[p] = M[std::size_t(p)] * (mass_weight.empty() ? 1.0 : mass_weight[std::size_t(inner[p])] * mass_weight[std::size_t(j)]);
-        L_.valuePtr()[p] = L[std::size_t(p)];
+        M_[std::size_t(p)] = M[std::size_t(p)] * (mass_weight.empty() ? 1.0 : mass_weight[std::size_t(inner[p])] * mass_weight[std::size_t(j)]);
       }
     Eigen::VectorXd d = lumped_mass(pattern_, M, mass_weight);
     // a vertex on no surface (held, isolated) has no mass and no Laplacian row: any positive D will do
@@ -69,9 +69,9 @@ public:
     for(Eigen::Index j = 0; j < n; ++j)
       for(int p = outer[j]; p < outer[j + 1]; ++p)
       {
-        const double l = L_.valuePtr()[p];
+        const double l = L[std::size_t(p)];
         q_diagonal_[inner[p]] += l * l * d[j];
-        if(inner[p] == j) m_diagonal_[j] = M_.valuePtr()[p];
+        if(inner[p] == j) m_diagonal_[j] = M_[std::size_t(p)];
       }
     Q_formed_ = A_formed_ = false;
   }
@@ -123,10 +123,10 @@ public:
     const Eigen::Index n = pattern_.rows(), c = X.cols();
     full_.setZero(n, c);
     for(std::size_t k = 0; k < free_.size(); ++k) full_.row(free_[k]) = X.row(Eigen::Index(k));
-    symmetric_product(M_, full_, mass_);
-    symmetric_product(L_, full_, laplace_);
+    symmetric_product(pattern_, M_, full_, mass_);
+    symmetric_product(pattern_, *L_, full_, laplace_);
     for(Eigen::Index i = 0; i < n; ++i) laplace_.row(i) *= inverse_mass_[i];
-    symmetric_product(L_, laplace_, full_);   // full_ now holds Q X
+    symmetric_product(pattern_, *L_, laplace_, full_);   // full_ now holds Q X
     Y.resize(Eigen::Index(free_.size()), c);
     for(std::size_t k = 0; k < free_.size(); ++k)
     {
@@ -140,12 +140,26 @@ public:
   const Eigen::SparseMatrix<double>& matrix()
   {
     if(A_formed_) return A_;
-    if(!Q_formed_) { Q_ = L_ * inverse_mass_.asDiagonal() * L_; Q_formed_ = true; }
+    if(!Q_formed_)
+    {
+      const Eigen::SparseMatrix<double> L = pattern_.matrix(*L_);
+      Q_ = L * inverse_mass_.asDiagonal() * L;
+      Q_formed_ = true;
+    }
     A_formed_ = true;
-    const Eigen::SparseMatrix<double> S = a_.asDiagonal() * M_ + b_.asDiagonal() * Q_;
+    const Eigen::SparseMatrix<double> S = a_.asDiagonal() * pattern_.matrix(M_) + b_.asDiagonal() * Q_;
     A_ = select_ * S * select_.transpose();
     if(extra_) A_ += *extra_;
     return A_;
+  }
+
+  /// Frees what set_operator() formed, and lets go of L.
+  void release()
+  {
+    std::vector<double>().swap(M_);
+    L_ = nullptr;
+    Q_ = A_ = Eigen::SparseMatrix<double>();
+    Q_formed_ = A_formed_ = false;
   }
 
   /// R = f tau_i (w_i M (X0 - X) - Q X)_i for all rows.
@@ -154,20 +168,22 @@ public:
   {
     Eigen::VectorXd w(X.rows()), t(X.rows());
     for(Eigen::Index i = 0; i < X.rows(); ++i) { w[i] = omega[std::size_t(i)]; t[i] = f * tau[std::size_t(i)]; }
-    symmetric_product(L_, X, laplace_);
+    symmetric_product(pattern_, *L_, X, laplace_);
     for(Eigen::Index i = 0; i < X.rows(); ++i) laplace_.row(i) *= inverse_mass_[i];
-    symmetric_product(L_, laplace_, full_);   // Q X
+    symmetric_product(pattern_, *L_, laplace_, full_);   // Q X
     const Control_matrix D = X0 - X;
-    symmetric_product(M_, D, mass_);
+    symmetric_product(pattern_, M_, D, mass_);
     R = t.asDiagonal() * (w.asDiagonal() * mass_ - full_);
   }
 
 private:
-  const Eigen::SparseMatrix<double>& pattern_;
+  const Sparse_structure& pattern_;
   Eigen::SparseMatrix<double> select_;
   std::vector<bool> is_free_;
   std::vector<int> free_;
-  Eigen::SparseMatrix<double> M_, L_, Q_, A_;
+  std::vector<double> M_;   // values over pattern_, with the local time scale
+  const std::vector<double>* L_ = nullptr;   // the operator's: unchanged while a step is solved
+  Eigen::SparseMatrix<double> Q_, A_;   // formed for a factorisation only
   bool Q_formed_ = false, A_formed_ = false;
   const Eigen::SparseMatrix<double>* extra_ = nullptr;
   Eigen::VectorXd inverse_mass_, m_diagonal_, q_diagonal_, a_, b_, diagonal_;

@@ -61,19 +61,17 @@ public:
     return *direct_;
   }
 
-  /// Solves A X = B the chosen way (X holds the initial guess of conjugate gradients); a conjugate-
-  /// gradient solve that fails is retried by the factorisation when allowed. `direct`: how it was solved.
-  Solve_statistics solve(const Eigen::SparseMatrix<double>& A, const Control_matrix& B, Control_matrix& X,
+  /// Solves A X = B the chosen way (X holds the initial guess of conjugate gradients), A given by its
+  /// structure and values; a conjugate-gradient solve that fails is retried by the factorisation when
+  /// allowed. `direct`: how it was solved.
+  Solve_statistics solve(const Sparse_structure& S, const std::vector<double>& values, const Control_matrix& B, Control_matrix& X,
                          Block_conjugate_gradient& cg, bool& direct)
   {
     Eigen::VectorXd diagonal;
-    if(!factorise_now())
-    {
-      diagonal.resize(A.rows());
-      for(Eigen::Index i = 0; i < A.rows(); ++i) diagonal[i] = A.coeff(i, i);
-    }
-    return solve([&A](const Control_matrix& P, Control_matrix& AP) { symmetric_product(A, P, AP); }, diagonal,
-                 [&A]() -> const Eigen::SparseMatrix<double>& { return A; }, B, X, cg, direct);
+    if(!factorise_now()) diagonal = S.diagonal(values.data());
+    Eigen::SparseMatrix<double> formed;   // a copy for the factorisation only, gone after the solve
+    return solve([&](const Control_matrix& P, Control_matrix& AP) { symmetric_product(S, values, P, AP); }, diagonal,
+                 [&]() -> const Eigen::SparseMatrix<double>& { formed = S.matrix(values); return formed; }, B, X, cg, direct);
   }
 
   /// The same for a matrix that conjugate gradients use through its product (`product(P, AP)`: AP = A P)

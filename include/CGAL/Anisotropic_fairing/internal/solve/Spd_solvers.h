@@ -13,6 +13,7 @@
 #include <CGAL/Anisotropic_fairing/Fairing_settings.h>
 #include <CGAL/Anisotropic_fairing/internal/types/Control_matrix.h>
 #include <CGAL/Anisotropic_fairing/internal/types/Parallel_blocks.h>
+#include <CGAL/Anisotropic_fairing/internal/types/Sparse_structure.h>
 #include <Eigen/Core>
 #include <Eigen/SparseCholesky>
 #include <Eigen/SparseCore>
@@ -60,13 +61,11 @@ void sparse_rows_product(const int* outer, const int* rows, const double* values
   }
 }
 
-/// Y = A X for a symmetric matrix stored in full (column j = row j), X and Y with one row per unknown.
-inline void symmetric_product(const Eigen::SparseMatrix<double>& A, const Control_matrix& X, Control_matrix& Y)
+/// Y = A X for a symmetric matrix stored in full (column j = row j), A given by its structure and
+/// values, X and Y with one row per unknown.
+inline void symmetric_product(const int* outer, const int* rows, const double* values, const Control_matrix& X, Control_matrix& Y)
 {
   Y.resize(X.rows(), X.cols());
-  const int* outer = A.outerIndexPtr();
-  const int* rows = A.innerIndexPtr();
-  const double* values = A.valuePtr();
   const Eigen::Index k = X.cols();
   auto range = [&](Eigen::Index begin, Eigen::Index end) {
     switch(k)
@@ -91,6 +90,16 @@ inline void symmetric_product(const Eigen::SparseMatrix<double>& A, const Contro
     }
   };
   parallel_blocks(X.rows(), range);
+}
+
+inline void symmetric_product(const Sparse_structure& S, const std::vector<double>& values, const Control_matrix& X, Control_matrix& Y)
+{
+  symmetric_product(S.outerIndexPtr(), S.innerIndexPtr(), values.data(), X, Y);
+}
+
+inline void symmetric_product(const Eigen::SparseMatrix<double>& A, const Control_matrix& X, Control_matrix& Y)
+{
+  symmetric_product(A.outerIndexPtr(), A.innerIndexPtr(), A.valuePtr(), X, Y);
 }
 
 /// Jacobi-preconditioned conjugate gradients on all columns at once; a column stops updating once

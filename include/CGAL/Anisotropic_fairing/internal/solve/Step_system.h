@@ -9,10 +9,12 @@
 #ifndef CGAL_ANISOTROPIC_FAIRING_INTERNAL_SOLVE_STEP_SYSTEM_H
 #define CGAL_ANISOTROPIC_FAIRING_INTERNAL_SOLVE_STEP_SYSTEM_H
 
+#include <CGAL/Anisotropic_fairing/internal/solve/Free_block.h>
 #include <CGAL/Anisotropic_fairing/internal/types/Control_matrix.h>
+#include <CGAL/Anisotropic_fairing/internal/types/Parallel_blocks.h>
+#include <CGAL/Anisotropic_fairing/internal/types/Sparse_structure.h>
 
 #include <Eigen/Dense>
-#include <Eigen/SparseCore>
 
 #include <algorithm>
 #include <cmath>
@@ -23,31 +25,41 @@ namespace CGAL {
 namespace Anisotropic_fairing {
 namespace internal {
 
-/// Entry e of A (free x free, column-major) takes pattern entry source[e]; its column is the free vertex
-/// entry_column[e]. The system is divided by `sys` (so that a huge tau cannot overflow), and with several
-/// components the unknowns of row i are in units of unknown_scale[i] (empty: none).
-inline void fill_step_matrix(Eigen::SparseMatrix<double>& A, const std::vector<int>& source, const std::vector<int>& entry_column,
-                             const std::vector<int>& free, const std::vector<double>& M, const std::vector<double>& L,
+/// A (values over block.structure(), free x free) = the step's system: ((1 + f tau_i omega_i) M_ij +
+/// f tau_i L_ij) / sys over the free rows and columns. The system is divided by `sys` (so that a huge tau
+/// cannot overflow), and with several components the unknowns of row i are in units of unknown_scale[i]
+/// (empty: none).
+inline void fill_step_matrix(std::vector<double>& A, const Free_block& block, const std::vector<double>& M, const std::vector<double>& L,
                              const std::vector<double>& tau, const std::vector<double>& omega, double factor, double sys,
                              const std::vector<double>& unknown_scale, const std::vector<double>& mass_weight)
 {
-  double* av = A.valuePtr();
-  const int* inner = A.innerIndexPtr();
-  for(std::size_t e = 0; e < source.size(); ++e)
-  {
-    const std::size_t p = std::size_t(source[e]);
-    const std::size_t row = std::size_t(free[std::size_t(inner[e])]);
-    const double t = factor * tau[row];
-    double m = M[p];
-    if(!mass_weight.empty()) m *= mass_weight[row] * mass_weight[std::size_t(free[std::size_t(entry_column[e])])];
-    av[e] = ((1 + t * omega[row]) * m + t * L[p]) / sys;
-    if(!unknown_scale.empty()) av[e] /= unknown_scale[row] * unknown_scale[row];
-  }
+  const Sparse_structure& S = block.structure();
+  const int* outer = S.outerIndexPtr();
+  const int* inner = S.innerIndexPtr();
+  const std::vector<int>& free = block.free;
+  A.resize(std::size_t(S.nonZeros()));
+  parallel_blocks(S.cols(), [&](Eigen::Index first, Eigen::Index last) {
+    for(Eigen::Index k = first; k < last; ++k)
+    {
+      const std::size_t column = std::size_t(free[std::size_t(k)]);
+      for(int e = outer[k]; e < outer[k + 1]; ++e)
+      {
+        const std::size_t p = block.source(std::size_t(e));
+        const std::size_t row = std::size_t(free[std::size_t(inner[e])]);
+        const double t = factor * tau[row];
+        double m = M[p];
+        if(!mass_weight.empty()) m *= mass_weight[row] * mass_weight[column];
+        double a = ((1 + t * omega[row]) * m + t * L[p]) / sys;
+        if(!unknown_scale.empty()) a /= unknown_scale[row] * unknown_scale[row];
+        A[std::size_t(e)] = a;
+      }
+    }
+  });
 }
 
 /// R = f tau_i (omega_i M (X0 - X) - L X)_i for all rows: the right-hand side of a time step for the
 /// displacement.
-inline void step_residual(const Eigen::SparseMatrix<double>& pattern, const std::vector<double>& M, const std::vector<double>& L,
+inline void step_residual(const Sparse_structure& pattern, const std::vector<double>& M, const std::vector<double>& L,
                           const std::vector<double>& tau, const std::vector<double>& omega, const Control_matrix& X,
                           const Control_matrix& X0, double f, Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, Eigen::RowMajor>& R,
                           const std::vector<double>& mass_weight = std::vector<double>())
@@ -74,7 +86,7 @@ inline void step_residual(const Eigen::SparseMatrix<double>& pattern, const std:
 }
 
 /// The lumped (row-sum) mass D_i = sum_j M_ij, with the local time scale's weights as in the system.
-inline Eigen::VectorXd lumped_mass(const Eigen::SparseMatrix<double>& pattern, const std::vector<double>& M,
+inline Eigen::VectorXd lumped_mass(const Sparse_structure& pattern, const std::vector<double>& M,
                                    const std::vector<double>& mass_weight)
 {
   const int* outer = pattern.outerIndexPtr();
