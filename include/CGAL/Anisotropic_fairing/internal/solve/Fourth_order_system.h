@@ -44,20 +44,16 @@ public:
     select_.setFromTriplets(t.begin(), t.end());
   }
 
-  /// Forms M (with the local time scale `mass_weight`, empty: none) and D^-1 from the pattern's values; L
-  /// is read where it is, and must stay unchanged until release() or the next set_operator().
+  /// Takes M (with the local time scale `mass_weight`, empty: none, applied as M is used) and L where they
+  /// are: the three must stay unchanged until release() or the next set_operator(). Forms D^-1.
   void set_operator(const std::vector<double>& M, const std::vector<double>& L, const std::vector<double>& mass_weight)
   {
-    M_.resize(std::size_t(pattern_.nonZeros()));
+    M_ = &M;
     L_ = &L;
+    mass_weight_ = &mass_weight;
     const int* outer = pattern_.outerIndexPtr();
     const int* inner = pattern_.innerIndexPtr();
     const Eigen::Index n = pattern_.rows();
-    for(Eigen::Index j = 0; j < n; ++j)
-      for(int p = outer[j]; p < outer[j + 1]; ++p)
-      {
-        M_[std::size_t(p)] = M[std::size_t(p)] * (mass_weight.empty() ? 1.0 : mass_weight[std::size_t(inner[p])] * mass_weight[std::size_t(j)]);
-      }
     Eigen::VectorXd d = lumped_mass(pattern_, M, mass_weight);
     // a vertex on no surface (held, isolated) has no mass and no Laplacian row: any positive D will do
     const double largest = d.size() > 0 ? d.maxCoeff() : 1.0;
@@ -71,7 +67,7 @@ public:
       {
         const double l = L[std::size_t(p)];
         q_diagonal_[inner[p]] += l * l * d[j];
-        if(inner[p] == j) m_diagonal_[j] = M_[std::size_t(p)];
+        if(inner[p] == j) m_diagonal_[j] = M[std::size_t(p)] * (mass_weight.empty() ? 1.0 : mass_weight[std::size_t(j)] * mass_weight[std::size_t(j)]);
       }
     Q_formed_ = A_formed_ = false;
   }
@@ -123,7 +119,7 @@ public:
     const Eigen::Index n = pattern_.rows(), c = X.cols();
     full_.setZero(n, c);
     for(std::size_t k = 0; k < free_.size(); ++k) full_.row(free_[k]) = X.row(Eigen::Index(k));
-    symmetric_product(pattern_, M_, full_, mass_);
+    symmetric_product(pattern_, *M_, full_, mass_, *mass_weight_);
     symmetric_product(pattern_, *L_, full_, laplace_);
     for(Eigen::Index i = 0; i < n; ++i) laplace_.row(i) *= inverse_mass_[i];
     symmetric_product(pattern_, *L_, laplace_, full_);   // full_ now holds Q X
@@ -147,7 +143,12 @@ public:
       Q_formed_ = true;
     }
     A_formed_ = true;
-    const Eigen::SparseMatrix<double> S = a_.asDiagonal() * pattern_.matrix(M_) + b_.asDiagonal() * Q_;
+    Eigen::SparseMatrix<double> M = pattern_.matrix(*M_);
+    if(!mass_weight_->empty())
+      for(Eigen::Index j = 0; j < M.outerSize(); ++j)
+        for(Eigen::SparseMatrix<double>::InnerIterator it(M, j); it; ++it)
+          it.valueRef() *= (*mass_weight_)[std::size_t(it.row())] * (*mass_weight_)[std::size_t(j)];
+    const Eigen::SparseMatrix<double> S = a_.asDiagonal() * M + b_.asDiagonal() * Q_;
     A_ = select_ * S * select_.transpose();
     if(extra_) A_ += *extra_;
     return A_;
@@ -156,8 +157,7 @@ public:
   /// Frees what set_operator() formed, and lets go of L.
   void release()
   {
-    std::vector<double>().swap(M_);
-    L_ = nullptr;
+    M_ = L_ = mass_weight_ = nullptr;
     Q_ = A_ = Eigen::SparseMatrix<double>();
     Q_formed_ = A_formed_ = false;
   }
@@ -172,7 +172,7 @@ public:
     for(Eigen::Index i = 0; i < X.rows(); ++i) laplace_.row(i) *= inverse_mass_[i];
     symmetric_product(pattern_, *L_, laplace_, full_);   // Q X
     const Control_matrix D = X0 - X;
-    symmetric_product(pattern_, M_, D, mass_);
+    symmetric_product(pattern_, *M_, D, mass_, *mass_weight_);
     R = t.asDiagonal() * (w.asDiagonal() * mass_ - full_);
   }
 
@@ -181,8 +181,10 @@ private:
   Eigen::SparseMatrix<double> select_;
   std::vector<bool> is_free_;
   std::vector<int> free_;
-  std::vector<double> M_;   // values over pattern_, with the local time scale
-  const std::vector<double>* L_ = nullptr;   // the operator's: unchanged while a step is solved
+  // the operator's (values over pattern_) and the local time scale's weights: unchanged while a step is solved
+  const std::vector<double>* M_ = nullptr;
+  const std::vector<double>* L_ = nullptr;
+  const std::vector<double>* mass_weight_ = nullptr;
   Eigen::SparseMatrix<double> Q_, A_;   // formed for a factorisation only
   bool Q_formed_ = false, A_formed_ = false;
   const Eigen::SparseMatrix<double>* extra_ = nullptr;

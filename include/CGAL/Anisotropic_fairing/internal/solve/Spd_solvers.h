@@ -41,11 +41,12 @@ struct Solve_statistics
   std::string message;
 };
 
-/// Rows [begin, end) of Y = A X (A compressed, stored in full, X and Y row-major with K columns). The
-/// sums stay in registers: the product is the solvers' main cost, and writing through Y's row at every
-/// non-zero (which may alias X as far as the compiler knows) makes it about twice as slow.
-template <int K>
-void sparse_rows_product(const int* outer, const int* rows, const double* values, const double* X, double* Y,
+/// Rows [begin, end) of Y = A X (A compressed, stored in full, X and Y row-major with K columns); with
+/// `Weighted`, of Y = W A W X, W = diag(w), each entry a_ij (w_i w_j) as it is formed. The sums stay in
+/// registers: the product is the solvers' main cost, and writing through Y's row at every non-zero (which
+/// may alias X as far as the compiler knows) makes it about twice as slow.
+template <int K, bool Weighted>
+void sparse_rows_product(const int* outer, const int* rows, const double* values, const double* w, const double* X, double* Y,
                          Eigen::Index begin, Eigen::Index end)
 {
   for(Eigen::Index i = begin; i < end; ++i)
@@ -53,7 +54,7 @@ void sparse_rows_product(const int* outer, const int* rows, const double* values
     double sum[K] = {};
     for(int p = outer[i]; p < outer[i + 1]; ++p)
     {
-      const double a = values[p];
+      const double a = Weighted ? values[p] * (w[rows[p]] * w[i]) : values[p];
       const double* x = X + std::ptrdiff_t(rows[p]) * K;
       for(int c = 0; c < K; ++c) sum[c] += a * x[c];
     }
@@ -61,40 +62,51 @@ void sparse_rows_product(const int* outer, const int* rows, const double* values
   }
 }
 
+template <bool Weighted>
+void sparse_rows_product(const int* outer, const int* rows, const double* values, const double* w, const Control_matrix& X,
+                         Control_matrix& Y, Eigen::Index begin, Eigen::Index end)
+{
+  const Eigen::Index k = X.cols();
+  switch(k)
+  {
+  case 1: sparse_rows_product<1, Weighted>(outer, rows, values, w, X.data(), Y.data(), begin, end); return;
+  case 2: sparse_rows_product<2, Weighted>(outer, rows, values, w, X.data(), Y.data(), begin, end); return;
+  case 3: sparse_rows_product<3, Weighted>(outer, rows, values, w, X.data(), Y.data(), begin, end); return;
+  case 4: sparse_rows_product<4, Weighted>(outer, rows, values, w, X.data(), Y.data(), begin, end); return;
+  case 6: sparse_rows_product<6, Weighted>(outer, rows, values, w, X.data(), Y.data(), begin, end); return;
+  default: break;
+  }
+  for(Eigen::Index i = begin; i < end; ++i)
+  {
+    double* y = Y.row(i).data();
+    std::fill(y, y + k, 0.0);
+    for(int p = outer[i]; p < outer[i + 1]; ++p)
+    {
+      const double a = Weighted ? values[p] * (w[rows[p]] * w[i]) : values[p];
+      const double* x = X.row(rows[p]).data();
+      for(Eigen::Index c = 0; c < k; ++c) y[c] += a * x[c];
+    }
+  }
+}
+
 /// Y = A X for a symmetric matrix stored in full (column j = row j), A given by its structure and
-/// values, X and Y with one row per unknown.
-inline void symmetric_product(const int* outer, const int* rows, const double* values, const Control_matrix& X, Control_matrix& Y)
+/// values, X and Y with one row per unknown; with `weights` (not null), Y = W A W X, W = diag(weights).
+inline void symmetric_product(const int* outer, const int* rows, const double* values, const Control_matrix& X, Control_matrix& Y,
+                              const double* weights = nullptr)
 {
   Y.resize(X.rows(), X.cols());
-  const Eigen::Index k = X.cols();
   auto range = [&](Eigen::Index begin, Eigen::Index end) {
-    switch(k)
-    {
-    case 1: sparse_rows_product<1>(outer, rows, values, X.data(), Y.data(), begin, end); return;
-    case 2: sparse_rows_product<2>(outer, rows, values, X.data(), Y.data(), begin, end); return;
-    case 3: sparse_rows_product<3>(outer, rows, values, X.data(), Y.data(), begin, end); return;
-    case 4: sparse_rows_product<4>(outer, rows, values, X.data(), Y.data(), begin, end); return;
-    case 6: sparse_rows_product<6>(outer, rows, values, X.data(), Y.data(), begin, end); return;
-    default: break;
-    }
-    for(Eigen::Index i = begin; i < end; ++i)
-    {
-      double* y = Y.row(i).data();
-      std::fill(y, y + k, 0.0);
-      for(int p = outer[i]; p < outer[i + 1]; ++p)
-      {
-        const double a = values[p];
-        const double* x = X.row(rows[p]).data();
-        for(Eigen::Index c = 0; c < k; ++c) y[c] += a * x[c];
-      }
-    }
+    if(weights) sparse_rows_product<true>(outer, rows, values, weights, X, Y, begin, end);
+    else sparse_rows_product<false>(outer, rows, values, nullptr, X, Y, begin, end);
   };
   parallel_blocks(X.rows(), range);
 }
 
-inline void symmetric_product(const Sparse_structure& S, const std::vector<double>& values, const Control_matrix& X, Control_matrix& Y)
+/// The same with A's structure and values; `weights` empty: none.
+inline void symmetric_product(const Sparse_structure& S, const std::vector<double>& values, const Control_matrix& X, Control_matrix& Y,
+                              const std::vector<double>& weights = std::vector<double>())
 {
-  symmetric_product(S.outerIndexPtr(), S.innerIndexPtr(), values.data(), X, Y);
+  symmetric_product(S.outerIndexPtr(), S.innerIndexPtr(), values.data(), X, Y, weights.empty() ? nullptr : weights.data());
 }
 
 inline void symmetric_product(const Eigen::SparseMatrix<double>& A, const Control_matrix& X, Control_matrix& Y)
