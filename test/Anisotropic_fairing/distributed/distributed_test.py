@@ -1,0 +1,119 @@
+#!/usr/bin/env python3
+# Tests of anisotropic_fairing_mpi (distributed/): its result on 1 and 2 processes equals the serial
+# library's, the program anisotropic_fairing's with the same explicit parameters and an exact solver
+# (--solver cholesky), to 1e-9 relative (the distributed CG iterates to 1e-13); a failing process fails
+# the run with a message naming the element and no output; what is not supported is refused.
+#   distributed_test.py --tool anisotropic_fairing --mpi anisotropic_fairing_mpi --mpiexec mpirun
+#                       --data DIR --example-data DIR --work DIR --case NAME
+import argparse, math, os, random, shutil, subprocess, sys
+
+TIGHT = ["-ksp_rtol", "1e-13", "-prefilter_ksp_rtol", "1e-14", "-ksp_max_it", "20000", "-prefilter_ksp_max_it", "20000"]
+TOLERANCE = 1e-9
+
+def read_mesh(path):
+    """Vertex rows (all numbers of each vertex line) of an ASCII OFF or PLY file."""
+    lines = open(path).read().split("\n")
+    if lines[0].startswith("ply"):
+        count, k = 0, 1
+        while not lines[k].startswith("end_header"):
+            if lines[k].startswith("element vertex"): count = int(lines[k].split()[2])
+            k += 1
+        return [[float(x) for x in lines[k + 1 + i].split()] for i in range(count)]
+    words = [l.split("#")[0].split() for l in lines]
+    words = [w for w in words if w]
+    n = int(words[1][0])
+    return [[float(x) for x in words[2 + i]] for i in range(n)]
+
+def relative_difference(a, b):
+    """Largest difference per column over the column's range (coordinates: over the bounding box's diagonal)."""
+    assert len(a) == len(b) and len(a[0]) == len(b[0]), "different sizes"
+    columns = len(a[0])
+    coord_range = math.sqrt(sum((max(r[c] for r in b) - min(r[c] for r in b)) ** 2 for c in range(3)))
+    worst = 0.0
+    for c in range(columns):
+        scale = coord_range if c < 3 else max(max(r[c] for r in b) - min(r[c] for r in b), 1e-300)
+        worst = max(worst, max(abs(x[c] - y[c]) for x, y in zip(a, b)) / scale)
+    return worst
+
+def run(command, expect_code=0):
+    p = subprocess.run(command, capture_output=True, text=True, timeout=300)
+    if p.returncode != expect_code:
+        sys.exit("FAIL: %s exited %d (expected %d)\nstdout: %s\nstderr: %s" % (" ".join(command), p.returncode, expect_code, p.stdout, p.stderr))
+    return p
+
+def mpi(args, np, *rest):
+    return [args.mpiexec, "--allow-run-as-root", "--oversubscribe", "-np", str(np), args.mpi] + list(rest)
+
+def make_valued_ply(source, target):
+    """source's mesh (OFF) with a double vertex property 'value': height plus deterministic noise."""
+    words = [l.split() for l in open(source).read().split("\n") if l.split()]
+    n, f = int(words[1][0]), int(words[1][1])
+    rng = random.Random(7)
+    with open(target, "w") as out:
+        out.write("ply\nformat ascii 1.0\nelement vertex %d\nproperty double x\nproperty double y\nproperty double z\n"
+                  "property double value\nelement face %d\nproperty list uchar int vertex_indices\nend_header\n" % (n, f))
+        for i in range(n):
+            x, y, z = (float(t) for t in words[2 + i][:3])
+            out.write("%.17g %.17g %.17g %.17g\n" % (x, y, z, z + 0.05 * rng.uniform(-1, 1)))
+        for j in range(f):
+            out.write(" ".join(words[2 + n + j][:4]) + "\n")
+
+def equal_to_serial(args, name, mesh, flags, processes=(1, 2)):
+    ext = os.path.splitext(mesh)[1]
+    serial = os.path.join(args.work, name + "_serial" + ext)
+    run([args.tool, mesh, serial, "--quiet", "--solver", "cholesky"] + flags)
+    reference = read_mesh(serial)
+    for np in processes:
+        out = os.path.join(args.work, "%s_np%d%s" % (name, np, ext))
+        run(mpi(args, np, mesh, out, "--quiet", "--report", out + ".json") + flags + TIGHT)
+        d = relative_difference(read_mesh(out), reference)
+        print("%s, %d process(es): largest relative difference to the serial library %.3g" % (name, np, d))
+        if not d <= TOLERANCE:
+            sys.exit("FAIL: %s on %d processes differs from the serial result by %.3g > %g" % (name, np, d, TOLERANCE))
+
+def fails_cleanly(args, name, mesh, flags, np, code, words):
+    out = os.path.join(args.work, name + os.path.splitext(mesh)[1])
+    if os.path.exists(out): os.remove(out)
+    p = run(mpi(args, np, mesh, out, "--quiet") + flags, expect_code=code)
+    line = p.stderr.strip()
+    print("%s: exit %d: %s" % (name, code, line))
+    for w in words:
+        if w not in line: sys.exit("FAIL: %s: the message does not say '%s': %s" % (name, w, line))
+    if os.path.exists(out): sys.exit("FAIL: %s: the output %s was written" % (name, out))
+
+def main():
+    ap = argparse.ArgumentParser()
+    for a in ("--tool", "--mpi", "--mpiexec", "--data", "--example-data", "--work", "--case"): ap.add_argument(a, required=True)
+    args = ap.parse_args()
+    shutil.rmtree(args.work, ignore_errors=True)
+    os.makedirs(args.work)
+    closed, bordered = os.path.join(args.data, "bumpy.off"), os.path.join(args.data, "hemisphere.off")
+    iso = ["--tensor", "isotropic", "--relative-time-step", "1e-3", "--steps", "3"]
+    aniso = ["--tensor", "anisotropic", "--lambda", "8", "--epsilon", "1e-3", "--relative-time-step", "1e-4", "--steps", "3"]
+    case = args.case
+    if case == "closed_isotropic": equal_to_serial(args, case, closed, iso + ["--relative-fidelity", "10"])
+    elif case == "closed_anisotropic": equal_to_serial(args, case, closed, aniso)
+    elif case == "bordered_isotropic": equal_to_serial(args, case, bordered, iso)
+    elif case == "bordered_anisotropic": equal_to_serial(args, case, bordered, aniso)
+    elif case == "coupled_attributes":
+        valued = os.path.join(args.work, "bumpy_value.ply")
+        make_valued_ply(closed, valued)
+        equal_to_serial(args, case, valued, ["--attributes", "value", "--mode", "coupled", "--attribute-weight", "2"] + aniso)
+        equal_to_serial(args, case + "_separate", valued, ["--attributes", "value", "--mode", "separate"] + iso)
+    elif case == "failures": failures(args, closed)
+    else: sys.exit("unknown case " + case)
+
+def failures(args, closed):
+    # a NaN coordinate in the second half of the vertices
+    words = [l for l in open(closed).read().split("\n")]
+    bad = os.path.join(args.work, "bumpy_nan.off")
+    n = int(words[1].split()[0])
+    victim = 3 * n // 4
+    words[2 + victim] = "nan 0 0"
+    open(bad, "w").write("\n".join(words))
+    fails_cleanly(args, "nan_coordinate", bad, ["--relative-time-step", "1e-3", "--steps", "2"], 2, 1, ["vertex %d" % victim])
+    fails_cleanly(args, "automatic_refused", closed, [], 2, 2, ["--relative-time-step", "not supported"])
+    fails_cleanly(args, "noise_stop_refused", closed, ["--relative-time-step", "1e-3", "--stop", "noise"], 1, 2, ["--stop noise"])
+
+if __name__ == "__main__":
+    main()
