@@ -5,7 +5,7 @@
 # the run with a message naming the element and no output; what is not supported is refused.
 #   distributed_test.py --tool anisotropic_fairing --mpi anisotropic_fairing_mpi --mpiexec mpirun
 #                       --data DIR --example-data DIR --work DIR --case NAME
-import argparse, math, os, random, shutil, subprocess, sys
+import argparse, json, math, os, random, shutil, subprocess, sys
 
 TIGHT = ["-ksp_rtol", "1e-13", "-prefilter_ksp_rtol", "1e-14", "-ksp_max_it", "20000", "-prefilter_ksp_max_it", "20000"]
 TOLERANCE = 1e-9
@@ -61,15 +61,22 @@ def make_valued_ply(source, target):
 def equal_to_serial(args, name, mesh, flags, processes=(1, 2)):
     ext = os.path.splitext(mesh)[1]
     serial = os.path.join(args.work, name + "_serial" + ext)
-    run([args.tool, mesh, serial, "--quiet", "--solver", "cholesky"] + flags)
+    run([args.tool, mesh, serial, "--quiet", "--solver", "cholesky", "--report", serial + ".json"] + flags)
     reference = read_mesh(serial)
+    expected = json.load(open(serial + ".json"))
     for np in processes:
         out = os.path.join(args.work, "%s_np%d%s" % (name, np, ext))
         run(mpi(args, np, mesh, out, "--quiet", "--report", out + ".json") + flags + TIGHT)
         d = relative_difference(read_mesh(out), reference)
-        print("%s, %d process(es): largest relative difference to the serial library %.3g" % (name, np, d))
+        got = json.load(open(out + ".json"))
+        print("%s, %d process(es): largest relative difference to the serial library %.3g; %d steps, %d rejected, stopped: %s"
+              % (name, np, d, len(got["steps"]), got["rejected_steps"], got["stop_reason"]))
         if not d <= TOLERANCE:
             sys.exit("FAIL: %s on %d processes differs from the serial result by %.3g > %g" % (name, np, d, TOLERANCE))
+        # the same decisions: steps taken, steps rejected, why it stopped
+        for key, value in (("stop_reason", got["stop_reason"]), ("rejected_steps", got["rejected_steps"]), ("steps", len(got["steps"]))):
+            want = len(expected["steps"]) if key == "steps" else expected[key]
+            if value != want: sys.exit("FAIL: %s on %d processes: %s %s, the serial run's %s" % (name, np, key, value, want))
 
 def fails_cleanly(args, name, mesh, flags, np, code, words):
     out = os.path.join(args.work, name + os.path.splitext(mesh)[1])
@@ -100,6 +107,12 @@ def main():
         make_valued_ply(closed, valued)
         equal_to_serial(args, case, valued, ["--attributes", "value", "--mode", "coupled", "--attribute-weight", "2"] + aniso)
         equal_to_serial(args, case + "_separate", valued, ["--attributes", "value", "--mode", "separate"] + iso)
+    elif case == "step_control":
+        # the paper's criterion (29) ends the run; a flow that folds the surface: six rejected steps, then
+        # the fall-back to the last surface without new folds
+        equal_to_serial(args, "displacement_stop", closed, ["--tensor", "isotropic", "--relative-time-step", "1e-2", "--steps", "30"])
+        equal_to_serial(args, "folding_fallback", os.path.join(args.data, "bunny.off"),
+                        ["--tensor", "anisotropic", "--lambda", "4", "--epsilon", "1e-3", "--relative-time-step", "1e-1", "--steps", "6"])
     elif case == "failures": failures(args, closed)
     else: sys.exit("unknown case " + case)
 
@@ -133,6 +146,11 @@ def failures(args, closed):
     # the same words as the serial library's, which name the component and the face
     said = serial.stderr.strip().split("\n")[0].split(": ", 1)[1]
     fails_cleanly(args, "flat_part", flat, flags, 2, 1, ["degenerate_metric", "connected component 1", said])
+    # every retry of the first step folds the surface: the run fails as the serial one does
+    camel = os.path.join(args.data, "camelhead.off")
+    flags = ["--tensor", "isotropic", "--relative-time-step", "1", "--steps", "4"]
+    serial = run([args.tool, camel, os.path.join(args.work, "camel_serial.off"), "--quiet"] + flags, expect_code=1)
+    fails_cleanly(args, "folded_first_step", camel, flags, 2, 1, [serial.stderr.strip().split("\n")[0].split(": ", 1)[1]])
     fails_cleanly(args, "automatic_refused", closed, [], 2, 2, ["--relative-time-step", "not supported"])
     fails_cleanly(args, "noise_stop_refused", closed, ["--relative-time-step", "1e-3", "--stop", "noise"], 1, 2, ["--stop noise"])
 
