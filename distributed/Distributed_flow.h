@@ -104,7 +104,6 @@ public:
   }
 
   const Flow_timing& timing() const { return timing_; }
-  std::size_t step_iterations() const { return timing_.iterations; }
 
 private:
   // the units of every vertex from the input's area, then M and L(D) at Z (Time_stepper::set_units)

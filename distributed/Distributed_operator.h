@@ -85,6 +85,20 @@ public:
   /// M_eps of the last assembly (owned and overlap rows), or null
   const Control_matrix* prefiltered() const { return prefiltered_valid_ ? &prefiltered_X_ : nullptr; }
   std::size_t prefilter_iterations() const { return prefilter_iterations_; }
+  /// The columns of this process's rows owned elsewhere: the values it receives in one matrix-vector product
+  /// (per column of unknowns), the communication of a conjugate-gradient iteration besides its two reductions.
+  std::size_t off_process_columns() const
+  {
+    int size = 1;
+    MPI_Comm_size(comm_, &size);
+    if(size == 1) return 0;
+    Mat diagonal_block, off_block;
+    const PetscInt* columns = nullptr;
+    PetscInt rows = 0, count = 0;
+    petsc_check(MatMPIAIJGetSeqAIJ(pattern_, &diagonal_block, &off_block, &columns), "MatMPIAIJGetSeqAIJ");
+    petsc_check(MatGetSize(off_block, &rows, &count), "MatGetSize");
+    return std::size_t(count);
+  }
 
   /// M and L(D) at X (owned and overlap rows read), `with_matrices` false: the statistics only. The statistics
   /// are every process's; a failed prefilter throws (the same on every process: the solve is collective).

@@ -184,12 +184,12 @@ int run_distributed(const af_tool::Options& o, MPI_Comm comm, Run_summary& summa
   summary.faces_per_process = gathered<std::size_t>(comm, d.owned_faces.size(), MPI_UNSIGNED_LONG);
   summary.owned_vertices_per_process = gathered<std::size_t>(comm, d.owned_vertices.size(), MPI_UNSIGNED_LONG);
   summary.ghost_vertices_per_process = gathered<std::size_t>(comm, d.ghost_vertices.size(), MPI_UNSIGNED_LONG);
-  for(std::size_t g : summary.ghost_vertices_per_process) summary.ghost_doubles_per_refresh += double(g);
   Ghosted_rows rows(comm, d);
   Control_matrix X = setup->X;
   rows.forget_others(X);
   const AFI::Stepper_settings& s = setup->given.settings;
   Distributed_operator op(comm, *setup->cache, d, rows, setup->constrained, s.solver_tolerance / 100, s.solver_maximum_iterations);
+  summary.off_process_columns = gathered<std::size_t>(comm, op.off_process_columns(), MPI_UNSIGNED_LONG);
   summary.partition_seconds = clock.time();
   clock.reset();
   collectively(comm, o.input, [&] {

@@ -32,7 +32,7 @@ struct Run_summary
   double read_seconds = 0, setup_seconds = 0, partition_seconds = 0, flow_seconds = 0, write_seconds = 0;
   Flow_timing timing;                   // of process 0 (the same decisions on every process)
   std::size_t prefilter_iterations = 0;
-  double ghost_doubles_per_refresh = 0; // summed over the processes
+  std::vector<std::size_t> off_process_columns;   // per process: values received per matrix-vector product and column
   std::string ksp_type, pc_type;
   CGAL::Anisotropic_fairing::Fairing_report report;
 };

@@ -59,8 +59,8 @@ std::string summary_json(const af_tool::Options& o, const Run_summary& s, bool o
   j["cg_iterations"] = s.timing.iterations;
   j["solves"] = s.timing.solves;
   j["prefilter_cg_iterations"] = s.prefilter_iterations;
-  // one refresh of the overlap per matrix product in CG would move these doubles per column (all processes)
-  j["overlap_doubles_per_column"] = s.ghost_doubles_per_refresh;
+  // what a process receives per matrix-vector product of CG (one per iteration), per column of unknowns
+  j["per_process"]["matvec_doubles_received"] = s.off_process_columns;
   if(ok)
   {
     j["stop_reason"] = AF::to_string(s.report.stop_reason);
