@@ -40,6 +40,15 @@ double af_tool::elapsed_seconds()
 
 namespace {
 
+const char* const usage_text =
+  "anisotropic_fairing_mpi: anisotropic_fairing's run with a given time step on MPI processes (PETSc)\n"
+  "  mpirun -np P anisotropic_fairing_mpi INPUT OUTPUT --relative-time-step R --steps N [options] [PETSc options]\n"
+  "Single-dash options are PETSc's: -pc_type jacobi|gamg|hypre, -ksp_rtol, -ksp_monitor, -mat_partitioning_type,\n"
+  "-log_view; the prefilter's solver: -prefilter_ksp_rtol, -prefilter_pc_type. Not supported (refused): the\n"
+  "automatic run, --stop noise, --order 4, --element linear, deviation bounds, --mode attributes,\n"
+  "--solver cholesky, --hold, --curvature, --resample, --snapshot, --repair, inputs with vertex normals.\n"
+  "anisotropic_fairing's options, with the same meaning:\n\n";
+
 // the run on every process; returns the exit code (the same on every process)
 int run_program(const std::vector<std::string>& arguments, MPI_Comm comm, int rank)
 {
@@ -54,6 +63,7 @@ int run_program(const std::vector<std::string>& arguments, MPI_Comm comm, int ra
     af_tool::parse_arguments(int(argv.size()), argv.data(), o);   // the same on every process
     if(o.help || o.version)
     {
+      if(rank == 0 && o.help) std::fputs(usage_text, stdout);
       if(rank == 0) std::fputs(o.help ? af_tool::help_text().c_str() : af_tool::version_text().c_str(), stdout);
       return 0;
     }

@@ -22,6 +22,8 @@ def main():
     ap.add_argument("--processes", default="1,2")
     ap.add_argument("--preconditioners", default="jacobi,gamg,hypre")
     a = ap.parse_args()
+    # one thread per process: hypre's OpenMP threads would otherwise compete with the other process
+    os.environ.setdefault("OMP_NUM_THREADS", "1")
     os.makedirs(a.work, exist_ok=True)
     tool, mpi = os.path.join(a.build, "bin", "anisotropic_fairing"), os.path.join(a.build, "bin", "anisotropic_fairing_mpi")
     mesh = a.mesh

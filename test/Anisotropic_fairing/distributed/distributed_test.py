@@ -11,8 +11,10 @@ TIGHT = ["-ksp_rtol", "1e-13", "-prefilter_ksp_rtol", "1e-14", "-ksp_max_it", "2
 TOLERANCE = 1e-9
 
 def read_mesh(path):
-    """Vertex rows (all numbers of each vertex line) of an ASCII OFF or PLY file."""
+    """Vertex rows (all numbers of each vertex line) of an ASCII OFF, PLY or OBJ file."""
     lines = open(path).read().split("\n")
+    if path.endswith(".obj"):
+        return [[float(x) for x in l.split()[1:]] for l in lines if l.startswith("v ")]
     if lines[0].startswith("ply"):
         count, k = 0, 1
         while not lines[k].startswith("end_header"):
@@ -73,6 +75,10 @@ def equal_to_serial(args, name, mesh, flags, processes=(1, 2)):
               % (name, np, d, len(got["steps"]), got["rejected_steps"], got["stop_reason"]))
         if not d <= TOLERANCE:
             sys.exit("FAIL: %s on %d processes differs from the serial result by %.3g > %g" % (name, np, d, TOLERANCE))
+        # the work was divided: every process assembled faces, each face once
+        faces = got["per_process"]["faces"]
+        if len(faces) != np or min(faces) == 0 or sum(faces) != got["faces"]:
+            sys.exit("FAIL: %s on %d processes: faces per process %s of %d" % (name, np, faces, got["faces"]))
         # the same decisions: steps taken, steps rejected, why it stopped
         for key, value in (("stop_reason", got["stop_reason"]), ("rejected_steps", got["rejected_steps"]), ("steps", len(got["steps"]))):
             want = len(expected["steps"]) if key == "steps" else expected[key]
