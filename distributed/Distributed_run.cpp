@@ -208,6 +208,8 @@ int run_distributed(const af_tool::Options& o, MPI_Comm comm, Run_summary& summa
   else Y = X;
   rows.gather_on_first(Y);
   summary.peak_memory_mb = gathered<double>(comm, peak_memory_mb(), MPI_DOUBLE);
+  summary.overlap_doubles_received = gathered<double>(comm, rows.doubles_received(), MPI_DOUBLE);
+  summary.overlap_refreshes = rows.refreshes();
   collectively(comm, o.input, [&] { if(rank == 0) write_result(o, in, *setup, Y); });
   summary.write_seconds = clock.time();
   return 0;

@@ -33,6 +33,8 @@ struct Run_summary
   Flow_timing timing;                   // of process 0 (the same decisions on every process)
   std::size_t prefilter_iterations = 0;
   std::vector<std::size_t> off_process_columns;   // per process: values received per matrix-vector product and column
+  std::vector<double> overlap_doubles_received;   // per process: into its overlap rows over the run (VecGhostUpdate)
+  std::size_t overlap_refreshes = 0;              // how many refreshes moved them
   std::string ksp_type, pc_type;
   CGAL::Anisotropic_fairing::Fairing_report report;
 };

@@ -94,8 +94,6 @@ public:
     return result;
   }
 
-  KSP ksp() const { return ksp_; }
-
 private:
   template <typename F>
   void set_owned(Vec v, const F& value)

@@ -93,7 +93,7 @@ public:
       for(int c = 0; c < bs; ++c) X(Eigen::Index(v), c) = all[std::size_t(d_.petsc_row[v]) * std::size_t(bs) + std::size_t(c)];
   }
 
-  /// doubles received into ghost rows so far, and the refreshes that moved them (communication volume)
+  /// doubles received into overlap rows so far, and the refreshes that moved them (communication volume)
   double doubles_received() const { return doubles_received_; }
   std::size_t refreshes() const { return refreshes_; }
 

@@ -61,6 +61,9 @@ std::string summary_json(const af_tool::Options& o, const Run_summary& s, bool o
   j["prefilter_cg_iterations"] = s.prefilter_iterations;
   // what a process receives per matrix-vector product of CG (one per iteration), per column of unknowns
   j["per_process"]["matvec_doubles_received"] = s.off_process_columns;
+  // the overlap's control points (and M_eps, the limit points) refreshed from their owners
+  j["per_process"]["overlap_doubles_received"] = s.overlap_doubles_received;
+  j["overlap_refreshes"] = s.overlap_refreshes;
   if(ok)
   {
     j["stop_reason"] = AF::to_string(s.report.stop_reason);
