@@ -182,6 +182,8 @@ private:
     const std::vector<double> no_fidelity(eps_.size(), 0.0);
     const Distributed_solve s = prefilter_solver_.solve(Mi_, Li_, eps_, no_fidelity, X, X, metric_columns, prefilter_dX_);
     prefilter_iterations_ += std::size_t(s.iterations);
+    MatDestroy(&Mi_);   // needed again only at the next assembly
+    MatDestroy(&Li_);
     if(!s.ok) throw std::runtime_error("the prefiltered surface M_eps could not be computed: " + s.message);
     prefiltered_X_ = X;
     for(std::size_t k = 0; k < d_.owned_vertices.size(); ++k)

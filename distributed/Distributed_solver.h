@@ -91,6 +91,9 @@ public:
       for(std::size_t k = 0; k < d_.owned_vertices.size(); ++k) dX(Eigen::Index(k), c) = x[k];
       petsc_check(VecRestoreArrayRead(x_, &x), "VecRestoreArrayRead");
     }
+    // the next solve has another matrix: its operator and preconditioner (a multigrid hierarchy) are freed now
+    petsc_check(KSPReset(ksp_), "KSPReset");
+    MatDestroy(&A_);
     return result;
   }
 
