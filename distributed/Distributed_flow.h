@@ -123,7 +123,8 @@ private:
       {
         AFI::fail(report_, AF::Fairing_status::DEGENERATE_METRIC, "the input's limit surface has no area" +
                   (in_.components.count > 1 ? " in connected component " + std::to_string(c) : std::string()) +
-                  " (sqrt(det G) <= 0 on face " + std::to_string(a.degenerate_face) + "): its control points do not span a surface", total_);
+                  " (sqrt(det G) <= 0 on face " + std::to_string(a.degenerate_face) + "): its control points do not span a surface" +
+                  part_of_face(a), total_);
         return false;
       }
     const AFI::Length_unit tensor_unit = AFI::is_automatic_tensor(tensor_) ? AFI::Length_unit::EDGE : AFI::Length_unit::SCALE;
@@ -158,6 +159,16 @@ private:
     report_.initial.energy = a.energy;
     report_.initial.H_integral = a.H_integral;
     return true;
+  }
+
+  // which process's part holds the degenerate face named by `a` (the caller's numbering), when there are several
+  std::string part_of_face(const AFI::Assembly_statistics& a) const
+  {
+    if(d_.size == 1 || !a.degenerate || !in_.numbering.original_face) return std::string();
+    const std::vector<std::size_t>& original = *in_.numbering.original_face;
+    for(std::size_t f = 0; f < original.size(); ++f)
+      if(original[f] == a.degenerate_face) return " (in the part of process " + std::to_string(d_.face_owner[f]) + ")";
+    return std::string();
   }
 
   // the units, the input's operator, the criteria's measures and the soundness of the start (Flow_run::start)
