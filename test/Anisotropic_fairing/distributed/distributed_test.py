@@ -43,8 +43,15 @@ def run(command, expect_code=0):
         sys.exit("FAIL: %s exited %d (expected %d)\nstdout: %s\nstderr: %s" % (" ".join(command), p.returncode, expect_code, p.stdout, p.stderr))
     return p
 
+OPEN_MPI_FLAGS = None
+
 def mpi(args, np, *rest):
-    return [args.mpiexec, "--allow-run-as-root", "--oversubscribe", "-np", str(np), args.mpi] + list(rest)
+    """mpiexec -np NP PROGRAM ...; with Open MPI as root (CI) and more processes than cores allowed."""
+    global OPEN_MPI_FLAGS
+    if OPEN_MPI_FLAGS is None:
+        version = subprocess.run([args.mpiexec, "--version"], capture_output=True, text=True).stdout
+        OPEN_MPI_FLAGS = ["--allow-run-as-root", "--oversubscribe"] if "Open MPI" in version or "OpenRTE" in version else []
+    return [args.mpiexec] + OPEN_MPI_FLAGS + ["-np", str(np), args.mpi] + list(rest)
 
 def make_valued_ply(source, target):
     """source's mesh (OFF) with a double vertex property 'value': height plus deterministic noise."""
