@@ -160,6 +160,12 @@ private:
       const PetscInt row = d_.petsc_row[std::size_t(j)];
       petsc_check(MatSetValues(A, 1, &row, count, petsc_inner_.data() + outer[j], values.data() + outer[j], ADD_VALUES), "MatSetValues");
     }
+    // every owned row has its diagonal, even a vertex on no face (held: an identity row of the step)
+    for(int v : d_.owned_vertices)
+    {
+      const PetscInt row = d_.petsc_row[std::size_t(v)];
+      petsc_check(MatSetValue(A, row, row, 0.0, ADD_VALUES), "MatSetValue");
+    }
     petsc_check(MatAssemblyBegin(A, MAT_FINAL_ASSEMBLY), "MatAssemblyBegin");
     petsc_check(MatAssemblyEnd(A, MAT_FINAL_ASSEMBLY), "MatAssemblyEnd");
   }

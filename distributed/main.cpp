@@ -111,6 +111,9 @@ int main(int argc, char** argv)
   }
   int rank = 0;
   MPI_Comm_rank(PETSC_COMM_WORLD, &rank);
+  // an unexpected PETSc error (not a failure the run agrees on) ends every process at once (MPI_Abort), so
+  // that no process is left waiting for one that stopped; nothing has been written then
+  PetscPushErrorHandler(PetscAbortErrorHandler, nullptr);
 #ifdef CGAL_LINKED_WITH_TBB
   // one thread per process: the processes are the parallelism (one per core)
   const tbb::global_control one_thread(tbb::global_control::max_allowed_parallelism, 1);

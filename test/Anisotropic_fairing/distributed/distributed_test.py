@@ -101,6 +101,12 @@ def fails_cleanly(args, name, mesh, flags, np, code, words):
         if w not in line: sys.exit("FAIL: %s: the message does not say '%s': %s" % (name, w, line))
     if os.path.exists(out): sys.exit("FAIL: %s: the output %s was written" % (name, out))
 
+def with_isolated_vertex(source, target):
+    """source (OFF) with one more vertex on no face (held, written unchanged)."""
+    words = [l for l in open(source).read().split("\n") if l.split()]
+    n, f = (int(x) for x in words[1].split()[:2])
+    open(target, "w").write("\n".join(["OFF", "%d %d 0" % (n + 1, f)] + words[2:2 + n] + ["5 5 5"] + words[2 + n:2 + n + f]) + "\n")
+
 def main():
     os.environ.setdefault("OMP_NUM_THREADS", "1")   # hypre's threads would compete with the other process
     ap = argparse.ArgumentParser()
@@ -118,7 +124,11 @@ def main():
         for pc in ("gamg", "hypre"):
             equal_to_serial(args, case + "_" + pc, closed, iso + ["--relative-fidelity", "10"], (2,), ("-pc_type", pc))
     elif case == "closed_anisotropic": equal_to_serial(args, case, closed, aniso)
-    elif case == "bordered_isotropic": equal_to_serial(args, case, bordered, iso)
+    elif case == "bordered_isotropic":
+        equal_to_serial(args, case, bordered, iso)
+        lonely = os.path.join(args.work, "hemisphere_isolated_vertex.off")
+        with_isolated_vertex(bordered, lonely)
+        equal_to_serial(args, case + "_isolated_vertex", lonely, iso)
     elif case == "bordered_anisotropic": equal_to_serial(args, case, bordered, aniso)
     elif case == "coupled_attributes":
         valued = os.path.join(args.work, "bumpy_value.ply")
