@@ -107,6 +107,17 @@ def with_isolated_vertex(source, target):
     n, f = (int(x) for x in words[1].split()[:2])
     open(target, "w").write("\n".join(["OFF", "%d %d 0" % (n + 1, f)] + words[2:2 + n] + ["5 5 5"] + words[2 + n:2 + n + f]) + "\n")
 
+def two_components(source, target):
+    """source (OFF) and a copy of it a tenth of its size beside it: two components, each in its own units."""
+    words = [l.split() for l in open(source).read().split("\n") if l.split()]
+    n, f = int(words[1][0]), int(words[1][1])
+    points = [[float(x) for x in w[:3]] for w in words[2:2 + n]]
+    faces = [[int(x) for x in w[1:4]] for w in words[2 + n:2 + n + f]]
+    lines = ["OFF", "%d %d 0" % (2 * n, 2 * f)] + ["%.17g %.17g %.17g" % tuple(p) for p in points]
+    lines += ["%.17g %.17g %.17g" % (0.1 * p[0] + 20, 0.1 * p[1], 0.1 * p[2]) for p in points]
+    lines += ["3 %d %d %d" % tuple(t) for t in faces] + ["3 %d %d %d" % tuple(i + n for i in t) for t in faces]
+    open(target, "w").write("\n".join(lines) + "\n")
+
 def main():
     os.environ.setdefault("OMP_NUM_THREADS", "1")   # hypre's threads would compete with the other process
     ap = argparse.ArgumentParser()
@@ -123,7 +134,11 @@ def main():
         # the preconditioner is PETSc's option: algebraic multigrid gives the same result
         for pc in ("gamg", "hypre"):
             equal_to_serial(args, case + "_" + pc, closed, iso + ["--relative-fidelity", "10"], (2,), ("-pc_type", pc))
-    elif case == "closed_anisotropic": equal_to_serial(args, case, closed, aniso)
+    elif case == "closed_anisotropic":
+        equal_to_serial(args, case, closed, aniso)
+        pair = os.path.join(args.work, "bumpy_two_components.off")
+        two_components(closed, pair)
+        equal_to_serial(args, case + "_two_components", pair, aniso)
     elif case == "bordered_isotropic":
         equal_to_serial(args, case, bordered, iso)
         lonely = os.path.join(args.work, "hemisphere_isolated_vertex.off")
