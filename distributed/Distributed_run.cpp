@@ -127,6 +127,11 @@ void write_result(const af_tool::Options& o, Input& in, const Replicated_setup& 
     std::filesystem::remove(tmp, ec);
     af_tool::fail("write_error", "cannot write " + o.output + ": " + ec.message());
   }
+  // as anisotropic_fairing warns: what the output's format cannot hold
+  std::string dropped;
+  for(const std::string& p : af_tool::dropped_properties(in.mesh, format)) dropped += (dropped.empty() ? "" : ", ") + p;
+  if(!dropped.empty())
+    std::fprintf(stderr, "anisotropic_fairing_mpi: warning: %s cannot hold the input's %s: not written\n", o.output.c_str(), dropped.c_str());
 }
 
 // the flow with one tensor type, on this process's part
