@@ -18,6 +18,7 @@ def main():
     ap.add_argument("--levels", type=int, default=2)
     ap.add_argument("--work", default="/tmp/af_strong_scaling")
     ap.add_argument("--steps", default="3")
+    ap.add_argument("--relative-time-step", default="1e-3")
     ap.add_argument("--tensor", default="isotropic")
     ap.add_argument("--processes", default="1,2")
     ap.add_argument("--preconditioners", default="jacobi,gamg,hypre")
@@ -32,9 +33,9 @@ def main():
         if not os.path.exists(mesh):   # one tiny isotropic step, then the limit surface refined
             run([tool, "/work/shared/data/fertility.off", mesh, "--quiet", "--tensor", "isotropic", "--relative-time-step", "1e-7",
                  "--steps", "1", "--resample", str(a.levels)])
-    flags = ["--quiet", "--tensor", a.tensor, "--relative-time-step", "1e-3", "--steps", a.steps, "--stop", "off"]
+    flags = ["--quiet", "--tensor", a.tensor, "--relative-time-step", a.relative_time_step, "--steps", a.steps, "--stop", "off"]
     if a.tensor == "anisotropic": flags += ["--lambda", "8", "--epsilon", "1e-3"]
-    print("mesh %s, %s, %s steps" % (mesh, a.tensor, a.steps))
+    print("mesh %s, %s, %s steps of %s l^2" % (mesh, a.tensor, a.steps, a.relative_time_step))
     print("%3s %-7s %8s %8s %8s %8s %10s %14s %22s" % ("np", "pc", "flow s", "solve s", "assem s", "wall s", "CG its/step", "peak MB/proc",
                                                     "recv doubles/CG it/proc"))
     for pc in a.preconditioners.split(","):
