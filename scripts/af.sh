@@ -26,6 +26,7 @@ DEB_PACKAGES=(libcgal-dev libeigen3-dev libboost-dev libtbb-dev nlohmann-json3-d
 DOC_PACKAGES=(doxygen libjs-mathjax)   # the test command's: the manual, checked without warnings, its formulas offline
 RENDER_PACKAGES=(python3-vtk9 xvfb xauth)   # the renderer of --snapshot and of the figures (VTK under a virtual display)
 PYTHON_PACKAGES=(pybind11-dev python3-dev python3-numpy python3-pytest)   # the Python module (python/) and its tests
+DISTRIBUTED_PACKAGES=(libpetsc-real-dev)   # the test command's: PETSc (with Open MPI) for anisotropic_fairing_mpi and its distributed_* tests
 
 # The main program: the one place to change what `af.sh main` runs.
 # The default run, no tuning flag: fairs the noisy fandisk of the denoising benchmark (6475 vertices,
@@ -86,7 +87,7 @@ cmd_main() {
 }
 
 cmd_test() {
-  DEB_PACKAGES+=("${DOC_PACKAGES[@]}" "${RENDER_PACKAGES[@]}" "${PYTHON_PACKAGES[@]}")
+  DEB_PACKAGES+=("${DOC_PACKAGES[@]}" "${RENDER_PACKAGES[@]}" "${PYTHON_PACKAGES[@]}" "${DISTRIBUTED_PACKAGES[@]}")
   cmd_build
   ctest --test-dir "$BUILD_DIR" --output-on-failure --no-tests=error -j"$JOBS"
   cmd_sanitize input
@@ -118,8 +119,9 @@ cmd_sanitize() {
   esac
   cmd_deps
   local flags="-O1 -g1 -fsanitize=address,undefined -fno-sanitize-recover=all -fno-omit-frame-pointer"
+  # (without the distributed program: MPI and PETSc are not built with the sanitizers)
   cmake -S . -B build-sanitize -DCMAKE_BUILD_TYPE=RelWithDebInfo -DCMAKE_CXX_FLAGS_RELWITHDEBINFO="$flags -DNDEBUG" \
-    -DCMAKE_EXE_LINKER_FLAGS="-fsanitize=address,undefined"
+    -DCMAKE_EXE_LINKER_FLAGS="-fsanitize=address,undefined" -DANISOTROPIC_FAIRING_BUILD_DISTRIBUTED=OFF
   cmake --build build-sanitize -j"$JOBS" "${targets[@]}"
   ASAN_OPTIONS=detect_leaks=1:halt_on_error=1:abort_on_error=1 UBSAN_OPTIONS=print_stacktrace=1:halt_on_error=1 \
     ctest --test-dir build-sanitize --output-on-failure --no-tests=error -j"$JOBS" "${tests[@]}"

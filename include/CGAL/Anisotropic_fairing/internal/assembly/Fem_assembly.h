@@ -128,15 +128,18 @@ template <typename Cache>
 class Fem_assembler
 {
 public:
-  /// Without `with_pattern` only statistics can be assembled (`with_matrices == false`).
-  Fem_assembler(const Cache& cache, std::size_t number_of_vertices, bool with_pattern = true)
-    : cache_(cache)
+  /// Without `with_pattern` only statistics can be assembled (`with_matrices == false`). `faces`: the faces
+  /// assembled, increasing (a process's part of a distributed mesh; null: all), kept by reference; the
+  /// pattern, the matrices and the statistics are then those of these faces only.
+  Fem_assembler(const Cache& cache, std::size_t number_of_vertices, bool with_pattern = true,
+                const std::vector<std::size_t>* faces = nullptr)
+    : cache_(cache), faces_(faces)
   {
-    if(with_pattern) pattern_ = ring_sparsity_pattern(cache, number_of_vertices);
+    if(with_pattern) pattern_ = ring_sparsity_pattern(cache, number_of_vertices, faces);
 #ifdef CGAL_LINKED_WITH_TBB
     chunks_ = std::max(1, tbb::this_task_arena::max_concurrency());
 #endif
-    chunks_ = int(std::min<std::size_t>(std::size_t(chunks_), std::max<std::size_t>(1, cache.number_of_faces() / 256)));
+    chunks_ = int(std::min<std::size_t>(std::size_t(chunks_), std::max<std::size_t>(1, assembled_faces() / 256)));
     if(with_pattern && chunks_ > 1) share_columns(number_of_vertices);
   }
 
@@ -158,7 +161,7 @@ public:
   Assembly_statistics assemble(const Control_matrix& X, int metric_columns, const Tensor& tensor,
                                std::vector<double>& M, std::vector<double>& L, bool with_matrices = true)
   {
-    const std::size_t nnz = number_of_nonzeros(), nf = cache_.number_of_faces();
+    const std::size_t nnz = number_of_nonzeros(), nf = assembled_faces();
     if(!Cache::has_second_derivatives) with_matrices = true;   // the curvature integral needs them
     if(with_matrices)
     {
@@ -188,8 +191,8 @@ public:
       ws.shift = k > 0 ? shift_.data() : nullptr;
       const std::size_t begin = nf * std::size_t(k) / std::size_t(chunks_);
       const std::size_t end = nf * std::size_t(k + 1) / std::size_t(chunks_);
-      for(std::size_t f = begin; f < end; ++f)
-        assemble_face(f, X, metric_columns, tensor, ws, with_matrices ? M.data() : nullptr, L.data(), stats[std::size_t(k)]);
+      for(std::size_t i = begin; i < end; ++i)
+        assemble_face(face(i), X, metric_columns, tensor, ws, with_matrices ? M.data() : nullptr, L.data(), stats[std::size_t(k)]);
     };
 #ifdef CGAL_LINKED_WITH_TBB
     if(chunks_ > 1)
@@ -215,6 +218,10 @@ public:
   }
 
 private:
+  std::size_t assembled_faces() const { return faces_ ? faces_->size() : cache_.number_of_faces(); }
+  // the i-th face assembled
+  std::size_t face(std::size_t i) const { return faces_ ? (*faces_)[i] : i; }
+
   // Per-face buffers with compile-time sizes where known (ring size M, points NQ, coordinates K),
   // so the common faces run unrolled, allocation-free products; Dynamic covers every other face.
   template <int M, int NQ, int K>
@@ -253,12 +260,12 @@ private:
   void share_columns(std::size_t n)
   {
     std::vector<int> owner(n, -2);   // -2: no face, -1: several chunks
-    const std::size_t nf = cache_.number_of_faces();
+    const std::size_t nf = assembled_faces();
     for(int k = 0; k < chunks_; ++k)
-      for(std::size_t f = nf * std::size_t(k) / std::size_t(chunks_); f < nf * std::size_t(k + 1) / std::size_t(chunks_); ++f)
-        for(int r = 0; r < cache_.ring_size(f); ++r)
+      for(std::size_t i = nf * std::size_t(k) / std::size_t(chunks_); i < nf * std::size_t(k + 1) / std::size_t(chunks_); ++i)
+        for(int r = 0; r < cache_.ring_size(face(i)); ++r)
         {
-          int& o = owner[std::size_t(cache_.ring(f)[r])];
+          int& o = owner[std::size_t(cache_.ring(face(i))[r])];
           o = o == -2 || o == k ? k : -1;
         }
     shift_.assign(n, owned_column);
@@ -485,6 +492,7 @@ private:
   }
 
   const Cache& cache_;
+  const std::vector<std::size_t>* faces_ = nullptr;   // the faces assembled (null: all)
   Sparse_structure pattern_;
   int chunks_ = 1;
   std::vector<int> shared_columns_;

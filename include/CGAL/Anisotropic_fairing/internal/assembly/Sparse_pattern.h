@@ -20,20 +20,23 @@ namespace CGAL {
 namespace Anisotropic_fairing {
 namespace internal {
 
-/// Returns the n x n symmetric structure whose entries are all pairs of vertices sharing a triangle ring. `Cache` is any element cache (Patch_cache,
-/// Linear_element_cache) exposing faces and their rings.
+/// Returns the n x n symmetric structure whose entries are all pairs of vertices sharing a triangle ring.
+/// `Cache` is any element cache (Patch_cache, Linear_element_cache) exposing faces and their rings;
+/// `faces`: only the rings of these faces (null: all).
 template <typename Cache>
-Sparse_structure ring_sparsity_pattern(const Cache& cache, std::size_t n)
+Sparse_structure ring_sparsity_pattern(const Cache& cache, std::size_t n, const std::vector<std::size_t>* faces = nullptr)
 {
+  const std::size_t nf = faces ? faces->size() : cache.number_of_faces();
+  auto face = [faces](std::size_t i) { return faces ? (*faces)[i] : i; };
   // faces whose ring contains each vertex (CSR)
   std::vector<std::size_t> start(n + 1, 0);
-  for(std::size_t f = 0; f < cache.number_of_faces(); ++f)
-    for(int k = 0; k < cache.ring_size(f); ++k) ++start[cache.ring(f)[k] + 1];
+  for(std::size_t i = 0; i < nf; ++i)
+    for(int k = 0; k < cache.ring_size(face(i)); ++k) ++start[cache.ring(face(i))[k] + 1];
   for(std::size_t i = 0; i < n; ++i) start[i + 1] += start[i];
   std::vector<int> faces_of(start[n]);
   std::vector<std::size_t> fill(start.begin(), start.end() - 1);
-  for(std::size_t f = 0; f < cache.number_of_faces(); ++f)
-    for(int k = 0; k < cache.ring_size(f); ++k) faces_of[fill[cache.ring(f)[k]]++] = int(f);
+  for(std::size_t i = 0; i < nf; ++i)
+    for(int k = 0; k < cache.ring_size(face(i)); ++k) faces_of[fill[cache.ring(face(i))[k]]++] = int(face(i));
 
   // column j: every vertex of every ring that contains j (sorted). Two passes over the columns, in
   // blocks on every core: count each column, then write it at its offset.

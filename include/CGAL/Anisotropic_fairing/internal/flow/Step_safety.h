@@ -53,9 +53,11 @@ inline double face_cross_product(const Triangle_topology& topo, std::size_t f, c
   return vec3(n).norm();
 }
 
+/// `faces`: only the edges whose first halfedge lies in these faces (a process's part of a distributed
+/// mesh; null: all real faces), so that the parts' counts add up to the whole's.
 inline std::size_t count_folded_edges(const Triangle_topology& topo, std::size_t real_faces, const Control_matrix& Y,
                                       const std::vector<int>& face_component, const std::vector<double>& edge,
-                                      double turn = turn_120)
+                                      double turn = turn_120, const std::vector<std::size_t>* faces = nullptr)
 {
   auto normal = [&](std::size_t f, double* n) {
     const double h = edge[std::size_t(face_component[f])];
@@ -63,8 +65,10 @@ inline std::size_t count_folded_edges(const Triangle_topology& topo, std::size_t
     return twice_area > 2e-4 * h * h ? twice_area : 0.0;
   };
   std::size_t folded = 0;
-  for(int h = 0; h < int(3 * real_faces); ++h)
+  const std::size_t nh = 3 * (faces ? faces->size() : real_faces);
+  for(std::size_t i = 0; i < nh; ++i)
   {
+    const int h = faces ? int(3 * (*faces)[i / 3] + i % 3) : int(i);
     const int o = topo.opposite(h);
     if(o < h || std::size_t(topo.face_of(o)) >= real_faces) continue;   // each interior edge once
     double a[3], b[3];

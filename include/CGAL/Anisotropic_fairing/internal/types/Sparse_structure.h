@@ -36,6 +36,7 @@ public:
 
   Eigen::Index rows() const { return n_; }
   Eigen::Index cols() const { return n_; }
+  Eigen::Index outerSize() const { return n_; }
   Eigen::Index nonZeros() const { return Eigen::Index(inner_.size()); }
   const int* outerIndexPtr() const { return outer_.data(); }
   const int* innerIndexPtr() const { return inner_.data(); }

@@ -1,0 +1,51 @@
+// Copyright (c) 2026 Anisotropic_fairing developers.
+// SPDX-License-Identifier: GPL-3.0-or-later
+//
+// One run of anisotropic_fairing_mpi: every process reads the mesh and builds the library's stages
+// (Replicated_setup.h); the faces are partitioned (Face_partition.h); each process assembles and steps its
+// part (Distributed_flow.h); process 0 gathers the result and writes it as anisotropic_fairing writes it
+// (full double precision, the input's vertex order, every vertex property), then the JSON report. A
+// failure on any process fails the run on every process (Collective_failure.h) before anything is written.
+
+#ifndef AF_DISTRIBUTED_DISTRIBUTED_RUN_H
+#define AF_DISTRIBUTED_DISTRIBUTED_RUN_H
+
+#include "Distributed_flow.h"
+#include "options.h"
+
+#include <CGAL/Anisotropic_fairing/Fairing_report.h>
+
+#include <mpi.h>
+
+#include <string>
+#include <vector>
+
+namespace af_distributed {
+
+/// What the JSON report says of a run.
+struct Run_summary
+{
+  int processes = 1;
+  std::size_t vertices = 0, faces = 0;
+  std::vector<std::size_t> faces_per_process, owned_vertices_per_process, ghost_vertices_per_process;
+  std::vector<double> peak_memory_mb;   // per process (getrusage's maximum resident set size)
+  double read_seconds = 0, setup_seconds = 0, partition_seconds = 0, flow_seconds = 0, write_seconds = 0;
+  Flow_timing timing;                   // of process 0 (the same decisions on every process)
+  std::size_t prefilter_iterations = 0;
+  std::vector<std::size_t> off_process_columns;   // per process: values received per matrix-vector product and column
+  std::vector<double> overlap_doubles_received;   // per process: into its overlap rows over the run (VecGhostUpdate)
+  std::size_t overlap_refreshes = 0;              // how many refreshes moved them
+  std::string ksp_type, pc_type;
+  CGAL::Anisotropic_fairing::Fairing_report report;
+};
+
+/// Runs `o` on the processes of `comm`; returns 0, or throws Collective_failure (the same on every process)
+/// or af_tool::Failure (a usage error, the same on every process).
+int run_distributed(const af_tool::Options& o, MPI_Comm comm, Run_summary& summary);
+
+/// The JSON text of the report of a run (`ok` false: `status` and `message` say why it failed).
+std::string summary_json(const af_tool::Options& o, const Run_summary& s, bool ok, const std::string& status, const std::string& message);
+
+} // namespace af_distributed
+
+#endif // AF_DISTRIBUTED_DISTRIBUTED_RUN_H
