@@ -39,7 +39,7 @@ public:
               const Control_matrix* anchor = nullptr)
     : pattern_(pattern), block_(block), fidelity_(fidelity), anchor_(anchor), cg_(s.solver_tolerance, s.solver_maximum_iterations),
       choice_(s.solver, block.size(), constant_matrix, s.direct_solver), constant_(constant_matrix),
-      R_(pattern.rows(), columns), B_(Eigen::Index(block.size()), columns), dX_(Control_matrix::Zero(Eigen::Index(block.size()), columns))
+      R_(pattern.rows(), columns), dX_(Control_matrix::Zero(Eigen::Index(block.size()), columns))
   {
     if(s.order == 4) fourth_order_.reset(new Fourth_order_system(pattern, block.free));
   }
@@ -98,17 +98,19 @@ public:
       fidelity_->add_to_residual(held_, X, *anchor_, residual_factor, R_);
     }
     formed_ = true;
-    block_.gather(R_, B_);
+    // the right-hand side: the free rows of R (R itself when no row is held)
+    Control_matrix& B = block_.whole() ? R_ : B_;
+    if(!block_.whole()) block_.gather(R_, B_);
     if(!unknown_scale.empty())
-      for(Eigen::Index i = 0; i < B_.rows(); ++i) B_.row(i) /= std::pow(unknown_scale[std::size_t(block_.free[std::size_t(i)])], 3);
+      for(Eigen::Index i = 0; i < B.rows(); ++i) B.row(i) /= std::pow(unknown_scale[std::size_t(block_.free[std::size_t(i)])], 3);
     CGAL::Real_timer clock;
     clock.start();
     // CG warm-started from the last dX
     choice_.set_step_factor(factor);
     Fourth_order_system* q = fourth_order_.get();
-    const Solve_statistics sol = !q ? choice_.solve(block_.structure(), A_, B_, dX_, cg_, direct)
+    const Solve_statistics sol = !q ? choice_.solve(block_.structure(), A_, B, dX_, cg_, direct)
       : choice_.solve([q](const Control_matrix& P, Control_matrix& AP) { q->product(P, AP); }, q->diagonal(),
-                      [q]() -> const Eigen::SparseMatrix<double>& { return q->matrix(); }, B_, dX_, cg_, direct);
+                      [q]() -> const Eigen::SparseMatrix<double>& { return q->matrix(); }, B, dX_, cg_, direct);
     solve_seconds_ = clock.time();
     choice_.record(direct, sol, solve_seconds_);
     // on a surface that moves the system is formed anew at every solve: not kept while the next is assembled

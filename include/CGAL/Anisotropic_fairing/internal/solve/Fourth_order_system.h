@@ -117,17 +117,23 @@ public:
   void product(const Control_matrix& X, Control_matrix& Y) const
   {
     const Eigen::Index n = pattern_.rows(), c = X.cols();
-    full_.setZero(n, c);
-    for(std::size_t k = 0; k < free_.size(); ++k) full_.row(free_[k]) = X.row(Eigen::Index(k));
-    symmetric_product(pattern_, *M_, full_, mass_, *mass_weight_);
-    symmetric_product(pattern_, *L_, full_, laplace_);
+    const bool whole = free_.size() == std::size_t(n);   // every row free: X has all rows, Y takes Q X
+    if(!whole)
+    {
+      full_.setZero(n, c);
+      for(std::size_t k = 0; k < free_.size(); ++k) full_.row(free_[k]) = X.row(Eigen::Index(k));
+    }
+    const Control_matrix& all = whole ? X : full_;
+    symmetric_product(pattern_, *M_, all, mass_, *mass_weight_);
+    symmetric_product(pattern_, *L_, all, laplace_);
     for(Eigen::Index i = 0; i < n; ++i) laplace_.row(i) *= inverse_mass_[i];
-    symmetric_product(pattern_, *L_, laplace_, full_);   // full_ now holds Q X
-    Y.resize(Eigen::Index(free_.size()), c);
+    Control_matrix& QX = whole ? Y : full_;
+    symmetric_product(pattern_, *L_, laplace_, QX);
+    if(!whole) Y.resize(Eigen::Index(free_.size()), c);
     for(std::size_t k = 0; k < free_.size(); ++k)
     {
       const int i = free_[k];
-      Y.row(Eigen::Index(k)) = a_[i] * mass_.row(i) + b_[i] * full_.row(i);
+      Y.row(Eigen::Index(k)) = a_[i] * mass_.row(i) + b_[i] * QX.row(i);
     }
     if(extra_) Y += *extra_ * X;
   }

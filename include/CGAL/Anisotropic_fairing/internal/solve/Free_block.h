@@ -50,6 +50,8 @@ public:
   Free_block& operator=(const Free_block&) = delete;
 
   std::size_t size() const { return free.size(); }
+  /// No row is held: the block is the whole pattern.
+  bool whole() const { return whole_; }
   /// free x free: what a system over the unknowns is stored on (the pattern itself when no row is held)
   const Sparse_structure& structure() const { return whole_ ? *pattern_ : own_; }
   /// the pattern's entry of the block's entry e
@@ -58,6 +60,7 @@ public:
   /// B = the free rows of R
   void gather(const Control_matrix& R, Control_matrix& B) const
   {
+    B.resize(Eigen::Index(free.size()), R.cols());
     for(Eigen::Index i = 0; i < B.rows(); ++i) B.row(i) = R.row(free[std::size_t(i)]);
   }
 

@@ -83,7 +83,7 @@ public:
     direct = factorise_now();
     failed_iterate_seconds_ = 0;
     if(direct) return direct_solver().solve(matrix(), B, X);
-    start_ = X;
+    if(may_fall_back()) start_ = X;   // the factorisation's start, should the iterations give way
     CGAL::Real_timer clock;
     clock.start();
     Solve_statistics sol = cg.solve(product, diagonal, B, X, may_fall_back() ? fall_back_iterations() : 0);
