@@ -90,7 +90,9 @@ int run(const Options& o, Run_record& r)
   heartbeat.phase("reading " + o.input);
   Mesh mesh;
   Input_info info;
+  const double read_from = elapsed_seconds();
   read_input(o.input, mesh, info, o.repair);
+  r.read_seconds = elapsed_seconds() - read_from;
   r.mesh_read = true;
   r.vertices = mesh.number_of_vertices();
   r.faces = mesh.number_of_faces();
@@ -161,6 +163,7 @@ int run(const Options& o, Run_record& r)
          (r.report.message.empty() ? std::string("no detail") : r.report.message));
 
   heartbeat.phase("writing the result back (limit normals, curvature, attributes, resampling)");
+  const double write_from = elapsed_seconds();
   if(o.curvature || exact_limit_normals)
   {
     // The limit surface of the faired control points serves the curvature and the normals. Only the
@@ -260,6 +263,7 @@ int run(const Options& o, Run_record& r)
     }
   }
   r.output_written = true;  // as far as the report is concerned
+  r.write_seconds = elapsed_seconds() - write_from;
   if(!o.report.empty())
   {
     // wall time up to here; the rename is negligible

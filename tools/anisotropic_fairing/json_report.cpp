@@ -127,8 +127,12 @@ std::string report_json(const Options& o, const Run_record& r, double wall_secon
                       { "solve_seconds", number(s.solve_seconds) }, { "direct_solve", s.direct_solve },
                       { "time_step", number(s.time_step) }, { "noise_displacement", number(s.noise_displacement) } });
   j["steps"] = std::move(steps);
+  j["read_seconds"] = r.mesh_read ? number(r.read_seconds) : Json(nullptr);
+  j["input_seconds"] = ran ? number(f.input_seconds) : Json(nullptr);
   j["setup_seconds"] = ran ? number(f.setup_seconds) : Json(nullptr);
+  j["write_back_seconds"] = ran ? number(f.write_back_seconds) : Json(nullptr);
   j["total_seconds"] = ran ? number(f.total_seconds) : Json(nullptr);
+  j["write_seconds"] = r.output_written ? number(r.write_seconds) : Json(nullptr);
   j["wall_seconds"] = number(wall_seconds);
   // bytes that are not UTF-8 (a path, a message quoting the input) are replaced rather than refused
   return j.dump(2, ' ', false, Json::error_handler_t::replace) + "\n";

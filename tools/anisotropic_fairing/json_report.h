@@ -30,6 +30,8 @@ struct Run_record
   std::size_t held_vertices = 0;   // held by --hold
   std::size_t resampled_vertices = 0, resampled_faces = 0;   // --resample: what was written
   bool output_written = false;
+  double read_seconds = 0;    // the input file read and checked
+  double write_seconds = 0;   // after the fairing: normals, curvature, resampling, the output file written
 };
 
 std::string report_json(const Options& o, const Run_record& r, double wall_seconds);

@@ -157,7 +157,9 @@ struct Fairing_report
   std::size_t clamped_vertices = 0;      ///< written vertices put on a bound along the line to their input position: their fidelity could not hold them (e.g. the input's own limit point lies farther off than the bound)
   std::string choices;            ///< with automatic parameters: what was chosen and why, in one sentence
   std::string selected_tensor;    ///< with automatic parameters and no tensor given: "anisotropic", "isotropic" or "uniform", the result kept (empty otherwise; "uniform" is the uniform tensor's fourth-order flow, `flow_order` 4)
+  double input_seconds = 0;       ///< the mesh and maps read and checked: numbering, topology, ghost layer
   double setup_seconds = 0;       ///< set-up: private numbering, element (patch categories, stencils), sparsity patterns
+  double write_back_seconds = 0;  ///< the result written into the caller's maps
   double total_seconds = 0;       ///< the whole call
 
   /// true when the result was written back

@@ -68,10 +68,12 @@ Fairing_report fair_with_options(TriangleMesh& tm, VertexPointMap vpm, Attribute
     for(std::size_t i = 0; i < held.size(); ++i) held[i] = hooks.constrained(im.vertex(i));
 
   const Fairing_input in{ im.ghost_layer(), P, A, held, bool(hooks.control_point) || bool(hooks.attribute_control) };
+  const double input_seconds = total.time();
   Fairing_core<Tensor> core(in, given, tensor, hooks.callback);
   im.release_ghost_layer();   // the run has its own numbering's
   Fairing_result result = core.run();
   Fairing_report& report = result.report;
+  report.input_seconds = input_seconds;
   if(mode == Attribute_mode::COUPLED && A.cols() > 0 && report.status == Fairing_status::DEGENERATE_METRIC)
     report.message += "; in the coupled mode the surface is that of the points and the attributes times the attribute weight (" +
                       Mesh::to_text(weight) + "): a weight that makes the attributes dwarf or drown the coordinates leaves no "
@@ -79,10 +81,12 @@ Fairing_report fair_with_options(TriangleMesh& tm, VertexPointMap vpm, Attribute
   report.faces = im.number_of_faces();
   if(report.succeeded())
   {
+    const double written_from = total.time();
     write_back(im, result.values, mode, result.kept, vpm, attributes);
     write_control_values(im, hooks.control_point, result.control_values, 0);
     if(A.cols() > 0 && result.control_values.cols() == 3 + A.cols())
       write_control_values(im, hooks.attribute_control, result.control_values, 3);
+    report.write_back_seconds = total.time() - written_from;
   }
   report.total_seconds = total.time();
   return report;
