@@ -230,14 +230,22 @@ private:
   // the step's system and right-hand side at Z_n (divided so that a huge tau cannot overflow), solved
   bool solve(Fairing_step& st, bool& finite)
   {
-    Ride_along_probe& probe = t_.probe_;
     clock_.reset();
-    if(probe.active()) probe.augment(Z_, Z0_, ZZ_, ZZ0_);
     const double factor = control_.factor();
-    const Solve_statistics sol =
-      solver_->solve(t_.operator_.M(), t_.operator_.L(), t_.units_, mass_weight_, *unknown_scale_, factor,
-                     system_scale(t_.units_, t_.block_.free, factor, s_.order, t_.mean_edge_), probe.active() ? ZZ_ : Z_,
-                     probe.active() ? ZZ0_ : Z0_, bound_->weights(), st.direct_solve);
+    const auto prepare = [&](const Control_matrix& Z, const Control_matrix& Z0) {
+      solver_->prepare(t_.operator_.M(), t_.operator_.L(), t_.units_, mass_weight_, *unknown_scale_, factor,
+                       system_scale(t_.units_, t_.block_.free, factor, s_.order, t_.mean_edge_), Z, Z0, bound_->weights());
+    };
+    if(t_.probe_.active())
+    {
+      // [Z | probe], [Z0 | its start]: freed before the solve, which no longer reads them
+      Control_matrix ZZ, ZZ0;
+      t_.probe_.augment(Z_, Z0_, ZZ, ZZ0);
+      prepare(ZZ, ZZ0);
+    }
+    else prepare(Z_, Z0_);
+    Zc_.resize(0, 0);   // the last candidate, accepted or not, is not needed while this step is solved
+    const Solve_statistics sol = solver_->solve(st.direct_solve);
     st.solve_seconds = solver_->solve_seconds();
     st.assemble_seconds = assemble_seconds_ + clock_.time() - st.solve_seconds;
     assemble_seconds_ = 0;
@@ -263,8 +271,9 @@ private:
   {
     Zc_ = Z_;
     if(!finite) return;
-    if(t_.probe_.active()) dZ_run_ = solver_->displacement().leftCols(Z_.cols());
-    const Control_matrix& dZ = t_.probe_.active() ? dZ_run_ : solver_->displacement();
+    Control_matrix dZ_run;   // the run's own columns of a solve that carried the probe along
+    if(t_.probe_.active()) dZ_run = solver_->displacement().leftCols(Z_.cols());
+    const Control_matrix& dZ = t_.probe_.active() ? dZ_run : solver_->displacement();
     const Control_matrix& tangent_surface = t_.operator_.prefiltered() ? *t_.operator_.prefiltered() : Z_;
     t_.probe_.make_candidate(solver_->displacement(), t_.block_.free, t_.tangential_filter_, tangent_surface, metric_columns_);
     if(t_.tangential_filter_)
@@ -275,6 +284,7 @@ private:
       t_.normal_dZ_ = dZ;
       t_.tangential_filter_->remove(tangent_surface, metric_columns_, t_.block_.free, t_.normal_dZ_);
       t_.move_free_rows(Zc_, t_.normal_dZ_, Z0_, measured_columns_, row_unit_, st);
+      t_.normal_dZ_.resize(0, 0);
     }
     else t_.move_free_rows(Zc_, dZ, Z0_, measured_columns_, row_unit_, st);
   }
@@ -481,7 +491,7 @@ private:
   CGAL::Real_timer total_, clock_;
   Fairing_report report_;
   double assemble_seconds_ = 0, time_unit_ = 1, time_ = 0;
-  Control_matrix Z0_, Y_, Yb_, anchor_, ZZ_, ZZ0_, dZ_run_, Zc_, Z_previous_, Z_unfolded_;
+  Control_matrix Z0_, Y_, Yb_, anchor_, Zc_, Z_previous_, Z_unfolded_;
   std::vector<double> mass_weight_, row_unit_;
   const std::vector<double> no_scale_;
   const std::vector<double>* unknown_scale_ = &no_scale_;   // the stepper's, per row (Time_stepper::unknown_scale_)

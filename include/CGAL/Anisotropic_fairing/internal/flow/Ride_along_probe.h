@@ -44,15 +44,15 @@ public:
                       const Control_matrix& surface, int metric_columns)
   {
     if(!active()) return;
-    d_ = dAll.rightCols(Z_.cols());
-    if(filter) filter->remove(surface, metric_columns, free, d_);
+    Control_matrix d = dAll.rightCols(Z_.cols());
+    if(filter) filter->remove(surface, metric_columns, free, d);
     candidate_ = Z_;
-    for(Eigen::Index i = 0; i < d_.rows(); ++i) candidate_.row(Eigen::Index(free[std::size_t(i)])) += d_.row(i);
+    for(Eigen::Index i = 0; i < d.rows(); ++i) candidate_.row(Eigen::Index(free[std::size_t(i)])) += d.row(i);
   }
   // What the run does, the probe does (nothing without a probe):
   /// the run's candidate ends theta of the way into its step;
   void shorten(double theta) { if(active()) candidate_ = Z_ + theta * (candidate_ - Z_); }
-  void accept() { if(active()) { previous_.swap(Z_); Z_.swap(candidate_); } }
+  void accept() { if(active()) { previous_.swap(Z_); Z_.swap(candidate_); candidate_.resize(0, 0); } }
   /// the run's accepted step is taken back to theta of its length;
   void rewind(double theta) { if(active()) Z_ = previous_ + theta * (Z_ - previous_); }
   /// the run's last surface without new folds is this one; the run falls back to it.
@@ -60,7 +60,7 @@ public:
   void fall_back() { if(active()) Z_ = unfolded_; }
 
 private:
-  Control_matrix Z_, Z0_, candidate_, previous_, unfolded_, d_;
+  Control_matrix Z_, Z0_, candidate_, previous_, unfolded_;
 };
 
 } // namespace internal

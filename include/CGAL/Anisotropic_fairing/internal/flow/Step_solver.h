@@ -39,18 +39,19 @@ public:
               const Control_matrix* anchor = nullptr)
     : pattern_(pattern), block_(block), fidelity_(fidelity), anchor_(anchor), cg_(s.solver_tolerance, s.solver_maximum_iterations),
       choice_(s.solver, block.size(), constant_matrix, s.direct_solver), constant_(constant_matrix),
-      R_(pattern.rows(), columns), dX_(Control_matrix::Zero(Eigen::Index(block.size()), columns))
+      dX_(Control_matrix::Zero(Eigen::Index(block.size()), columns))
   {
     if(s.order == 4) fourth_order_.reset(new Fourth_order_system(pattern, block.free));
   }
 
-  /// Solves the step of `factor` times the time step at (M, L), from X (X0: the input, for the fidelity
-  /// term), the system divided by `sys`. `mass_weight`: the local time scale; `unknown_scale`: per row with
-  /// several components; either empty: none. `mu`: each vertex's own fidelity (Deviation_bound.h; empty:
-  /// none). `direct`: whether it was factorised.
-  Solve_statistics solve(const std::vector<double>& M, const std::vector<double>& L, const Step_units& u,
-                         const std::vector<double>& mass_weight, const std::vector<double>& unknown_scale, double factor, double sys,
-                         const Control_matrix& X, const Control_matrix& X0, const std::vector<double>& mu, bool& direct)
+  /// Forms the step of `factor` times the time step at (M, L), from X (X0: the input, for the fidelity
+  /// term), the system divided by `sys`, and its right-hand side; solve() solves it. X and X0 are not read
+  /// after this: the caller may free them first. `mass_weight`: the local time scale; `unknown_scale`: per
+  /// row with several components; either empty: none. `mu`: each vertex's own fidelity (Deviation_bound.h;
+  /// empty: none). M, L and mass_weight must stay unchanged until solve() returns.
+  void prepare(const std::vector<double>& M, const std::vector<double>& L, const Step_units& u,
+               const std::vector<double>& mass_weight, const std::vector<double>& unknown_scale, double factor, double sys,
+               const Control_matrix& X, const Control_matrix& X0, const std::vector<double>& mu)
   {
     const bool held_changed = mu != formed_mu_;
     const bool form = !(constant_ && formed_) || held_changed;
@@ -89,6 +90,7 @@ public:
             for(Eigen::SparseMatrix<double>::InnerIterator it(extra_, k); it; ++it)   // a 1-ring's pairs: in the pattern
               A_[std::size_t(block_.structure().find(it.row(), it.col()))] += it.value();
       }
+      R_.resize(X.rows(), X.cols());
       step_residual(pattern_, M, L, u.tau, u.omega, X, X0, factor / sys, R_, mass_weight);
     }
     if(held)
@@ -103,10 +105,17 @@ public:
     if(!block_.whole()) block_.gather(R_, B_);
     if(!unknown_scale.empty())
       for(Eigen::Index i = 0; i < B.rows(); ++i) B.row(i) /= std::pow(unknown_scale[std::size_t(block_.free[std::size_t(i)])], 3);
+    choice_.set_step_factor(factor);
+    unknown_scale_ = &unknown_scale;
+  }
+
+  /// Solves the step prepare() formed; `direct`: whether it was factorised.
+  Solve_statistics solve(bool& direct)
+  {
+    Control_matrix& B = block_.whole() ? R_ : B_;
     CGAL::Real_timer clock;
     clock.start();
     // CG warm-started from the last dX
-    choice_.set_step_factor(factor);
     Fourth_order_system* q = fourth_order_.get();
     const Solve_statistics sol = !q ? choice_.solve(block_.structure(), A_, B, dX_, cg_, direct)
       : choice_.solve([q](const Control_matrix& P, Control_matrix& AP) { q->product(P, AP); }, q->diagonal(),
@@ -119,6 +128,11 @@ public:
       std::vector<double>().swap(A_);
       if(q) q->release();
     }
+    // nor its right-hand side, nor the solver's work (made anew for the next)
+    R_.resize(0, 0);
+    B_.resize(0, 0);
+    cg_.release();
+    const std::vector<double>& unknown_scale = *unknown_scale_;
     scaled_ = !unknown_scale.empty();
     if(scaled_)
     {
@@ -155,6 +169,7 @@ private:
   bool constant_, formed_ = false, scaled_ = false;
   double solve_seconds_ = 0;
   Control_matrix R_, B_, dX_, model_dX_;
+  const std::vector<double>* unknown_scale_ = nullptr;   // prepare()'s, read by solve()
   std::vector<double> formed_mu_, held_;
 };
 

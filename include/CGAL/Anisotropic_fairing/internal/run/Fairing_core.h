@@ -333,7 +333,8 @@ private:
     Y = start;
     double limit_weight = 1;
     const bool make = probe && probe->size() == 0;
-    Control_matrix probe_start = probe && !make ? *probe : Control_matrix();
+    Control_matrix probe_start;   // the probe's start, taken out of *probe, which receives its end
+    if(probe && !make) probe_start.swap(*probe);
     const std::function<Control_matrix(const Control_matrix&)> make_probe = [this](const Control_matrix& surface) {
       return this->make_probe(surface);
     };
@@ -343,7 +344,7 @@ private:
                          begin_run(name, order, fixed_steps), tagged, setup_seconds_, limit_weight,
                          probe && !make ? &probe_start : nullptr, probe, make ? &make_probe : nullptr);
     });
-    if(make) probe_start = made_probe_;
+    if(make) probe_start.swap(made_probe_);
     steps_left_ -= (std::min)(steps_left_, r.steps.size());
     if(!loop)
     {

@@ -195,7 +195,8 @@ void select_smoother(Run& run, const Tensor& tensor, const Ghost_layer& layer, c
   report.selected_tensor = "anisotropic";
   if(nothing_to_compare(report, steps_left, choices)) return;
   std::vector<Smoother_candidate> c(3);
-  c[0].name = c[0].label = "anisotropic"; c[0].flow = "anisotropic flow"; c[0].report = report; c[0].Y = X;
+  c[0].name = c[0].label = "anisotropic"; c[0].flow = "anisotropic flow"; c[0].report = report;
+  c[0].Y.swap(X);   // the anisotropic result: c[0]'s until the choice is made
   c[0].probe = anisotropic_probe;
   if(control) c[0].Z = *control;
   c[1].name = c[1].label = "isotropic"; c[1].flow = "isotropic flow";
@@ -214,7 +215,9 @@ void select_smoother(Run& run, const Tensor& tensor, const Ghost_layer& layer, c
   c[1].report = steps_left > 0 ? run_candidate(1, c[1].Y, input, control ? &c[1].Z : nullptr, 0, c[1].flow, known ? &c[1].probe : nullptr)
                                : run_not_made();
   const Smoother_candidate* base = c[1].report.succeeded() ? &c[1] : &c[0];
-  const Control_matrix N = known ? normals : vertex_normals(*layer.topology, layer.real_faces, base->report.succeeded() ? base->Y : input);
+  Control_matrix made_normals;
+  if(!known) made_normals = vertex_normals(*layer.topology, layer.real_faces, base->report.succeeded() ? base->Y : input);
+  const Control_matrix& N = known ? normals : made_normals;
   const Control_matrix probed = probed_input(input, N, sigma, b);
   c[2].probe = probed;
   c[2].report = steps_left > 0 ? run_candidate(2, c[2].Y, input, control ? &c[2].Z : nullptr, 0, c[2].flow, &c[2].probe) : run_not_made();
@@ -229,11 +232,11 @@ void select_smoother(Run& run, const Tensor& tensor, const Ghost_layer& layer, c
     // nothing to compare: the first result that succeeded
     for(std::size_t k = 0; k < c.size() && kept == c.size(); ++k)
       if(c[k].report.succeeded()) kept = k;
-    if(kept == c.size()) return;   // all failed: the anisotropic report says why
+    if(kept == c.size()) { X.swap(c[0].Y); return; }   // all failed: the anisotropic report says why
     choices += std::string("; kept the ") + c[kept].name + " result (no other could be compared)";
   }
-  if(kept == 0) return;
   X.swap(c[kept].Y);
+  if(kept == 0) return;
   if(control) control->swap(c[kept].Z);
   report = c[kept].report;
   report.selected_tensor = c[kept].name;

@@ -160,12 +160,15 @@ public:
     return A_;
   }
 
-  /// Frees what set_operator() formed, and lets go of L.
+  /// Frees what set_operator() formed and the products' scratch, and lets go of M and L.
   void release()
   {
     M_ = L_ = mass_weight_ = nullptr;
     Q_ = A_ = Eigen::SparseMatrix<double>();
     Q_formed_ = A_formed_ = false;
+    full_.resize(0, 0);
+    mass_.resize(0, 0);
+    laplace_.resize(0, 0);
   }
 
   /// R = f tau_i (w_i M (X0 - X) - Q X)_i for all rows.
@@ -177,9 +180,10 @@ public:
     symmetric_product(pattern_, *L_, X, laplace_);
     for(Eigen::Index i = 0; i < X.rows(); ++i) laplace_.row(i) *= inverse_mass_[i];
     symmetric_product(pattern_, *L_, laplace_, full_);   // Q X
-    const Control_matrix D = X0 - X;
-    symmetric_product(pattern_, *M_, D, mass_, *mass_weight_);
+    laplace_ = X0 - X;
+    symmetric_product(pattern_, *M_, laplace_, mass_, *mass_weight_);
     R = t.asDiagonal() * (w.asDiagonal() * mass_ - full_);
+    if(free_.size() == std::size_t(X.rows())) full_.resize(0, 0);   // product() needs it only when rows are held
   }
 
 private:

@@ -165,6 +165,9 @@ public:
     return finish(st, product, B, X, bnorm_, it);
   }
 
+  /// Frees the iterations' vectors (a solve makes them anew).
+  void release() { R_.resize(0, 0); P_.resize(0, 0); AP_.resize(0, 0); }
+
 private:
   // the preconditioner, the first residual and direction, and the norms the iterations are judged by
   template <typename Product>
