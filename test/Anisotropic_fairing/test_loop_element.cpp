@@ -6,6 +6,7 @@
 #include <CGAL/Polyhedron_3.h>
 #include <CGAL/Surface_mesh.h>
 #include <CGAL/boost/graph/IO/polygon_mesh_io.h>
+#include <CGAL/Subdivision_method_3/subdivision_methods_3.h>
 
 #include <CGAL/Anisotropic_fairing/Loop_limit_surface.h>
 #include <CGAL/Anisotropic_fairing/internal/mesh/Indexed_mesh.h>
@@ -16,8 +17,11 @@
 #include "test_support/check.h"
 #include "test_support/mesh_generators.h"
 
+#include <algorithm>
+#include <array>
 #include <cmath>
 #include <iostream>
+#include <set>
 #include <string>
 
 typedef CGAL::Exact_predicates_inexact_constructions_kernel K;
@@ -117,6 +121,55 @@ void test_partition_of_unity(const M& mesh, const std::string& name)
   std::cout << "  (" << cache.number_of_categories() << " categories, " << points << " stencils)\n";
   check_max(value, 1e-14, "value rows sum to 1");
   check_max(deriv, 1e-14, "derivative rows sum to 0");
+}
+
+// ---------------------------------------------------------------------------------------------
+// The cache of a mesh large enough to be built in blocks on every core (Patch_cache.h): each face's ring
+// is its three vertices, then the other vertices of the faces around them, each once (read here from
+// CGAL's own circulators); and its category's local triangles, through the ring, are exactly those faces.
+void test_rings_built_in_blocks(Mesh mesh)
+{
+  CGAL::Subdivision_method_3::Loop_subdivision(mesh, CGAL::parameters::number_of_iterations(1));
+  AF_CHECK(mesh.number_of_faces() >= 20000, "large enough for the blocks");
+  AFi::Indexed_mesh<Mesh> im(mesh);
+  AFi::Patch_cache cache(im.topology());
+  std::size_t wrong_ring = 0, wrong_category = 0;
+  for(Mesh::Face_index f : mesh.faces())
+  {
+    const std::size_t i = std::size_t(f);
+    const int* ring = cache.ring(i);
+    const int m = cache.ring_size(i);
+    std::set<int> vertices(ring, ring + m);
+    std::set<std::array<int, 3>> faces;   // around the face's vertices, each rotated to start at its least vertex
+    std::set<int> expected;
+    std::set<int> corners;
+    for(Mesh::Vertex_index v : CGAL::vertices_around_face(mesh.halfedge(f), mesh))
+    {
+      corners.insert(int(v));
+      for(Mesh::Face_index g : CGAL::faces_around_target(mesh.halfedge(v), mesh))
+      {
+        std::array<int, 3> t;
+        int j = 0;
+        for(Mesh::Vertex_index w : CGAL::vertices_around_face(mesh.halfedge(g), mesh)) { t[std::size_t(j++)] = int(w); expected.insert(int(w)); }
+        std::rotate(t.begin(), std::min_element(t.begin(), t.end()), t.end());
+        faces.insert(t);
+      }
+    }
+    if(m < 3 || corners != std::set<int>(ring, ring + 3) || vertices.size() != std::size_t(m) || vertices != expected) { ++wrong_ring; continue; }
+    std::set<std::array<int, 3>> mapped;
+    const AFi::Loop_local_patch patch = cache.root_patch(cache.category(i));
+    for(const AFi::Patch_cache::Tri& t : patch.triangles())
+    {
+      std::array<int, 3> u = { ring[t[0]], ring[t[1]], ring[t[2]] };
+      std::rotate(u.begin(), std::min_element(u.begin(), u.end()), u.end());
+      mapped.insert(u);
+    }
+    if(cache.category_ring_size(cache.category(i)) != m || mapped != faces) ++wrong_category;
+  }
+  std::cout << "bunny.off, Loop-subdivided once: " << mesh.number_of_faces() << " faces, " << cache.number_of_categories()
+            << " categories; faces with a wrong ring: " << wrong_ring << ", with a wrong category: " << wrong_category << "\n";
+  AF_CHECK(wrong_ring == 0, "every ring is the face's vertices and their neighbours, each once");
+  AF_CHECK(wrong_category == 0, "every category's triangles are the faces around the face");
 }
 
 // ---------------------------------------------------------------------------------------------
@@ -265,6 +318,8 @@ int main(int argc, char** argv)
     // loop-fem.md section 4: the independent prototype found 246 categories on bunny.off
     AF_CHECK(s.number_of_patch_categories() == 246, "246 categories on bunny.off");
   }
+
+  test_rings_built_in_blocks(bunny);
 
   Mesh tet, oct, ico, mixed, torus;
   AF_test::make_tetrahedron(tet);

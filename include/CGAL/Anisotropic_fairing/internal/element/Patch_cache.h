@@ -12,6 +12,7 @@
 #include <CGAL/Anisotropic_fairing/internal/loop/Loop_local_patch.h>
 #include <CGAL/Anisotropic_fairing/internal/element/Quadrature_rules.h>
 #include <CGAL/Anisotropic_fairing/internal/mesh/Triangle_topology.h>
+#include <CGAL/Anisotropic_fairing/internal/types/Parallel_blocks.h>
 
 #include <CGAL/assertions.h>
 
@@ -60,60 +61,39 @@ public:
   {
     const std::size_t nf = (std::min)(faces_to_evaluate, topo.number_of_faces());
     category_.resize(nf);
-    ring_offset_.resize(nf + 1);
-    ring_offset_[0] = 0;
-    ring_ids_.reserve(nf * 13);
-
-    std::vector<int> label(topo.number_of_vertices(), -1);
-    std::vector<int> ring, fan_faces;
-    std::vector<Tri> local;
+    ring_offset_.assign(nf + 1, 0);
+    // a few fixed blocks of faces on every core, each with its own labels and its own table of the
+    // categories it meets; the tables are merged in block order, which numbers the categories as one pass
+    // over the faces would, whatever the number of threads
+    const std::size_t blocks = nf < 20000 ? 1 : 8;
+    std::vector<Block> block(blocks);
+    parallel_blocks(blocks, [&](std::size_t first, std::size_t last) {
+      std::vector<int> label(topo.number_of_vertices(), -1);
+      for(std::size_t b = first; b < last; ++b) categorize(topo, b * nf / blocks, (b + 1) * nf / blocks, label, block[b]);
+    }, std::size_t(1), std::size_t(1));
     std::unordered_map<std::vector<int>, int, Signature_hash> index;
-
-    for(std::size_t f = 0; f < nf; ++f)
+    for(std::size_t b = 0; b < blocks; ++b)
     {
-      ring.clear(); fan_faces.clear(); local.clear();
-      auto label_of = [&](int v) {
-        if(label[v] < 0) { label[v] = int(ring.size()); ring.push_back(v); }
-        return label[v];
-      };
-      const Triangle_topology::Face& t = topo.face(f);
-      for(int k = 0; k < 3; ++k) label_of(t[k]);
-      // fans of a from b, of b from c, of c from a, each counter-clockwise
-      for(int k = 0; k < 3; ++k)
+      std::vector<int> global(block[b].categories.size());
+      for(std::size_t k = 0; k < global.size(); ++k)
       {
-        const int h0 = int(3 * f) + k;
-        int h = h0;
-        do {
-          label_of(topo.target(h));
-          const int g = topo.face_of(h);
-          if(std::find(fan_faces.begin(), fan_faces.end(), g) == fan_faces.end()) fan_faces.push_back(g);
-          h = topo.ccw(h);
-        } while(h != h0);
+        Block::Met& c = block[b].categories[k];
+        auto it = index.find(c.signature);
+        if(it == index.end())
+        {
+          it = index.emplace(std::move(c.signature), int(categories_.size())).first;
+          categories_.emplace_back(new Category{ c.m, std::move(c.tris), {} });
+        }
+        global[k] = it->second;
       }
-      std::vector<int> signature;
-      signature.reserve(3 * fan_faces.size() + 1);
-      for(int g : fan_faces)
-      {
-        const Triangle_topology::Face& q = topo.face(g);
-        Tri r = { label[q[0]], label[q[1]], label[q[2]] };
-        std::rotate(r.begin(), std::min_element(r.begin(), r.end()), r.end());
-        local.push_back(r);
-      }
-      std::sort(local.begin(), local.end());
-      signature.push_back(int(ring.size()));
-      for(const Tri& r : local) signature.insert(signature.end(), r.begin(), r.end());
-
-      auto it = index.find(signature);
-      if(it == index.end())
-      {
-        it = index.emplace(signature, int(categories_.size())).first;
-        categories_.emplace_back(new Category{ int(ring.size()), local, {} });
-      }
-      category_[f] = it->second;
-      ring_ids_.insert(ring_ids_.end(), ring.begin(), ring.end());
-      ring_offset_[f + 1] = ring_ids_.size();
-      for(int v : ring) label[v] = -1;
+      for(std::size_t f = b * nf / blocks; f < (b + 1) * nf / blocks; ++f) category_[f] = global[std::size_t(category_[f])];
     }
+    for(std::size_t f = 0; f < nf; ++f) ring_offset_[f + 1] += ring_offset_[f];
+    ring_ids_.resize(ring_offset_[nf]);
+    parallel_blocks(blocks, [&](std::size_t first, std::size_t last) {
+      for(std::size_t b = first; b < last; ++b)
+        std::copy(block[b].rings.begin(), block[b].rings.end(), ring_ids_.begin() + std::ptrdiff_t(ring_offset_[b * nf / blocks]));
+    }, std::size_t(1), std::size_t(1));
   }
 
   std::size_t number_of_faces() const { return category_.size(); }
@@ -198,6 +178,65 @@ private:
     tile(p.child(CHILD_B), rule, depth_left - 1, o1 + h, o2, h, out);
     tile(p.child(CHILD_C), rule, depth_left - 1, o1, o2 + h, h, out);
     tile(p.child(CHILD_M), rule, depth_left - 1, o1 + h, o2 + h, -h, out);
+  }
+
+  // what one block of faces found: the rings in face order, and the categories in the order met
+  struct Block
+  {
+    struct Met { std::vector<int> signature; int m; std::vector<Tri> tris; };
+    std::vector<int> rings;
+    std::vector<Met> categories;
+  };
+
+  // faces [first, last): each face's ring (its vertices, labelled in the order met), its category in the
+  // block's own table (in category_), its ring's size (in ring_offset_[f + 1])
+  void categorize(const Triangle_topology& topo, std::size_t first, std::size_t last, std::vector<int>& label, Block& block)
+  {
+    std::vector<int> ring, fan_faces, signature;
+    std::vector<Tri> local;
+    std::unordered_map<std::vector<int>, int, Signature_hash> index;
+    for(std::size_t f = first; f < last; ++f)
+    {
+      ring.clear(); fan_faces.clear(); local.clear(); signature.clear();
+      auto label_of = [&](int v) {
+        if(label[v] < 0) { label[v] = int(ring.size()); ring.push_back(v); }
+        return label[v];
+      };
+      const Triangle_topology::Face& t = topo.face(f);
+      for(int k = 0; k < 3; ++k) label_of(t[k]);
+      // fans of a from b, of b from c, of c from a, each counter-clockwise
+      for(int k = 0; k < 3; ++k)
+      {
+        const int h0 = int(3 * f) + k;
+        int h = h0;
+        do {
+          label_of(topo.target(h));
+          const int g = topo.face_of(h);
+          if(std::find(fan_faces.begin(), fan_faces.end(), g) == fan_faces.end()) fan_faces.push_back(g);
+          h = topo.ccw(h);
+        } while(h != h0);
+      }
+      for(int g : fan_faces)
+      {
+        const Triangle_topology::Face& q = topo.face(g);
+        Tri r = { label[q[0]], label[q[1]], label[q[2]] };
+        std::rotate(r.begin(), std::min_element(r.begin(), r.end()), r.end());
+        local.push_back(r);
+      }
+      std::sort(local.begin(), local.end());
+      signature.push_back(int(ring.size()));
+      for(const Tri& r : local) signature.insert(signature.end(), r.begin(), r.end());
+      auto it = index.find(signature);
+      if(it == index.end())
+      {
+        it = index.emplace(signature, int(block.categories.size())).first;
+        block.categories.push_back({ signature, int(ring.size()), local });
+      }
+      category_[f] = it->second;
+      block.rings.insert(block.rings.end(), ring.begin(), ring.end());
+      ring_offset_[f + 1] = ring.size();
+      for(int v : ring) label[v] = -1;
+    }
   }
 
   struct Signature_hash

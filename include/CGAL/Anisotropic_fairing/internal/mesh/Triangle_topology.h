@@ -15,7 +15,6 @@
 #include <cstdint>
 #include <limits>
 #include <string>
-#include <unordered_map>
 #include <vector>
 
 namespace CGAL {
@@ -124,27 +123,39 @@ private:
                           std::to_string(t[0] == t[1] || t[0] == t[2] ? t[0] : t[1]) + " twice");
     }
 
-    std::unordered_map<std::uint64_t, int> directed;
-    directed.reserve(nh * 2);
+    // each vertex's outgoing halfedges, in increasing order (CSR): a directed edge (s, t) is looked up
+    // among the few of s
+    for(std::size_t h = 0; h < nh; ++h) ++outgoing_count[std::size_t(source(int(h)))];
+    std::vector<std::size_t> first(n_vertices_ + 1, 0);
+    for(std::size_t v = 0; v < n_vertices_; ++v) first[v + 1] = first[v] + std::size_t(outgoing_count[v]);
+    std::vector<int> outgoing(nh);
+    {
+      std::vector<std::size_t> fill(first.begin(), first.end() - 1);
+      for(int h = 0; h < int(nh); ++h) outgoing[fill[std::size_t(source(h))]++] = h;
+    }
+    const auto find = [&](int s, int t, int before) {   // the first halfedge s -> t below `before`, or -1
+      for(std::size_t k = first[std::size_t(s)]; k < first[std::size_t(s) + 1] && outgoing[k] < before; ++k)
+        if(target(outgoing[k]) == t) return outgoing[k];
+      return -1;
+    };
     for(int h = 0; h < int(nh); ++h)
     {
       const int s = source(h), t = target(h);
-      if(!directed.emplace(key(s, t), h).second)
+      if(find(s, t, h) >= 0)
         throw Input_error(Input_error::NON_MANIFOLD_EDGE, std::size_t(s),
                           "the edge between vertices " + std::to_string(s) + " and " + std::to_string(t) +
                           " is used by more than two faces, twice in the same direction, or twice");
       out_[s] = h;
-      ++outgoing_count[s];
     }
     for(int h = 0; h < int(nh); ++h)
     {
-      auto it = directed.find(key(target(h), source(h)));
-      if(it == directed.end() && !is_closed(source(h)) && !is_closed(target(h))) continue;   // ghost border
-      if(it == directed.end())
+      const int o = find(target(h), source(h), int(nh));
+      if(o < 0 && !is_closed(source(h)) && !is_closed(target(h))) continue;   // ghost border
+      if(o < 0)
         throw Input_error(Input_error::BORDER_EDGE, std::size_t(source(h)),
                           "the edge between vertices " + std::to_string(source(h)) + " and " +
                           std::to_string(target(h)) + " is a border edge; this operation needs a closed mesh");
-      opposite_[h] = it->second;
+      opposite_[h] = o;
     }
 
     outgoing_count_ = std::move(outgoing_count);
