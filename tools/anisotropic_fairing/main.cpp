@@ -13,6 +13,7 @@
 // (the failure contract of tool_common.h: one line on stderr, exit 1 or 2, a report on failure too).
 
 #include "fairing_run.h"
+#include "huge_pages.h"
 #include "json_report.h"
 #include "mesh_io.h"
 #include "options.h"
@@ -36,6 +37,7 @@ double af_tool::elapsed_seconds()
 int main(int argc, char** argv)
 {
   using namespace af_tool;
+  start_with_huge_pages(argv);
   Options o;
   Run_record r;
   int exit_code = 1;

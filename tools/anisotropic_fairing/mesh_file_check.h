@@ -37,6 +37,7 @@ struct Polygon_soup
   std::vector<std::vector<std::size_t> > faces;
   std::vector<std::string> face_place;   // "line 12" (text), "face 7", "triangle 3 of strip 0" (binary) ...
   bool ply_strips = false;                // the faces came from a PLY "tristrips" element
+  bool positions_and_faces_only = false;  // PLY: nothing else that CGAL's reader keeps, positions as it reads them
   std::size_t merged_points = 0;          // STL: corners merged into a point they coincide with
   std::vector<std::string> warnings;      // what the file holds that will not be kept
   // NaN or infinite values of the properties of an ASCII PLY file that are not coordinates: carried

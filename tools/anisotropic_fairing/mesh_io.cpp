@@ -179,6 +179,22 @@ bool ply_is_binary(const std::string& path)
   return false;
 }
 
+// The comments of a PLY header as CGAL's reader keeps them: the rest of each "comment" line after the
+// third, a line each
+std::string ply_header_comments(const std::string& path)
+{
+  std::ifstream in(path, std::ios::binary);
+  std::string line, keyword, comments;
+  for(int number = 1; std::getline(in, line); ++number)
+  {
+    std::istringstream words(line);
+    if(!(words >> keyword) || number <= 2) continue;
+    if(keyword == "end_header") break;
+    if(keyword == "comment" && line.size() > 8) comments += line.substr(8) + "\n";
+  }
+  return comments;
+}
+
 // An ASCII PLY file whose properties hold NaN or infinity (never its coordinates: the check refuses
 // those): CGAL's ASCII reader cannot read them, so it reads the text with 0 in their place, and the
 // values are then put back into their properties, to be written as they were.
@@ -288,7 +304,10 @@ bool stoff_without_colors(const std::string& path, std::string& patched)
 void add_soup_faces(const af_tool::Polygon_soup& soup, Mesh& mesh)
 {
   if(mesh.number_of_vertices() == 0)
+  {
+    mesh.reserve(Mesh::size_type(soup.points.size()), Mesh::size_type(2 * soup.faces.size()), Mesh::size_type(soup.faces.size()));
     for(const auto& p : soup.points) mesh.add_vertex(Point(p[0], p[1], p[2]));
+  }
   std::vector<Vertex_index> face;
   for(const auto& f : soup.faces)
   {
@@ -363,7 +382,14 @@ void read_input(const std::string& path, Mesh& mesh, Input_info& info, bool repa
     else if(info.format == Format::PLY)
     {
       info.ply_binary = ply_is_binary(path);
-      if(soup.nonfinite.empty())
+      if(soup.positions_and_faces_only)
+      {
+        // nothing but what the check read: the mesh from it, without parsing the file again
+        add_soup_faces(soup, mesh);
+        info.ply_comments = ply_header_comments(path);
+        ok = true;
+      }
+      else if(soup.nonfinite.empty())
       {
         std::ifstream in(path, std::ios::binary);
         ok = CGAL::IO::read_PLY(in, mesh, info.ply_comments, false);  // keeps every property as v:<name>, f:<name>

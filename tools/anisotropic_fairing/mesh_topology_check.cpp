@@ -45,9 +45,23 @@ void check_oriented_manifold(const Polygon_soup& soup)
       edges.push_back({std::min(a, b), std::max(a, b), f, k, a < b});
     }
   }
-  std::sort(edges.begin(), edges.end(), [](const Half_edge& x, const Half_edge& y) {
-    return std::tie(x.low, x.high, x.face) < std::tie(y.low, y.high, y.face);
-  });
+  // sorted by (low, high, face): placed by low (in face order), then each vertex's few sorted by high, stably
+  {
+    std::vector<std::size_t> at(soup.points.size() + 1, 0);
+    for(const Half_edge& e : edges) ++at[e.low + 1];
+    std::partial_sum(at.begin(), at.end(), at.begin());
+    std::vector<Half_edge> placed(edges.size());
+    for(const Half_edge& e : edges) placed[at[e.low]++] = e;
+    edges.swap(placed);
+    for(std::size_t v = 0, begin = 0; v < soup.points.size(); begin = at[v++])
+      for(std::size_t i = begin + 1; i < at[v]; ++i)   // insertion: a vertex has a few
+      {
+        const Half_edge x = edges[i];
+        std::size_t j = i;
+        for(; j > begin && edges[j - 1].high > x.high; --j) edges[j] = edges[j - 1];
+        edges[j] = x;
+      }
+  }
 
   std::vector<std::size_t> parent(first_corner.back());
   std::iota(parent.begin(), parent.end(), std::size_t(0));
@@ -56,9 +70,9 @@ void check_oriented_manifold(const Polygon_soup& soup)
   {
     std::size_t j = i + 1;
     while(j < edges.size() && edges[j].low == edges[i].low && edges[j].high == edges[i].high) ++j;
-    const std::string edge = "the edge between vertices " + std::to_string(edges[i].low) + " and " + std::to_string(edges[i].high);
+    const auto edge = [&] { return "the edge between vertices " + std::to_string(edges[i].low) + " and " + std::to_string(edges[i].high); };
     if(j - i > 2)
-      fail(edge + " is shared by " + std::to_string(j - i) + " faces (" + face_name(edges[i].face) + ", " +
+      fail(edge() + " is shared by " + std::to_string(j - i) + " faces (" + face_name(edges[i].face) + ", " +
            face_name(edges[i + 1].face) + ", " + face_name(edges[i + 2].face) + (j - i > 3 ? ", ..." : "") +
            "): the mesh is not a 2-manifold");
     if(j - i == 2)

@@ -161,6 +161,21 @@ void check_types_cgal_reads(const std::string& path, const std::vector<Ply_eleme
   }
 }
 
+// Whether the file holds positions and faces and nothing else CGAL's reader would keep, with positions that
+// read here to the values CGAL reads (binary, or text of doubles: CGAL reads a float in text as a float)
+bool positions_and_faces_only(const std::vector<Ply_element>& elements, Ply_encoding encoding)
+{
+  if(elements.size() != 2 || elements[0].name != "vertex" || elements[1].name != "face") return false;
+  const std::vector<Ply_property>& v = elements[0].properties;
+  const std::vector<Ply_property>& f = elements[1].properties;
+  if(v.size() != 3 || f.size() != 1 || !f[0].count_size || (f[0].name != "vertex_indices" && f[0].name != "vertex_index")) return false;
+  for(int c = 0; c < 3; ++c)
+    if(v[std::size_t(c)].count_size || v[std::size_t(c)].name != std::string(1, char('x' + c)) || !v[std::size_t(c)].is_float ||
+       (encoding == Ply_encoding::ASCII && v[std::size_t(c)].size != 8))
+      return false;
+  return true;
+}
+
 } // namespace
 
 Polygon_soup read_checked_ply(const std::string& path, const std::string& text)
@@ -223,6 +238,7 @@ Polygon_soup read_checked_ply(const std::string& path, const std::string& text)
   check_types_cgal_reads(path, elements);
 
   Polygon_soup soup;
+  soup.positions_and_faces_only = positions_and_faces_only(elements, encoding);
   std::size_t vertices = 0;
   for(const Ply_element& e : elements)
     if(e.name == "vertex") vertices = std::size_t(e.count);
@@ -247,6 +263,7 @@ Polygon_soup read_checked_ply(const std::string& path, const std::string& text)
     if(is_vertex && (coordinate[0] < 0 || coordinate[1] < 0 || coordinate[2] < 0))
       throw File_problem(path + ": the vertex element has no x, y and z");
     if(is_vertex) soup.points.resize(std::size_t(e.count));
+    if(is_face) { soup.faces.reserve(std::size_t(e.count)); soup.face_place.reserve(std::size_t(e.count)); }
     for(unsigned long long i = 0; i < e.count; ++i)
     {
       const std::string where = e.name + " " + std::to_string(i);
@@ -265,8 +282,9 @@ Polygon_soup read_checked_ply(const std::string& path, const std::string& text)
         }
         const double n = values.value(p.count_size, false, p.count_signed, where);
         if(n < 0) values.fail(where + ": a list of " + std::to_string(static_cast<long long>(n)) + " items");
-        check_count(path, where + ": property '" + p.name + "' lists", static_cast<unsigned long long>(n), "values", values.left(),
-                    std::size_t(encoding == Ply_encoding::ASCII ? 1 : p.size));
+        const std::size_t each = std::size_t(encoding == Ply_encoding::ASCII ? 1 : p.size);
+        if(static_cast<unsigned long long>(n) > values.left() / each)   // (the message made only then)
+          check_count(path, where + ": property '" + p.name + "' lists", static_cast<unsigned long long>(n), "values", values.left(), each);
         if(int(k) == list) index.clear();
         for(std::size_t j = 0; j < std::size_t(n); ++j)
         {
