@@ -161,7 +161,7 @@ inline std::string automatic_choices(const Noise_estimate& noise, const Stepper_
 struct Fairing_input
 {
   const Ghost_layer& layer;            // read by the constructor only
-  const Control_matrix& points;        // n x 3
+  const Control_matrix& points;        // n x 3, read by the constructor only
   const Control_matrix& attributes;    // n x d, in their own units (d = 0: none faired)
   const std::vector<bool>& held;       // the caller's constrained vertices
   bool wants_control = false;          // the control values of the result are asked for
@@ -186,11 +186,12 @@ public:
                const std::function<bool(const Fairing_step&)>& callback)
     : in_(in), given_(given), s_(given.settings), tensor_(tensor), callback_(callback), n_(std::size_t(in.points.rows())),
       setup_(started_timer()), ordering_(make_locality_ordering(in.layer)), layer_(ordering_.layer)
-  {}
+  {
+    number_rows();   // after this, the run reads neither in.layer nor in.points
+  }
 
   Fairing_result run()
   {
-    number_rows();
     estimate_noise();
     choose_automatically();
     if(given_.element == Finite_element::LOOP)

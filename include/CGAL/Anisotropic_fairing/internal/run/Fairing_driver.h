@@ -54,7 +54,7 @@ Fairing_report fair_with_options(TriangleMesh& tm, VertexPointMap vpm, Attribute
 
   // input, read and checked before anything is touched
   Mesh im(tm, Borders::GHOSTED, true);   // isolated vertices: held, never written
-  const Control_matrix P = im.read_points(vpm);
+  Control_matrix P = im.read_points(vpm);
   const Control_matrix A = mode == Attribute_mode::GEOMETRY_ONLY ? Control_matrix() : read_attribute_columns(im, attributes);
   const double largest = A.size() > 0 ? A.cwiseAbs().maxCoeff() : 0.0;
   // coupled, the weighted attributes are coordinates of the manifold: the same range as the points
@@ -70,7 +70,8 @@ Fairing_report fair_with_options(TriangleMesh& tm, VertexPointMap vpm, Attribute
   const Fairing_input in{ im.ghost_layer(), P, A, held, bool(hooks.control_point) || bool(hooks.attribute_control) };
   const double input_seconds = total.time();
   Fairing_core<Tensor> core(in, given, tensor, hooks.callback);
-  im.release_ghost_layer();   // the run has its own numbering's
+  im.release_ghost_layer();   // the run has its own numbering's, and its own copy of the points
+  P.resize(0, 0);
   Fairing_result result = core.run();
   Fairing_report& report = result.report;
   report.input_seconds = input_seconds;

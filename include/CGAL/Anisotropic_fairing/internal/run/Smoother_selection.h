@@ -196,9 +196,9 @@ void select_smoother(Run& run, const Tensor& tensor, const Ghost_layer& layer, c
   if(nothing_to_compare(report, steps_left, choices)) return;
   std::vector<Smoother_candidate> c(3);
   c[0].name = c[0].label = "anisotropic"; c[0].flow = "anisotropic flow"; c[0].report = report;
-  c[0].Y.swap(X);   // the anisotropic result: c[0]'s until the choice is made
+  c[0].Y.swap(X);   // the anisotropic result (and its control points): c[0]'s until the choice is made
   c[0].probe = anisotropic_probe;
-  if(control) c[0].Z = *control;
+  if(control) c[0].Z.swap(*control);
   c[1].name = c[1].label = "isotropic"; c[1].flow = "isotropic flow";
   c[2].name = "uniform"; c[2].label = "uniform fourth-order"; c[2].flow = "uniform fourth-order flow";
   const auto run_candidate = [&](std::size_t k, Control_matrix& Y, const Control_matrix& start, Control_matrix* Z, std::size_t steps,
@@ -232,12 +232,17 @@ void select_smoother(Run& run, const Tensor& tensor, const Ghost_layer& layer, c
     // nothing to compare: the first result that succeeded
     for(std::size_t k = 0; k < c.size() && kept == c.size(); ++k)
       if(c[k].report.succeeded()) kept = k;
-    if(kept == c.size()) { X.swap(c[0].Y); return; }   // all failed: the anisotropic report says why
+    if(kept == c.size())   // all failed: the anisotropic report says why
+    {
+      X.swap(c[0].Y);
+      if(control) control->swap(c[0].Z);
+      return;
+    }
     choices += std::string("; kept the ") + c[kept].name + " result (no other could be compared)";
   }
   X.swap(c[kept].Y);
-  if(kept == 0) return;
   if(control) control->swap(c[kept].Z);
+  if(kept == 0) return;
   report = c[kept].report;
   report.selected_tensor = c[kept].name;
 }
