@@ -91,7 +91,6 @@ Obj_texcoords read_obj_texcoords(const std::string& path, std::size_t mesh_verti
   return t;
 }
 
-// What CGAL's OBJ reader drops (it reads only v and f): look for vn, vt and per-vertex colours.
 void scan_obj(const std::string& path, bool& normals, bool& textures, bool& colors)
 {
   normals = textures = colors = false;
