@@ -92,7 +92,7 @@ struct Fairing_step
   int solver_iterations = 0;    ///< CG iterations (the largest over the columns), 1 for a direct solve
   double residual = 0;          ///< largest relative residual \f$\|b - AX\|/\|b\|\f$ over the columns
   double area = 0;              ///< area of the surface
-  double energy = 0;            ///< \f$\mathrm{trace}(X^T L(D) X)\f$: the Dirichlet energy (2 area when D = I)
+  double energy = 0;            ///< \f$\mathrm{trace}(X^T L(D) X)\f$: the Dirichlet energy (2 area when D = I); for the last step of a run whose tensor reads a prefiltered surface, D is read on the \f$M_\varepsilon\f$ the step was taken from (the surface's own would cost a prefilter solve that no step uses)
   double H_integral = 0;        ///< \f$\int |H|^2 dA\f$ (mean-curvature vector H, \f$\Delta x = 2H\f$)
   double max_displacement = 0;  ///< \f$\max_i |x_i(t_n) - x_i(0)|\f$ over the control points, model units
   double step_displacement = 0; ///< \f$\max_i |x_i(t_n) - x_i(t_{n-1})|\f$, model units

@@ -51,18 +51,32 @@ public:
   /// M and L(D) at X (`with_matrices` false: the statistics only, and M and L are no surface's until
   /// restore() or the next assembly with matrices). On failure of the prefilter, error() says why and the
   /// matrices are those of the tensor read on the current surface.
+  ///
+  /// Statistics only, after an assembly with matrices: the tensor is read on that assembly's M_eps, the one
+  /// the step to X was taken from. X's own M_eps would cost a prefilter solve and an isotropic assembly
+  /// that no step uses (a run's last surface, a candidate judged for its geometry), and only the energy,
+  /// of all the statistics, depends on the tensor.
   template <typename Tensor>
   Assembly_statistics assemble(const Control_matrix& X, int metric_columns, const Tensor& tensor, bool with_matrices)
   {
-    assembler_.set_prefiltered(nullptr);
+    const bool isotropic_ready = isotropic_ready_;
+    isotropic_ready_ = false;
     error_.clear();
+    if(!with_matrices && prefiltered_valid_)
+    {
+      assembler_.set_prefiltered(&prefiltered_X_);
+      const Assembly_statistics a = assembler_.assemble(X, metric_columns, tensor, M_, L_, false);
+      assembler_.set_prefiltered(nullptr);
+      return a;
+    }
+    assembler_.set_prefiltered(nullptr);
     prefiltered_valid_ = false;
     if(prefilter_ && block_ && block_->size() > 0)
     {
       // the isotropic M and L in M_ and L_ (no two more arrays of the pattern's size), which the tensor's
       // own assembly then overwrites, or leaves as scratch when it computes statistics only
       overwritten_ = true;
-      assembler_.assemble(X, metric_columns, Isotropic_diffusion_tensor(), M_, L_);
+      if(!isotropic_ready) assembler_.assemble(X, metric_columns, Isotropic_diffusion_tensor(), M_, L_);
       Control_matrix& dX = prefilter_dX_;   // warm start: the last M_eps's displacement
       const Solve_statistics sol = prefilter_step(assembler_.pattern(), M_, L_, eps_, *block_, prefilter_A_, X, metric_columns,
                                                   prefilter_solver_, *prefilter_choice_, *prefilter_cg_, dX);
@@ -84,8 +98,19 @@ public:
     return a;
   }
 
+  /// The isotropic M and L at X and their statistics, before the prefilter's times are known (they follow
+  /// from the surface's units): the next assemble(), which must be at the same X, starts its prefilter from them.
+  Assembly_statistics assemble_isotropic(const Control_matrix& X, int metric_columns)
+  {
+    const Assembly_statistics a = assembler_.assemble(X, metric_columns, Isotropic_diffusion_tensor(), M_, L_);
+    isotropic_ready_ = true;
+    return a;
+  }
+  /// ... unless the run ends before it
+  void discard_isotropic() { isotropic_ready_ = false; }
+
   const std::string& error() const { return error_; }
-  /// M_eps of the last assembly, or null
+  /// M_eps of the last assembly with matrices, or null
   const Control_matrix* prefiltered() const { return prefiltered_valid_ ? &prefiltered_X_ : nullptr; }
 
   /// Before a candidate is assembled: keeps the accepted surface's M_eps aside.
@@ -113,6 +138,7 @@ private:
   Fem_assembler<Cache> assembler_;
   std::vector<double> M_, L_;
   bool overwritten_ = false;   // M_ and L_ were assembled since save()
+  bool isotropic_ready_ = false;   // M_ and L_ are the isotropic ones at the next assemble()'s X
   std::vector<double> eps_;   // prefilter time per row
   bool prefilter_ = false;
   const Free_block* block_ = nullptr;

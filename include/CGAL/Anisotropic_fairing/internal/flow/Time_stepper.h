@@ -150,7 +150,9 @@ private:
     prefilter.direct = s.direct_solver;
     std::vector<double> eps(std::size_t(X.rows()), scaled_tensor ? 0.0 : prefilter_time(tensor));   // the prefilter time per row
     std::vector<double> m, l;
-    if(scaled_tensor) a = operator_.assembler().assemble(X, metric_columns, Isotropic_diffusion_tensor(), m, l, false);
+    // a prefilter's time follows from the units: then the isotropic M and L of the units are its start
+    if(scaled_tensor && prefilter_time(tensor) > 0) a = operator_.assemble_isotropic(X, metric_columns);
+    else if(scaled_tensor) a = operator_.assembler().assemble(X, metric_columns, Isotropic_diffusion_tensor(), m, l, false);
     else
     {
       operator_.set_prefilter(eps, &block_, prefilter);
@@ -159,6 +161,7 @@ private:
     for(std::size_t c = 0; c < a.component_area.size(); ++c)
       if(!(a.component_area[c] > 0) || !std::isfinite(a.component_area[c]) || !(component_edge_[c] > 0))
       {
+        operator_.discard_isotropic();
         fail(report, Fairing_status::DEGENERATE_METRIC, "the input's limit surface has no area" +
              (components_.count > 1 ? " in connected component " + std::to_string(c) : std::string()) +
              " (sqrt(det G) <= 0 on face " + std::to_string(a.degenerate_face) + "): its control points do not span a surface", total);
