@@ -187,9 +187,12 @@ private:
     Z0_ = Z;
     time_unit_ = s_.stopping.relative_units ? std::pow(report_.scale, s_.order) : 1.0;
     monitor_.emplace(s_.stopping, a.H_integral);
-    initial_ = AFI::Surface_soundness{ a, 0, 0, true };
+    initial_ = AFI::Surface_soundness();
+    initial_.statistics = a;
     count_folds(Z, initial_);
-    input_folds_ = folds_of(Z0_).folded_edges;
+    const AFI::Surface_soundness input = folds_of(Z0_);
+    input_folds_ = input.folded_edges;
+    input_fold_edges_ = input.folded_edge_list;
     accepted_ = initial_;
     lowest_H_.emplace(a);
     allowed_folds_ = std::max(input_folds_, initial_.folded_edges);
@@ -303,7 +306,17 @@ private:
     AFI::Step_verdict verdict = AFI::Step_verdict::SOUND;
     bool saved = false;
     if(candidate_.finite) count_folds(Zc_, candidate_);
-    if(candidate_.finite && AFI::edges_folded(accepted_, input_folds_, candidate_, why)) verdict = AFI::Step_verdict::UNSOUND;
+    // where the accepted surface or the input was folded (the library's Fold_sites; every process has the
+    // whole mesh), and no more folded edges than the run may end with
+    const AFI::Known_fold_places known = [this](const AFI::Surface_soundness& c) {
+      if(c.folded_edges > allowed_folds_) return false;
+      AFI::Fold_sites sites(*in_.layer.topology, in_.layer.real_faces);
+      sites.add(accepted_.folded_edge_list, accepted_.statistics.reversed_face_list);
+      sites.add(input_fold_edges_, {});
+      sites.widen();
+      return sites.hold(c);
+    };
+    if(candidate_.finite && AFI::edges_folded(accepted_, input_folds_, candidate_, why, known)) verdict = AFI::Step_verdict::UNSOUND;
     else
     {
       op_.save();
@@ -318,7 +331,7 @@ private:
         }
         candidate_.finite = finite_everywhere(comm_, d_, s_.measure_limit_surface ? Y_ : Zc_);
       }
-      verdict = AFI::judge_step(initial_, accepted_, input_folds_, *lowest_H_, candidate_, why);
+      verdict = AFI::judge_step(initial_, accepted_, input_folds_, *lowest_H_, candidate_, why, known);
     }
     pending_assemble_seconds_ = clock.time();
     timing_.judge_seconds += clock.time();
@@ -430,6 +443,7 @@ private:
   std::optional<AFI::Lowest_curvature> lowest_H_;
   AFI::Surface_soundness initial_, accepted_, candidate_;
   std::size_t input_folds_ = 0, allowed_folds_ = 0, unfolded_steps_ = 0;
+  std::vector<int> input_fold_edges_;   // the input mesh's folded edges (a halfedge of each)
   AFI::Step_controller control_;
   std::string last_why_;
   Flow_timing timing_;

@@ -17,6 +17,7 @@
 #include "Distributed_solver.h"
 #include "Face_partition.h"
 #include "Ghosted_rows.h"
+#include "Surface_folds.h"
 
 #include <CGAL/Anisotropic_fairing/Isotropic_diffusion_tensor.h>
 #include <CGAL/Anisotropic_fairing/internal/assembly/Fem_assembly.h>
@@ -45,6 +46,7 @@ inline AFI::Assembly_statistics reduce_statistics(MPI_Comm comm, const AFI::Asse
   r.area = t[0]; r.energy = t[1]; r.H_integral = t[2]; r.bounded_H_integral = t[3];
   r.degenerate_points = std::size_t(t[4]); r.reversed_faces = std::size_t(t[5]); r.bent_faces = std::size_t(t[6]);
   r.component_area.assign(t.begin() + 7, t.end());
+  r.reversed_face_list = gather_everywhere(comm, a.reversed_face_list);
   // the degenerate face named: the lowest-numbered of those found
   unsigned long long face = a.degenerate ? a.degenerate_face : std::numeric_limits<unsigned long long>::max(), lowest = face;
   MPI_Allreduce(&face, &lowest, 1, MPI_UNSIGNED_LONG_LONG, MPI_MIN, comm);

@@ -44,19 +44,38 @@ inline bool finite_everywhere(MPI_Comm comm, const Distributed_layout& d, const 
   return all == 1;
 }
 
+/// Every process's entries of `mine` (a few folds: numbers of the whole mesh), in the order of the
+/// processes, on every process.
+template <typename T>
+std::vector<T> gather_everywhere(MPI_Comm comm, const std::vector<T>& mine)
+{
+  int processes = 1;
+  MPI_Comm_size(comm, &processes);
+  const int bytes = int(mine.size() * sizeof(T));
+  const std::size_t n = std::size_t(processes);
+  std::vector<int> counts(n, 0), offsets(n, 0);
+  MPI_Allgather(&bytes, 1, MPI_INT, counts.data(), 1, MPI_INT, comm);
+  for(std::size_t p = 1; p < counts.size(); ++p) offsets[p] = offsets[p - 1] + counts[p - 1];
+  std::vector<T> all(std::size_t(offsets.back() + counts.back()) / sizeof(T));
+  MPI_Allgatherv(mine.data(), bytes, MPI_BYTE, all.data(), counts.data(), offsets.data(), MPI_BYTE, comm);
+  return all;
+}
+
 /// The folded (120 degrees) and nearly folded (110 degrees) edges of the mesh of P (owned and overlap rows),
-/// every process's; as the library's count_folds does on one machine.
+/// every process's, and where the folded ones are; as the library's count_folds does on one machine.
 inline void count_distributed_folds(MPI_Comm comm, const AFI::Ghost_layer& layer, const Distributed_layout& d,
                                     const std::vector<int>& face_component, const std::vector<double>& edge,
                                     const Control_matrix& P, AFI::Surface_soundness& s)
 {
+  std::vector<int> where;
   unsigned long long mine[2] = {
-    AFI::count_folded_edges(*layer.topology, layer.real_faces, P, face_component, edge, AFI::turn_120, &d.owned_faces),
+    AFI::count_folded_edges(*layer.topology, layer.real_faces, P, face_component, edge, AFI::turn_120, &d.owned_faces, &where),
     AFI::count_folded_edges(*layer.topology, layer.real_faces, P, face_component, edge, AFI::turn_110, &d.owned_faces) };
   unsigned long long all[2] = { 0, 0 };
   MPI_Allreduce(mine, all, 2, MPI_UNSIGNED_LONG_LONG, MPI_SUM, comm);
   s.folded_edges = std::size_t(all[0]);
   s.bent_edges = std::size_t(all[1]);
+  s.folded_edge_list = gather_everywhere(comm, where);
 }
 
 } // namespace af_distributed

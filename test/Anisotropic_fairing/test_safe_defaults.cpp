@@ -1,5 +1,5 @@
 // The default run (no named parameters) and the step control that keeps every run sound: a
-// constructed fold is seen; the stress cases of the safe-defaults issue never end in `success` with a
+// constructed fold is seen; folds where the surface was already folded do not reject a step; the stress cases of the safe-defaults issue never end in `success` with a
 // folded, collapsed, unmoved or non-finite surface; noise-free meshes are left nearly alone; several
 // components are each faired as if alone; zero-area faces are faired; the noise estimate recovers the
 // deviation of generated noise; and the default run denoises the Fandisk0.3 pair.
@@ -117,6 +117,71 @@ void constructed_fold()
                                                              .stopping_criteria(AF::Stopping_criteria::none()));
   check_sound("bunny, tau = 0.1 l^2 x 3 steps", bunny, m, r);
   AF_CHECK(r.rejected_steps > 0, "the folding steps were rejected");
+}
+
+// a flat n x n grid of vertices, two triangles a square; the halfedge of the diagonal of square (i, j)
+namespace AFI = CGAL::Anisotropic_fairing::internal;
+struct Grid
+{
+  static constexpr int n = 20;
+  std::vector<AFI::Triangle_topology::Face> faces;
+  Grid()
+  {
+    for(int j = 0; j + 1 < n; ++j)
+      for(int i = 0; i + 1 < n; ++i)
+      {
+        const int v = j * n + i;
+        faces.push_back({ { v, v + 1, v + n + 1 } });
+        faces.push_back({ { v, v + n + 1, v + n } });
+      }
+  }
+  static int diagonal(int i, int j) { return 3 * 2 * (j * (n - 1) + i) + 2; }   // (v + n + 1, v) in the first face
+};
+
+void known_fold_places()
+{
+  // A candidate with more folds than the accepted surface had near-folds is rejected, unless all of them lie
+  // where the accepted surface or the input was folded (within two rings): an input's tangle
+  const Grid grid;
+  const AFI::Triangle_topology topo(std::size_t(Grid::n * Grid::n), grid.faces, 0, false);
+  const std::size_t real_faces = grid.faces.size();
+  AF_CHECK(topo.opposite(Grid::diagonal(2, 2)) >= 0, "the diagonal is an interior edge");
+  AFI::Surface_soundness accepted, candidate;
+  accepted.folded_edges = accepted.bent_edges = 1;
+  accepted.folded_edge_list = { Grid::diagonal(2, 2) };
+  const std::vector<int> input_folds = { Grid::diagonal(14, 14) };
+  const auto known = [&](const AFI::Surface_soundness& c) {
+    AFI::Fold_sites sites(topo, real_faces);
+    sites.add(accepted.folded_edge_list, accepted.statistics.reversed_face_list);
+    sites.add(input_folds, {});
+    sites.widen();
+    return sites.hold(c);
+  };
+  const AFI::Lowest_curvature lowest(accepted.statistics);
+  struct Case { std::vector<int> edges; std::vector<std::size_t> faces; bool sound; const char* what; };
+  const std::vector<Case> cases = {
+    { { Grid::diagonal(2, 2), Grid::diagonal(3, 3) }, {}, true, "two folds at and next to the accepted surface's fold" },
+    { { Grid::diagonal(2, 2), Grid::diagonal(14, 15) }, { 2 * std::size_t(13 * (Grid::n - 1) + 13) }, true,
+      "folds and a reversed face at the accepted fold and near the input's" },
+    { { Grid::diagonal(2, 2), Grid::diagonal(8, 8) }, {}, false, "a fold four rings away from every known place" },
+    { { Grid::diagonal(2, 2) }, { 2 * std::size_t(8 * (Grid::n - 1) + 8) }, false, "a face reversed away from them" },
+  };
+  for(const Case& c : cases)
+  {
+    candidate = AFI::Surface_soundness();
+    candidate.folded_edges = c.edges.size();
+    candidate.folded_edge_list = c.edges;
+    candidate.statistics.reversed_faces = c.faces.size();
+    candidate.statistics.reversed_face_list = c.faces;
+    std::string why;
+    const AFI::Step_verdict v = AFI::judge_step(accepted, accepted, 1, lowest, candidate, why, known);
+    const AFI::Step_verdict counted = AFI::judge_step(accepted, accepted, 1, lowest, candidate, why);
+    std::printf("%s: %s (by number only: %s)\n", c.what, v == AFI::Step_verdict::SOUND ? "sound" : "unsound",
+                counted == AFI::Step_verdict::SOUND ? "sound" : "unsound");
+    AF_CHECK((v == AFI::Step_verdict::SOUND) == c.sound, c.what);
+    AF_CHECK(counted == AFI::Step_verdict::UNSOUND, "more folds than near-folds: unsound by number");
+    AF_CHECK(AFI::edges_folded(accepted, 1, candidate, why, known) == (c.edges.size() > 1 && !c.sound), "the edges alone, judged the same way");
+  }
 }
 
 void stress_rows()
@@ -392,6 +457,7 @@ int main(int argc, char** argv)
   DATA = argc > 1 ? argv[1] : "data";
   const std::string shared = argc > 2 ? argv[2] : "../shared/data";
   constructed_fold();
+  known_fold_places();
   stress_rows();
   noise_free(shared + "/armadillo.obj", 0.05);
   noise_free(DATA + "/camelhead.off", 0.05);

@@ -88,6 +88,7 @@ struct Assembly_statistics
   std::size_t degenerate_points = 0;  // quadrature points where it is
   std::size_t reversed_faces = 0;     // faces whose limit normal turns within the face by more than the angle
   std::size_t bent_faces = 0;         // ... of Assembly_context::folded_turn, and of bent_turn (Step_safety.h)
+  std::vector<std::size_t> reversed_face_list;   // which faces are reversed (the cache's numbers)
   std::vector<double> component_area; // per connected component (when the assembler knows them)
 
   void add(const Assembly_statistics& o)
@@ -96,6 +97,7 @@ struct Assembly_statistics
     degenerate_points += o.degenerate_points;
     reversed_faces += o.reversed_faces;
     bent_faces += o.bent_faces;
+    reversed_face_list.insert(reversed_face_list.end(), o.reversed_face_list.begin(), o.reversed_face_list.end());
     if(o.degenerate && !degenerate) { degenerate = true; degenerate_face = o.degenerate_face; }
     if(component_area.size() < o.component_area.size()) component_area.resize(o.component_area.size(), 0.0);
     for(std::size_t c = 0; c < o.component_area.size(); ++c) component_area[c] += o.component_area[c];
@@ -331,7 +333,7 @@ private:
     for(Eigen::Index q = 0; q < nq; ++q) assemble_point(b, f, q, prefiltered, tensor, g, ws, mv != nullptr, sums, stats);
     stats.area += sums.area;
     if(component >= 0) stats.component_area[std::size_t(component)] += sums.area;
-    if(sums.lowest_dot < x.folded_turn) ++stats.reversed_faces;
+    if(sums.lowest_dot < x.folded_turn) { ++stats.reversed_faces; stats.reversed_face_list.push_back(f); }
     if(sums.lowest_dot < x.bent_turn) ++stats.bent_faces;
     stats.energy += sums.energy;
     stats.H_integral += sums.H;

@@ -125,12 +125,14 @@ private:
   {
     // the noise criterion: stop once the written surface moved off the input by the noise
     noise_stop_ = !fixed_ && s_.noise && s_.stopping.noise_discrepancy > 0;
-    initial_ = Surface_soundness{ a, 0, 0, true };
+    initial_ = Surface_soundness();
+    initial_.statistics = a;
     if(!fixed_)
     {
       t_.measured_positions(Z_, Y_);
       count_folds(t_.layer_, Cache::has_second_derivatives, t_.components_.of_face, t_.component_edge_, Z_, initial_);
-      input_folds_ = count_folded_edges(*t_.layer_.topology, t_.layer_.real_faces, Z0_, t_.components_.of_face, t_.component_edge_);
+      input_folds_ = count_folded_edges(*t_.layer_.topology, t_.layer_.real_faces, Z0_, t_.components_.of_face, t_.component_edge_,
+                                        turn_120, nullptr, &input_fold_edges_);
     }
     // the user's bound on the written positions (Deviation_bound.h), held by the vertices' own fidelity
     bound_.emplace(t_.make_bound(s_, Z_, fixed_, !noise_stop_, report_));
@@ -310,7 +312,8 @@ private:
       // the folded edges first: they need no assembly, and a candidate they reject costs none
       if(candidate_.finite)
         count_folds(t_.layer_, Cache::has_second_derivatives, t_.components_.of_face, t_.component_edge_, Zc_, candidate_);
-      if(candidate_.finite && edges_folded(accepted_, input_folds_, candidate_, why)) verdict = Step_verdict::UNSOUND;
+      const Known_fold_places known = [this](const Surface_soundness& c) { return at_known_fold_places(c); };
+      if(candidate_.finite && edges_folded(accepted_, input_folds_, candidate_, why, known)) verdict = Step_verdict::UNSOUND;
       else
       {
         t_.operator_.save();
@@ -326,7 +329,7 @@ private:
           t_.measured_positions(Zc_, Y_);
           candidate_.finite = Y_.allFinite();
         }
-        verdict = judge_step(initial_, accepted_, input_folds_, *lowest_H_, candidate_, why);
+        verdict = judge_step(initial_, accepted_, input_folds_, *lowest_H_, candidate_, why, known);
       }
       assemble_seconds_ = clock_.time();
     }
@@ -352,6 +355,18 @@ private:
     report_.stop_reason = Stop_reason::STEP_REJECTED;
     report_.message = what + "; the run ends on the last sound surface (step " + std::to_string(step - 1) + ")";
     return Outcome::ENDED;
+  }
+
+  // whether the candidate's folds all lie where the accepted surface or the input mesh was folded
+  // (Fold_sites): there a shorter step would leave them too. Not beyond the folded edges a run may end with.
+  bool at_known_fold_places(const Surface_soundness& c) const
+  {
+    if(c.folded_edges > allowed_folds_) return false;
+    Fold_sites sites(*t_.layer_.topology, t_.layer_.real_faces);
+    sites.add(accepted_.folded_edge_list, accepted_.statistics.reversed_face_list);
+    sites.add(input_fold_edges_, {});
+    sites.widen();
+    return sites.hold(c);
   }
 
   // every component's time step times f
@@ -500,6 +515,7 @@ private:
   bool noise_stop_ = false;
   Surface_soundness initial_, accepted_, candidate_;
   std::size_t input_folds_ = 0, allowed_folds_ = 0, unfolded_steps_ = 0;
+  std::vector<int> input_fold_edges_;   // the input mesh's folded edges (a halfedge of each)
   std::optional<Deviation_bound> bound_;
   std::optional<Output_fidelity> fidelity_;
   int bound_retakes_ = 0;

@@ -7,7 +7,9 @@
 // int |H|^2 exploding. A step is judged against the last accepted state: it may not add degenerate
 // points, nor fold (turn by more than 120 degrees) in more places than that state was nearly folded
 // (110 degrees: a place on the brink may tip over by any small motion, which is no instability) or
-// the input mesh was folded (noise leaves folds that fairing takes a few steps to remove), nor raise
+// the input mesh was folded (noise leaves folds that fairing takes a few steps to remove), unless they all
+// lie where that state or the input was folded (Fold_sites: a tangle of noise on small triangles that no
+// shorter step removes), nor raise
 // int min(|H|, 2/h)^2 above 4 times the lowest value reached (bounded: a cusp on a tiny face of a graded
 // scan is not a blow-up, and an unbounded test would end such a run short of the noise level) or
 // int |H|^2 above 100 times (cusps that keep growing, as in long runs with a strong fidelity term),
@@ -27,6 +29,7 @@
 #include <cmath>
 #include <cstddef>
 #include <cstdio>
+#include <functional>
 #include <string>
 #include <vector>
 
@@ -55,9 +58,11 @@ inline double face_cross_product(const Triangle_topology& topo, std::size_t f, c
 
 /// `faces`: only the edges whose first halfedge lies in these faces (a process's part of a distributed
 /// mesh; null: all real faces), so that the parts' counts add up to the whole's.
+/// `where`: if given, gets a halfedge of each edge counted.
 inline std::size_t count_folded_edges(const Triangle_topology& topo, std::size_t real_faces, const Control_matrix& Y,
                                       const std::vector<int>& face_component, const std::vector<double>& edge,
-                                      double turn = turn_120, const std::vector<std::size_t>* faces = nullptr)
+                                      double turn = turn_120, const std::vector<std::size_t>* faces = nullptr,
+                                      std::vector<int>* where = nullptr)
 {
   auto normal = [&](std::size_t f, double* n) {
     const double h = edge[std::size_t(face_component[f])];
@@ -74,7 +79,11 @@ inline std::size_t count_folded_edges(const Triangle_topology& topo, std::size_t
     double a[3], b[3];
     const double la = normal(std::size_t(topo.face_of(h)), a), lb = normal(std::size_t(topo.face_of(o)), b);
     if(!(la > 0) || !(lb > 0)) continue;
-    if(a[0] * b[0] + a[1] * b[1] + a[2] * b[2] < turn * la * lb) ++folded;
+    if(a[0] * b[0] + a[1] * b[1] + a[2] * b[2] < turn * la * lb)
+    {
+      ++folded;
+      if(where) where->push_back(h);
+    }
   }
   return folded;
 }
@@ -84,6 +93,7 @@ struct Surface_soundness
 {
   Assembly_statistics statistics;
   std::size_t folded_edges = 0, bent_edges = 0;   // turning by more than 120 and 110 degrees
+  std::vector<int> folded_edge_list;   // a halfedge of each folded edge
   bool finite = true;
 
   /// edges of the written mesh and faces of the limit surface where the normal turns by more than 120 degrees
@@ -101,9 +111,68 @@ inline void count_folds(const Ghost_layer& layer, bool loop, const std::vector<i
   Control_matrix Y;
   if(loop) limit_points(layer, X, Y);
   const Control_matrix& P = loop ? Y : X;
-  s.folded_edges = count_folded_edges(*layer.topology, layer.real_faces, P, face_component, edge);
+  s.folded_edge_list.clear();
+  s.folded_edges = count_folded_edges(*layer.topology, layer.real_faces, P, face_component, edge, turn_120, nullptr, &s.folded_edge_list);
   s.bent_edges = count_folded_edges(*layer.topology, layer.real_faces, P, face_component, edge, turn_110);
 }
+
+/// The places where a surface was folded: the vertices of its folded edges' and reversed faces' triangles
+/// and the two rings around them, as far as one control vertex reaches on the limit surface (the support of
+/// a Loop basis function). A step whose folds all lie where the last accepted surface or the input mesh
+/// was folded did not fold the surface: it left the input's folds (a tangle of noise on small triangles)
+/// where they were, and no shorter step removes them.
+class Fold_sites
+{
+public:
+  Fold_sites(const Triangle_topology& topo, std::size_t real_faces) : topo_(topo), real_faces_(real_faces) {}
+
+  /// marks the faces of `halfedges` (edges) and `faces`
+  void add(const std::vector<int>& halfedges, const std::vector<std::size_t>& faces)
+  {
+    if(marked_.empty()) marked_.assign(topo_.number_of_vertices(), 0);
+    for(int h : halfedges)
+    {
+      mark_face(std::size_t(topo_.face_of(h)));
+      mark_face(std::size_t(topo_.face_of(topo_.opposite(h))));
+    }
+    for(std::size_t f : faces) mark_face(f);
+  }
+
+  /// widens the places by the two rings of the Loop basis
+  void widen()
+  {
+    for(int ring = 0; ring < 2 && !marked_.empty(); ++ring)
+    {
+      std::vector<std::size_t> touching;
+      for(std::size_t f = 0; f < real_faces_; ++f)
+        if(touches(f)) touching.push_back(f);
+      for(std::size_t f : touching) mark_face(f);
+    }
+  }
+
+  /// whether every fold of `s` (its folded edges and reversed faces) lies at these places
+  bool hold(const Surface_soundness& s) const
+  {
+    if(marked_.empty()) return s.folded_edges == 0 && s.statistics.reversed_faces == 0;
+    for(int h : s.folded_edge_list)
+      if(!touches(std::size_t(topo_.face_of(h))) && !touches(std::size_t(topo_.face_of(topo_.opposite(h))))) return false;
+    for(std::size_t f : s.statistics.reversed_face_list)
+      if(!touches(f)) return false;
+    return true;
+  }
+
+private:
+  void mark_face(std::size_t f) { for(int v : topo_.face(f)) marked_[std::size_t(v)] = 1; }
+  bool touches(std::size_t f) const
+  {
+    for(int v : topo_.face(f)) if(marked_[std::size_t(v)]) return true;
+    return false;
+  }
+
+  const Triangle_topology& topo_;
+  std::size_t real_faces_;
+  std::vector<char> marked_;   // per vertex
+};
 
 enum class Step_verdict { SOUND, UNSOUND, COLLAPSED };
 
@@ -115,12 +184,17 @@ struct Lowest_curvature
   void add(const Assembly_statistics& a) { full = std::min(full, a.H_integral); bounded = std::min(bounded, a.bounded_H_integral); }
 };
 
+/// Whether every fold of a candidate lies where the accepted surface or the input was folded (Fold_sites);
+/// empty: folds are judged by their number only.
+typedef std::function<bool(const Surface_soundness&)> Known_fold_places;
+
 /// Whether the candidate's written mesh alone already folds more edges than the accepted state allows
 /// (what judge_step finds first when the limit surface's faces add none): `why` says so.
 inline bool edges_folded(const Surface_soundness& accepted, std::size_t input_folds, const Surface_soundness& candidate,
-                         std::string& why)
+                         std::string& why, const Known_fold_places& known = {})
 {
   if(candidate.folded_edges <= std::max(accepted.near_folds(), input_folds)) return false;
+  if(known && known(candidate)) return false;
   char text[160];
   std::snprintf(text, sizeof text, "the surface folded (%zu edges where the normal turns by more than 120 degrees, %zu before)",
                 candidate.folded_edges, accepted.folds());
@@ -131,7 +205,8 @@ inline bool edges_folded(const Surface_soundness& accepted, std::size_t input_fo
 /// Compares `candidate` with the last accepted state (and the initial one for collapse); `input_folds`
 /// are the folds of the input mesh itself, `lowest` the lowest int |H|^2 reached so far. `why` names what failed.
 inline Step_verdict judge_step(const Surface_soundness& initial, const Surface_soundness& accepted, std::size_t input_folds,
-                               const Lowest_curvature& lowest, const Surface_soundness& candidate, std::string& why)
+                               const Lowest_curvature& lowest, const Surface_soundness& candidate, std::string& why,
+                               const Known_fold_places& known = {})
 {
   const Assembly_statistics& c = candidate.statistics;
   const Assembly_statistics& a = accepted.statistics;
@@ -152,7 +227,7 @@ inline Step_verdict judge_step(const Surface_soundness& initial, const Surface_s
     why = text;
     return Step_verdict::UNSOUND;
   }
-  if(candidate.folds() > std::max(accepted.near_folds(), input_folds))
+  if(candidate.folds() > std::max(accepted.near_folds(), input_folds) && !(known && known(candidate)))
   {
     std::snprintf(text, sizeof text, "the surface folded (%zu edges and %zu faces where the normal turns by more than 120 degrees, "
                   "%zu before)", candidate.folded_edges, c.reversed_faces, accepted.folds());
