@@ -56,7 +56,7 @@ int main(int argc, char** argv)
     AFi::Fem_assembler<AFi::Patch_cache> assembler(cache, im.number_of_vertices());
     t_pattern.push_back(timer.time());
     timer.reset();
-    std::vector<double> m_values, l_values;
+    CGAL::Anisotropic_fairing::internal::Value_array m_values, l_values;
     area = assembler.assemble(X, 3, CGAL::Anisotropic_fairing::Isotropic_diffusion_tensor(), m_values, l_values).area;
     t_mass.push_back(timer.time());
     t_total.push_back(total.time());

@@ -417,7 +417,7 @@ void part_breakdown(const std::string& dir, int runs)
     AFi::Time_stepper<AFi::Ghosted_patch_cache> stepper(cache, im.number_of_vertices(), constrained, ordering.layer, components,
                                                         component_edge, h);
     t_stepper.push_back(t.time());
-    std::vector<double> M, L;
+    AFi::Value_array M, L;
     {
       AFi::Fem_assembler<AFi::Ghosted_patch_cache> assembler(cache, im.number_of_vertices());
       assembler.assemble(X, 3, AF::Isotropic_diffusion_tensor(), M, L);   // warm-up (allocations)

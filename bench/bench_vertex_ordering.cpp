@@ -111,7 +111,7 @@ static void measure(const AFi::Indexed_mesh<Mesh>& im, const AFi::Control_matrix
   for(std::size_t i = 0; i < n; ++i) X.row(Eigen::Index(i)) = P.row(o.old_of_new_vertex[i]);
   AFi::Ghosted_patch_cache cache(o.layer, AFi::Quadrature_spec());
   AFi::Fem_assembler<AFi::Ghosted_patch_cache> assembler(cache, n);
-  std::vector<double> M, L;
+  AFi::Value_array M, L;
   assembler.assemble(X, 3, AF::Isotropic_diffusion_tensor(), M, L);   // warm-up (allocations)
   clock.reset();
   const AFi::Assembly_statistics a = assembler.assemble(X, 3, AF::Isotropic_diffusion_tensor(), M, L);

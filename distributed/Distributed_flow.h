@@ -306,15 +306,10 @@ private:
     AFI::Step_verdict verdict = AFI::Step_verdict::SOUND;
     bool saved = false;
     if(candidate_.finite) count_folds(Zc_, candidate_);
-    // where the accepted surface or the input was folded (the library's Fold_sites; every process has the
-    // whole mesh), and no more folded edges than the run may end with
+    // folds where the accepted surface or the input was folded, as the serial flow judges them (every
+    // process has the whole mesh and the gathered fold lists)
     const AFI::Known_fold_places known = [this](const AFI::Surface_soundness& c) {
-      if(c.folded_edges > allowed_folds_) return false;
-      AFI::Fold_sites sites(*in_.layer.topology, in_.layer.real_faces);
-      sites.add(accepted_.folded_edge_list, accepted_.statistics.reversed_face_list);
-      sites.add(input_fold_edges_, {});
-      sites.widen();
-      return sites.hold(c);
+      return AFI::folds_at_known_places(*in_.layer.topology, in_.layer.real_faces, accepted_, input_fold_edges_, allowed_folds_, c);
     };
     if(candidate_.finite && AFI::edges_folded(accepted_, input_folds_, candidate_, why, known)) verdict = AFI::Step_verdict::UNSOUND;
     else

@@ -110,7 +110,7 @@ public:
     assembler_.set_prefiltered(nullptr);
     prefiltered_valid_ = false;
     if(prefilter_) make_prefiltered(X, metric_columns);
-    std::vector<double> m, l;
+    AFI::Value_array m, l;
     const AFI::Assembly_statistics a = assembler_.assemble(X, metric_columns, tensor, m, l, with_matrices);
     assembler_.set_prefiltered(nullptr);
     if(with_matrices) { fill(M_, m); fill(L_, l); }
@@ -141,7 +141,7 @@ private:
     petsc_check(MatSetType(pre, MATPREALLOCATOR), "MatSetType");
     petsc_check(MatSetSizes(pre, local, local, d_.rows, d_.rows), "MatSetSizes");
     petsc_check(MatSetUp(pre), "MatSetUp");
-    const std::vector<double> zeros(std::size_t(assembler_.number_of_nonzeros()), 0.0);
+    const AFI::Value_array zeros(std::size_t(assembler_.number_of_nonzeros()), 0.0);
     insert(pre, zeros);
     petsc_check(MatCreate(comm_, &pattern_), "MatCreate");
     petsc_check(MatSetType(pattern_, MATAIJ), "MatSetType");
@@ -151,7 +151,7 @@ private:
   }
 
   // adds the value arrays (over the assembler's pattern) into A, column j of the pattern as row j (symmetric)
-  void insert(Mat A, const std::vector<double>& values)
+  void insert(Mat A, const AFI::Value_array& values)
   {
     const auto& p = assembler_.pattern();
     const int* outer = p.outerIndexPtr();
@@ -173,7 +173,7 @@ private:
   }
 
   // A: a zero matrix of the pattern, then the value arrays added
-  void fill(Mat& A, const std::vector<double>& values)
+  void fill(Mat& A, const AFI::Value_array& values)
   {
     if(!A) petsc_check(MatDuplicate(pattern_, MAT_DO_NOT_COPY_VALUES, &A), "MatDuplicate");
     else petsc_check(MatZeroEntries(A), "MatZeroEntries");
@@ -183,7 +183,7 @@ private:
   // M_eps = X + dX, (M + eps L) dX = -eps L X on the free rows (isotropic M, L at X), the overlap refreshed
   void make_prefiltered(const Control_matrix& X, int metric_columns)
   {
-    std::vector<double> m, l;
+    AFI::Value_array m, l;
     assembler_.assemble(X, metric_columns, CGAL::Anisotropic_fairing::Isotropic_diffusion_tensor(), m, l);
     fill(Mi_, m);
     fill(Li_, l);

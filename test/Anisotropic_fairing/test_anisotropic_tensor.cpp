@@ -132,7 +132,7 @@ Eigen::MatrixXd stiffness(const Mesh& mesh, const AF::Anisotropic_diffusion_tens
   AFI::Patch_cache cache(im.topology());
   cache.prepare_quadrature(AFI::Quadrature_spec());
   AFI::Fem_assembler<AFI::Patch_cache> as(cache, im.number_of_vertices());
-  std::vector<double> mv, lv;
+  CGAL::Anisotropic_fairing::internal::Value_array mv, lv;
   as.assemble(X, 3, D, mv, lv);
   const Eigen::SparseMatrix<double> L = as.pattern().matrix(lv);
   if(L_iso)

@@ -44,7 +44,7 @@ namespace AFI = CGAL::Anisotropic_fairing::internal;
 
 std::string data_dir;
 
-Eigen::SparseMatrix<double> with_values(const CGAL::Anisotropic_fairing::internal::Sparse_structure& pattern, const std::vector<double>& v)
+Eigen::SparseMatrix<double> with_values(const CGAL::Anisotropic_fairing::internal::Sparse_structure& pattern, const CGAL::Anisotropic_fairing::internal::Value_array& v)
 {
   return pattern.matrix(v);
 }
@@ -74,7 +74,7 @@ Sphere_operators sphere_operators(const Mesh& sphere)
   AFI::Patch_cache cache(im.topology());
   cache.prepare_quadrature(AFI::Quadrature_spec());
   AFI::Fem_assembler<AFI::Patch_cache> as(cache, im.number_of_vertices());
-  std::vector<double> mv, lv;
+  CGAL::Anisotropic_fairing::internal::Value_array mv, lv;
   as.assemble(X, 3, AF::Isotropic_diffusion_tensor(), mv, lv);
   return { Eigen::MatrixXd(with_values(as.pattern(), mv)), Eigen::MatrixXd(with_values(as.pattern(), lv)) };
 }

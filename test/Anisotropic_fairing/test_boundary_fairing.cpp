@@ -428,7 +428,7 @@ void irregular_planar_patch_test()
     const AFI::Ghosted_patch_cache cache(gl, spec);
     const std::vector<bool> fixed = AFI::boundary_constrained_vertices(gl, cache, true);
     AFI::Fem_assembler<AFI::Ghosted_patch_cache> assembler(cache, gl.real_vertices);
-    std::vector<double> M, L;
+    CGAL::Anisotropic_fairing::internal::Value_array M, L;
     assembler.assemble(X, 3, AF::Isotropic_diffusion_tensor(), M, L);
     const AFI::Sparse_structure& P = assembler.pattern();
     double residual = 0, far = 0;

@@ -398,7 +398,7 @@ void automatic_solver_gives_way()
   A.makeCompressed();
   const I::Sparse_structure structure(n, std::vector<int>(A.outerIndexPtr(), A.outerIndexPtr() + n + 1),
                                       std::vector<int>(A.innerIndexPtr(), A.innerIndexPtr() + A.nonZeros()));
-  const std::vector<double> values(A.valuePtr(), A.valuePtr() + A.nonZeros());
+  const I::Value_array values(A.valuePtr(), A.valuePtr() + A.nonZeros());
   I::Solver_choice choice(AF::Linear_solver::AUTOMATIC, std::size_t(n));
   AF_CHECK(choice.fall_back_iterations() == 10 * AF::automatic_cholesky_trial_iterations,
            "before any timing, CG gives way after ten times the trial threshold");

@@ -188,7 +188,7 @@ void check_bow_tie()
   AF_CHECK(refused, "a bow-tie boundary vertex is refused, naming the vertex");
 }
 
-Eigen::MatrixXd dense(const CGAL::Anisotropic_fairing::internal::Sparse_structure& pattern, const std::vector<double>& values)
+Eigen::MatrixXd dense(const CGAL::Anisotropic_fairing::internal::Sparse_structure& pattern, const CGAL::Anisotropic_fairing::internal::Value_array& values)
 {
   return Eigen::MatrixXd(pattern.matrix(values));
 }
@@ -213,7 +213,7 @@ void check_ghosted_assembly()
   const AFI::Ghosted_patch_cache cache(gl, AFI::Quadrature_spec());
   AFI::Fem_assembler<AFI::Ghosted_patch_cache> real(cache, std::size_t(n));
   AFI::Fem_assembler<AFI::Patch_cache> extended(cache.extended(), gl.number_of_extended_vertices());
-  std::vector<double> m, l, me, le;
+  AFI::Value_array m, l, me, le;
   const AFI::Assembly_statistics flat_stats = real.assemble(flat, 3, CGAL::Anisotropic_fairing::Isotropic_diffusion_tensor(), m, l);
   std::printf("planar %dx%d grid with ghosts: limit area %.15g (grid %d), %zu of %zu faces see ghosts\n", rows, cols,
               flat_stats.area, (rows - 1) * (cols - 1), cache.number_of_ghosted_faces(), faces.size());
@@ -247,7 +247,7 @@ void check_patch_test()
   for(int i = 0; i < rows; ++i)
     for(int j = 0; j < cols; ++j) X.row(i * cols + j) << j, i, 0.3 * j - 0.2 * i + 0.1;   // a tilted plane
   AFI::Fem_assembler<AFI::Ghosted_patch_cache> as(cache, std::size_t(n));
-  std::vector<double> m, l;
+  AFI::Value_array m, l;
   as.assemble(X, 3, CGAL::Anisotropic_fairing::Isotropic_diffusion_tensor(), m, l);
   const Eigen::MatrixXd L = dense(as.pattern(), l);
   const Eigen::MatrixXd LX = L * Eigen::MatrixXd(X);

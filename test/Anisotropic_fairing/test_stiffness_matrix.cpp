@@ -34,7 +34,7 @@ typedef CGAL::Surface_mesh<K::Point_3> Mesh;
 namespace AF = CGAL::Anisotropic_fairing;
 namespace AFI = CGAL::Anisotropic_fairing::internal;
 
-Eigen::SparseMatrix<double> with_values(const CGAL::Anisotropic_fairing::internal::Sparse_structure& pattern, const std::vector<double>& v)
+Eigen::SparseMatrix<double> with_values(const CGAL::Anisotropic_fairing::internal::Sparse_structure& pattern, const AFI::Value_array& v)
 {
   return pattern.matrix(v);
 }
@@ -44,7 +44,7 @@ template <class Cache>
 void check_operator(const Cache& cache, const AFI::Control_matrix& X, const std::string& name, bool dense_checks)
 {
   AFI::Fem_assembler<Cache> as(cache, std::size_t(X.rows()));
-  std::vector<double> mv, lv;
+  AFI::Value_array mv, lv;
   const AFI::Assembly_statistics st = as.assemble(X, int(X.cols()), AF::Isotropic_diffusion_tensor(), mv, lv);
   const Eigen::SparseMatrix<double> M = with_values(as.pattern(), mv), L = with_values(as.pattern(), lv);
   const Eigen::MatrixXd Xd = X;
@@ -89,7 +89,7 @@ void check_linear_element(const Mesh& mesh, const std::string& name)
   const AFI::Control_matrix X = im.read_points(mesh.points());
   AFI::Linear_element_cache cache(im.topology());
   AFI::Fem_assembler<AFI::Linear_element_cache> as(cache, im.number_of_vertices());
-  std::vector<double> mv, lv;
+  AFI::Value_array mv, lv;
   as.assemble(X, 3, AF::Isotropic_diffusion_tensor(), mv, lv);
   const Eigen::MatrixXd M = Eigen::MatrixXd(with_values(as.pattern(), mv)), L = Eigen::MatrixXd(with_values(as.pattern(), lv));
   const Eigen::Index n = Eigen::Index(im.number_of_vertices());
@@ -131,7 +131,7 @@ void check_uniform_tensor(const Mesh& mesh, const std::string& name)
   for(Eigen::Index i = 0; i < Y.rows(); ++i)
     for(int c = 0; c < 3; ++c) Y(i, c) += 0.01 * size * u(rng);
   const Eigen::Index n = Eigen::Index(im.number_of_vertices());
-  std::vector<double> mv, lv;
+  AFI::Value_array mv, lv;
   {
     AFI::Linear_element_cache cache(im.topology());
     AFI::Fem_assembler<AFI::Linear_element_cache> as(cache, im.number_of_vertices());
@@ -152,7 +152,7 @@ void check_uniform_tensor(const Mesh& mesh, const std::string& name)
   AFI::Patch_cache cache(im.topology());
   cache.prepare_quadrature(AFI::Quadrature_spec());
   AFI::Fem_assembler<AFI::Patch_cache> as(cache, im.number_of_vertices());
-  std::vector<double> lx, ly;
+  AFI::Value_array lx, ly;
   as.assemble(X, 3, AF::Uniform_diffusion_tensor(), mv, lx);
   as.assemble(Y, 3, AF::Uniform_diffusion_tensor(), mv, ly);
   const Eigen::SparseMatrix<double> Lx = with_values(as.pattern(), lx), Ly = with_values(as.pattern(), ly);

@@ -342,7 +342,7 @@ public:
     // folded into their stencils (Ghosted_patch_cache.h), so E^T M_ext E is never formed
     const std::size_t n = number_of_vertices();
     internal::Fem_assembler<internal::Ghosted_patch_cache> assembler(*cache_, n);
-    std::vector<double> m, l;
+    internal::Value_array m, l;
     assembler.assemble(X_.topRows(Eigen::Index(n)), int(X_.cols()), Isotropic_diffusion_tensor(), m, l);
     return assembler.pattern().matrix(m);
   }
@@ -429,7 +429,7 @@ private:
     X_ = gl.extend(indexed_->read_points(vpm));
     cache_.reset(new internal::Ghosted_patch_cache(gl, internal::read_quadrature_spec(np)));   // ghost faces get no patch
     internal::Fem_assembler<internal::Patch_cache> statistics(patches(), gl.number_of_extended_vertices(), false);
-    std::vector<double> unused;
+    internal::Value_array unused;
     area_ = statistics.assemble(X_, int(X_.cols()), Isotropic_diffusion_tensor(), unused, unused, false).area;
   }
 

@@ -161,7 +161,7 @@ public:
   /// computed (when the element gives curvature at points) and M, L are left as they are.
   template <typename Tensor>
   Assembly_statistics assemble(const Control_matrix& X, int metric_columns, const Tensor& tensor,
-                               std::vector<double>& M, std::vector<double>& L, bool with_matrices = true)
+                               Value_array& M, Value_array& L, bool with_matrices = true)
   {
     const std::size_t nnz = number_of_nonzeros(), nf = assembled_faces();
     if(!Cache::has_second_derivatives) with_matrices = true;   // the curvature integral needs them
@@ -473,8 +473,7 @@ private:
 
   // Without second derivatives (P1): the discrete mean-curvature vector at vertex i is
   // H_i = -(L X)_i / (2 A_i) with A_i = sum_j M_ij, so int |H|^2 ~ sum_i |(L X)_i|^2 / (4 A_i).
-  double discrete_H_integral(const Control_matrix& X, int kappa, const std::vector<double>& M,
-                             const std::vector<double>& L) const
+  double discrete_H_integral(const Control_matrix& X, int kappa, const Value_array& M, const Value_array& L) const
   {
     const Eigen::Index n = pattern_.cols();
     const int* outer = pattern_.outerIndexPtr();
@@ -506,7 +505,7 @@ private:
 };
 
 /// trace(F^T L F) over all columns of F: the Dirichlet energy of F.
-inline double dirichlet_energy(const Sparse_structure& pattern, const std::vector<double>& L, const Control_matrix& F)
+inline double dirichlet_energy(const Sparse_structure& pattern, const Value_array& L, const Control_matrix& F)
 {
   double e = 0;
   for(Eigen::Index i = 0; i < pattern.cols(); ++i)

@@ -312,7 +312,9 @@ private:
       // the folded edges first: they need no assembly, and a candidate they reject costs none
       if(candidate_.finite)
         count_folds(t_.layer_, Cache::has_second_derivatives, t_.components_.of_face, t_.component_edge_, Zc_, candidate_);
-      const Known_fold_places known = [this](const Surface_soundness& c) { return at_known_fold_places(c); };
+      const Known_fold_places known = [this](const Surface_soundness& c) {
+        return folds_at_known_places(*t_.layer_.topology, t_.layer_.real_faces, accepted_, input_fold_edges_, allowed_folds_, c);
+      };
       if(candidate_.finite && edges_folded(accepted_, input_folds_, candidate_, why, known)) verdict = Step_verdict::UNSOUND;
       else
       {
@@ -355,18 +357,6 @@ private:
     report_.stop_reason = Stop_reason::STEP_REJECTED;
     report_.message = what + "; the run ends on the last sound surface (step " + std::to_string(step - 1) + ")";
     return Outcome::ENDED;
-  }
-
-  // whether the candidate's folds all lie where the accepted surface or the input mesh was folded
-  // (Fold_sites): there a shorter step would leave them too. Not beyond the folded edges a run may end with.
-  bool at_known_fold_places(const Surface_soundness& c) const
-  {
-    if(c.folded_edges > allowed_folds_) return false;
-    Fold_sites sites(*t_.layer_.topology, t_.layer_.real_faces);
-    sites.add(accepted_.folded_edge_list, accepted_.statistics.reversed_face_list);
-    sites.add(input_fold_edges_, {});
-    sites.widen();
-    return sites.hold(c);
   }
 
   // every component's time step times f

@@ -10,6 +10,7 @@
 #define CGAL_ANISOTROPIC_FAIRING_INTERNAL_FLOW_PREFILTER_STEP_H
 
 #include <CGAL/Anisotropic_fairing/internal/types/Control_matrix.h>
+#include <CGAL/Anisotropic_fairing/internal/types/Parallel_blocks.h>
 #include <CGAL/Anisotropic_fairing/Fairing_settings.h>
 #include <CGAL/Anisotropic_fairing/internal/solve/Free_block.h>
 #include <CGAL/Anisotropic_fairing/internal/solve/Solver_choice.h>
@@ -40,24 +41,26 @@ struct Prefilter_solver
 /// their size on entry, conjugate gradients start from it (the last step's M_eps is a close guess).
 /// `choice` and `cg` persist over a run's prefilters, as a time step's do: iterations that stall
 /// (near-degenerate faces of quantised scans) give way to the factorisation, analysed once per run.
-inline Solve_statistics prefilter_step(const Sparse_structure& pattern, const std::vector<double>& M,
-                                       const std::vector<double>& L, const std::vector<double>& eps,
-                                       const Free_block& block, std::vector<double>& A,
+inline Solve_statistics prefilter_step(const Sparse_structure& pattern, const Value_array& M,
+                                       const Value_array& L, const std::vector<double>& eps,
+                                       const Free_block& block, Value_array& A,
                                        const Control_matrix& X, int columns, const Prefilter_solver& settings,
                                        Solver_choice& choice, Block_conjugate_gradient& cg, Control_matrix& dX)
 {
   const std::vector<int>& free = block.free;
   const Sparse_structure& S = block.structure();
   A.resize(std::size_t(S.nonZeros()));
-  for(Eigen::Index k = 0; k < S.cols(); ++k)
-  {
-    const double e_k = eps[std::size_t(free[std::size_t(k)])];
-    for(int e = S.outerIndexPtr()[k]; e < S.outerIndexPtr()[k + 1]; ++e)
+  parallel_blocks(S.cols(), [&](Eigen::Index first, Eigen::Index last) {
+    for(Eigen::Index k = first; k < last; ++k)
     {
-      const std::size_t p = block.source(std::size_t(e));
-      A[std::size_t(e)] = M[p] + e_k * L[p];
+      const double e_k = eps[std::size_t(free[std::size_t(k)])];
+      for(int e = S.outerIndexPtr()[k]; e < S.outerIndexPtr()[k + 1]; ++e)
+      {
+        const std::size_t p = block.source(std::size_t(e));
+        A[std::size_t(e)] = M[p] + e_k * L[p];
+      }
     }
-  }
+  });
   const Eigen::Index nfree = Eigen::Index(free.size());
   Control_matrix B(nfree, columns);
   if(dX.rows() != nfree || dX.cols() != columns) dX = Control_matrix::Zero(nfree, columns);

@@ -20,6 +20,7 @@
 
 #include <CGAL/Anisotropic_fairing/internal/types/Control_matrix.h>
 #include <CGAL/Anisotropic_fairing/internal/types/Vector3.h>
+#include <CGAL/Anisotropic_fairing/internal/types/Parallel_blocks.h>
 #include <CGAL/Anisotropic_fairing/internal/assembly/Fem_assembly.h>
 #include <CGAL/Anisotropic_fairing/internal/mesh/Ghost_layer.h>
 #include <CGAL/Anisotropic_fairing/internal/mesh/Triangle_topology.h>
@@ -69,21 +70,34 @@ inline std::size_t count_folded_edges(const Triangle_topology& topo, std::size_t
     const double twice_area = face_cross_product(topo, f, Y, n);
     return twice_area > 2e-4 * h * h ? twice_area : 0.0;
   };
+  // fixed blocks of halfedges, each with its own count and list, joined in order: the list is in
+  // halfedge order however the blocks are scheduled
+  const std::size_t nh = 3 * (faces ? faces->size() : real_faces), block = 16384;
+  const std::size_t blocks = (nh + block - 1) / block;
+  std::vector<std::size_t> count(blocks, 0);
+  std::vector<std::vector<int>> found(where ? blocks : 0);
+  parallel_blocks(blocks, [&](std::size_t first, std::size_t last) {
+    for(std::size_t k = first; k < last; ++k)
+      for(std::size_t i = k * block; i < std::min(nh, (k + 1) * block); ++i)
+      {
+        const int h = faces ? int(3 * (*faces)[i / 3] + i % 3) : int(i);
+        const int o = topo.opposite(h);
+        if(o < h || std::size_t(topo.face_of(o)) >= real_faces) continue;   // each interior edge once
+        double a[3], b[3];
+        const double la = normal(std::size_t(topo.face_of(h)), a), lb = normal(std::size_t(topo.face_of(o)), b);
+        if(!(la > 0) || !(lb > 0)) continue;
+        if(a[0] * b[0] + a[1] * b[1] + a[2] * b[2] < turn * la * lb)
+        {
+          ++count[k];
+          if(where) found[k].push_back(h);
+        }
+      }
+  }, std::size_t(1), std::size_t(1));
   std::size_t folded = 0;
-  const std::size_t nh = 3 * (faces ? faces->size() : real_faces);
-  for(std::size_t i = 0; i < nh; ++i)
+  for(std::size_t k = 0; k < blocks; ++k)
   {
-    const int h = faces ? int(3 * (*faces)[i / 3] + i % 3) : int(i);
-    const int o = topo.opposite(h);
-    if(o < h || std::size_t(topo.face_of(o)) >= real_faces) continue;   // each interior edge once
-    double a[3], b[3];
-    const double la = normal(std::size_t(topo.face_of(h)), a), lb = normal(std::size_t(topo.face_of(o)), b);
-    if(!(la > 0) || !(lb > 0)) continue;
-    if(a[0] * b[0] + a[1] * b[1] + a[2] * b[2] < turn * la * lb)
-    {
-      ++folded;
-      if(where) where->push_back(h);
-    }
+    folded += count[k];
+    if(where) where->insert(where->end(), found[k].begin(), found[k].end());
   }
   return folded;
 }
@@ -173,6 +187,21 @@ private:
   std::size_t real_faces_;
   std::vector<char> marked_;   // per vertex
 };
+
+/// Whether the candidate's folds all lie where the accepted surface or the input mesh (`input_fold_edges`)
+/// was folded: there a shorter step would leave them too. Not beyond `allowed_folds` folded edges, the
+/// most a run may end with. Both flows (Flow_run, the distributed one) judge their steps with it.
+inline bool folds_at_known_places(const Triangle_topology& topo, std::size_t real_faces, const Surface_soundness& accepted,
+                                  const std::vector<int>& input_fold_edges, std::size_t allowed_folds,
+                                  const Surface_soundness& candidate)
+{
+  if(candidate.folded_edges > allowed_folds) return false;
+  Fold_sites sites(topo, real_faces);
+  sites.add(accepted.folded_edge_list, accepted.statistics.reversed_face_list);
+  sites.add(input_fold_edges, {});
+  sites.widen();
+  return sites.hold(candidate);
+}
 
 enum class Step_verdict { SOUND, UNSOUND, COLLAPSED };
 

@@ -49,7 +49,7 @@ public:
   /// after this: the caller may free them first. `mass_weight`: the local time scale; `unknown_scale`: per
   /// row with several components; either empty: none. `mu`: each vertex's own fidelity (Deviation_bound.h;
   /// empty: none). M, L and mass_weight must stay unchanged until solve() returns.
-  void prepare(const std::vector<double>& M, const std::vector<double>& L, const Step_units& u,
+  void prepare(const Value_array& M, const Value_array& L, const Step_units& u,
                const std::vector<double>& mass_weight, const std::vector<double>& unknown_scale, double factor, double sys,
                const Control_matrix& X, const Control_matrix& X0, const std::vector<double>& mu)
   {
@@ -125,7 +125,7 @@ public:
     // on a surface that moves the system is formed anew at every solve: not kept while the next is assembled
     if(!constant_)
     {
-      std::vector<double>().swap(A_);
+      Value_array().swap(A_);
       if(q) q->release();
     }
     // nor its right-hand side, nor the solver's work (made anew for the next)
@@ -150,7 +150,7 @@ public:
 private:
   // held_i = mu_i D_i, D_i = sum_j M_ij (with the local time scale's weights): a vertex's fidelity on its
   // lumped mass
-  void held_mass(const std::vector<double>& M, const std::vector<double>& mass_weight, const std::vector<double>& mu)
+  void held_mass(const Value_array& M, const std::vector<double>& mass_weight, const std::vector<double>& mu)
   {
     const Eigen::VectorXd D = lumped_mass(pattern_, M, mass_weight);
     held_.resize(mu.size());
@@ -161,7 +161,7 @@ private:
   const Free_block& block_;
   const Output_fidelity* fidelity_;
   const Control_matrix* anchor_;
-  std::vector<double> A_;   // the system of a second-order step: values over block_.structure()
+  Value_array A_;   // the system of a second-order step: values over block_.structure()
   Eigen::SparseMatrix<double> extra_;
   std::unique_ptr<Fourth_order_system> fourth_order_;
   Block_conjugate_gradient cg_;

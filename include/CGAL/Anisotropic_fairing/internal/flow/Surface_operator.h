@@ -33,8 +33,8 @@ public:
   Fem_assembler<Cache>& assembler() { return assembler_; }
   const Sparse_structure& pattern() const { return assembler_.pattern(); }
   /// M and L(D) of the last assembly, as value arrays over pattern()
-  const std::vector<double>& M() const { return M_; }
-  const std::vector<double>& L() const { return L_; }
+  const Value_array& M() const { return M_; }
+  const Value_array& L() const { return L_; }
 
   /// The prefilter: its time per row (all 0: none), the free block it is solved on, and the solver.
   void set_prefilter(std::vector<double> eps, const Free_block* block, const Prefilter_solver& solver)
@@ -80,7 +80,7 @@ public:
       Control_matrix& dX = prefilter_dX_;   // warm start: the last M_eps's displacement
       const Solve_statistics sol = prefilter_step(assembler_.pattern(), M_, L_, eps_, *block_, prefilter_A_, X, metric_columns,
                                                   prefilter_solver_, *prefilter_choice_, *prefilter_cg_, dX);
-      std::vector<double>().swap(prefilter_A_);   // not kept while the step's system is formed
+      Value_array().swap(prefilter_A_);   // not kept while the step's system is formed
       if(!sol.ok) dX.resize(0, 0);
       if(!sol.ok || !dX.allFinite())
         error_ = "the prefiltered surface M_eps could not be computed: " + (sol.ok ? std::string("not finite") : sol.message);
@@ -136,7 +136,7 @@ public:
 
 private:
   Fem_assembler<Cache> assembler_;
-  std::vector<double> M_, L_;
+  Value_array M_, L_;
   bool overwritten_ = false;   // M_ and L_ were assembled since save()
   bool isotropic_ready_ = false;   // M_ and L_ are the isotropic ones at the next assemble()'s X
   std::vector<double> eps_;   // prefilter time per row
@@ -145,7 +145,7 @@ private:
   Prefilter_solver prefilter_solver_;
   std::unique_ptr<Solver_choice> prefilter_choice_;
   std::unique_ptr<Block_conjugate_gradient> prefilter_cg_;
-  std::vector<double> prefilter_A_;   // the prefilter system's values over the free block
+  Value_array prefilter_A_;   // the prefilter system's values over the free block
   Control_matrix prefiltered_X_, saved_prefiltered_X_, prefilter_dX_;
   bool prefiltered_valid_ = false, saved_prefiltered_valid_ = false;
   std::string error_;

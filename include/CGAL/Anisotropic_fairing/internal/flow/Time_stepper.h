@@ -149,7 +149,7 @@ private:
     prefilter.maximum_iterations = s.solver_maximum_iterations;
     prefilter.direct = s.direct_solver;
     std::vector<double> eps(std::size_t(X.rows()), scaled_tensor ? 0.0 : prefilter_time(tensor));   // the prefilter time per row
-    std::vector<double> m, l;
+    Value_array m, l;
     // a prefilter's time follows from the units: then the isotropic M and L of the units are its start
     if(scaled_tensor && prefilter_time(tensor) > 0) a = operator_.assemble_isotropic(X, metric_columns);
     else if(scaled_tensor) a = operator_.assembler().assemble(X, metric_columns, Isotropic_diffusion_tensor(), m, l, false);

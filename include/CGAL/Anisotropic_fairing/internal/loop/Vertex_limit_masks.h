@@ -8,6 +8,7 @@
 
 #include <CGAL/Anisotropic_fairing/internal/types/Control_matrix.h>
 #include <CGAL/Anisotropic_fairing/internal/types/Vector3.h>
+#include <CGAL/Anisotropic_fairing/internal/types/Parallel_blocks.h>
 #include <CGAL/Anisotropic_fairing/internal/loop/Loop_rules.h>
 #include <CGAL/Anisotropic_fairing/internal/mesh/Ghost_layer.h>
 #include <CGAL/Anisotropic_fairing/internal/mesh/Triangle_topology.h>
@@ -52,7 +53,9 @@ inline void limit_points(const Ghost_layer& layer, const Control_matrix& X, Cont
   const Control_matrix extended = layer.has_boundary() ? layer.extend(X) : Control_matrix();
   const Control_matrix& E = layer.has_boundary() ? extended : X;
   Y.resize(X.rows(), X.cols());
-  for(Eigen::Index i = 0; i < X.rows(); ++i) vertex_limit_value(*layer.topology, E, int(i), Y.row(i).data());
+  parallel_blocks(X.rows(), [&](Eigen::Index first, Eigen::Index last) {
+    for(Eigen::Index i = first; i < last; ++i) vertex_limit_value(*layer.topology, E, int(i), Y.row(i).data());
+  });
 }
 
 /// Tangent masks t_u = sum cos(2 pi j/n) x_j, t_v = sum sin(2 pi j/n) x_j over the neighbours in

@@ -46,7 +46,7 @@ public:
 
   /// Takes M (with the local time scale `mass_weight`, empty: none, applied as M is used) and L where they
   /// are: the three must stay unchanged until release() or the next set_operator(). Forms D^-1.
-  void set_operator(const std::vector<double>& M, const std::vector<double>& L, const std::vector<double>& mass_weight)
+  void set_operator(const Value_array& M, const Value_array& L, const std::vector<double>& mass_weight)
   {
     M_ = &M;
     L_ = &L;
@@ -163,7 +163,8 @@ public:
   /// Frees what set_operator() formed and the products' scratch, and lets go of M and L.
   void release()
   {
-    M_ = L_ = mass_weight_ = nullptr;
+    M_ = L_ = nullptr;
+    mass_weight_ = nullptr;
     Q_ = A_ = Eigen::SparseMatrix<double>();
     Q_formed_ = A_formed_ = false;
     full_.resize(0, 0);
@@ -192,8 +193,8 @@ private:
   std::vector<bool> is_free_;
   std::vector<int> free_;
   // the operator's (values over pattern_) and the local time scale's weights: unchanged while a step is solved
-  const std::vector<double>* M_ = nullptr;
-  const std::vector<double>* L_ = nullptr;
+  const Value_array* M_ = nullptr;
+  const Value_array* L_ = nullptr;
   const std::vector<double>* mass_weight_ = nullptr;
   Eigen::SparseMatrix<double> Q_, A_;   // formed for a factorisation only
   bool Q_formed_ = false, A_formed_ = false;

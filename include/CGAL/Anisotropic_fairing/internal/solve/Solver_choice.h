@@ -64,7 +64,7 @@ public:
   /// Solves A X = B the chosen way (X holds the initial guess of conjugate gradients), A given by its
   /// structure and values; a conjugate-gradient solve that fails is retried by the factorisation when
   /// allowed. `direct`: how it was solved.
-  Solve_statistics solve(const Sparse_structure& S, const std::vector<double>& values, const Control_matrix& B, Control_matrix& X,
+  Solve_statistics solve(const Sparse_structure& S, const Value_array& values, const Control_matrix& B, Control_matrix& X,
                          Block_conjugate_gradient& cg, bool& direct)
   {
     Eigen::VectorXd diagonal;

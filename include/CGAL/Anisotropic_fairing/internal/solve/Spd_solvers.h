@@ -103,7 +103,7 @@ inline void symmetric_product(const int* outer, const int* rows, const double* v
 }
 
 /// The same with A's structure and values; `weights` empty: none.
-inline void symmetric_product(const Sparse_structure& S, const std::vector<double>& values, const Control_matrix& X, Control_matrix& Y,
+inline void symmetric_product(const Sparse_structure& S, const Value_array& values, const Control_matrix& X, Control_matrix& Y,
                               const std::vector<double>& weights = std::vector<double>())
 {
   symmetric_product(S.outerIndexPtr(), S.innerIndexPtr(), values.data(), X, Y, weights.empty() ? nullptr : weights.data());

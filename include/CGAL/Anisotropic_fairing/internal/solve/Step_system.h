@@ -29,7 +29,7 @@ namespace internal {
 /// f tau_i L_ij) / sys over the free rows and columns. The system is divided by `sys` (so that a huge tau
 /// cannot overflow), and with several components the unknowns of row i are in units of unknown_scale[i]
 /// (empty: none).
-inline void fill_step_matrix(std::vector<double>& A, const Free_block& block, const std::vector<double>& M, const std::vector<double>& L,
+inline void fill_step_matrix(Value_array& A, const Free_block& block, const Value_array& M, const Value_array& L,
                              const std::vector<double>& tau, const std::vector<double>& omega, double factor, double sys,
                              const std::vector<double>& unknown_scale, const std::vector<double>& mass_weight)
 {
@@ -59,7 +59,7 @@ inline void fill_step_matrix(std::vector<double>& A, const Free_block& block, co
 
 /// R = f tau_i (omega_i M (X0 - X) - L X)_i for all rows: the right-hand side of a time step for the
 /// displacement.
-inline void step_residual(const Sparse_structure& pattern, const std::vector<double>& M, const std::vector<double>& L,
+inline void step_residual(const Sparse_structure& pattern, const Value_array& M, const Value_array& L,
                           const std::vector<double>& tau, const std::vector<double>& omega, const Control_matrix& X,
                           const Control_matrix& X0, double f, Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, Eigen::RowMajor>& R,
                           const std::vector<double>& mass_weight = std::vector<double>())
@@ -86,7 +86,7 @@ inline void step_residual(const Sparse_structure& pattern, const std::vector<dou
 }
 
 /// The lumped (row-sum) mass D_i = sum_j M_ij, with the local time scale's weights as in the system.
-inline Eigen::VectorXd lumped_mass(const Sparse_structure& pattern, const std::vector<double>& M,
+inline Eigen::VectorXd lumped_mass(const Sparse_structure& pattern, const Value_array& M,
                                    const std::vector<double>& mass_weight)
 {
   const int* outer = pattern.outerIndexPtr();

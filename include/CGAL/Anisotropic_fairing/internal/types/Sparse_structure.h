@@ -9,6 +9,8 @@
 #ifndef CGAL_ANISOTROPIC_FAIRING_INTERNAL_TYPES_SPARSE_STRUCTURE_H
 #define CGAL_ANISOTROPIC_FAIRING_INTERNAL_TYPES_SPARSE_STRUCTURE_H
 
+#include <CGAL/Anisotropic_fairing/internal/types/Value_array.h>
+
 #include <Eigen/SparseCore>
 
 #include <algorithm>
@@ -74,7 +76,7 @@ public:
     else std::fill(A.valuePtr(), A.valuePtr() + inner_.size(), 0.0);
     return A;
   }
-  Eigen::SparseMatrix<double> matrix(const std::vector<double>& values) const { return matrix(values.data()); }
+  Eigen::SparseMatrix<double> matrix(const Value_array& values) const { return matrix(values.data()); }
 
 private:
   Eigen::Index n_ = 0;
