@@ -9,6 +9,7 @@
 #define CGAL_ANISOTROPIC_FAIRING_INTERNAL_MESH_TRIANGLE_TOPOLOGY_H
 
 #include <CGAL/Anisotropic_fairing/Input_error.h>
+#include <CGAL/Anisotropic_fairing/internal/types/Parallel_blocks.h>
 
 #include <algorithm>
 #include <array>
@@ -147,16 +148,24 @@ private:
                           " is used by more than two faces, twice in the same direction, or twice");
       out_[s] = h;
     }
-    for(int h = 0; h < int(nh); ++h)
-    {
-      const int o = find(target(h), source(h), int(nh));
-      if(o < 0 && !is_closed(source(h)) && !is_closed(target(h))) continue;   // ghost border
-      if(o < 0)
-        throw Input_error(Input_error::BORDER_EDGE, std::size_t(source(h)),
-                          "the edge between vertices " + std::to_string(source(h)) + " and " +
-                          std::to_string(target(h)) + " is a border edge; this operation needs a closed mesh");
-      opposite_[h] = o;
-    }
+    // each halfedge's opposite on every core; the error names the first border edge, as a serial loop would
+    const std::size_t bucket = 4096, buckets = nh / bucket + 1;   // fixed buckets: one writer per entry of first_border
+    std::vector<int> first_border(buckets, int(nh));
+    parallel_blocks(buckets, [&](std::size_t first, std::size_t last) {
+      for(std::size_t k = first; k < last; ++k)
+        for(int h = int(k * bucket); h < int(std::min(nh, (k + 1) * bucket)); ++h)
+        {
+          const int o = find(target(h), source(h), int(nh));
+          if(o < 0 && !is_closed(source(h)) && !is_closed(target(h))) continue;   // ghost border
+          if(o < 0) first_border[k] = std::min(first_border[k], h);
+          else opposite_[h] = o;
+        }
+    }, std::size_t(1), std::size_t(1));
+    const int border = *std::min_element(first_border.begin(), first_border.end());
+    if(border < int(nh))
+      throw Input_error(Input_error::BORDER_EDGE, std::size_t(source(border)),
+                        "the edge between vertices " + std::to_string(source(border)) + " and " +
+                        std::to_string(target(border)) + " is a border edge; this operation needs a closed mesh");
 
     outgoing_count_ = std::move(outgoing_count);
     check_fans();

@@ -67,22 +67,24 @@ inline void step_residual(const Sparse_structure& pattern, const Value_array& M,
   const int* outer = pattern.outerIndexPtr();
   const int* rows = pattern.innerIndexPtr();
   const Eigen::Index k = X.cols();
-  for(Eigen::Index i = 0; i < X.rows(); ++i)
-  {
-    double* r = R.row(i).data();
-    std::fill(r, r + k, 0.0);
-    const double w = omega[std::size_t(i)];
-    for(int p = outer[i]; p < outer[i + 1]; ++p)
+  parallel_blocks(X.rows(), [&](Eigen::Index first, Eigen::Index last) {   // row i: column i of the symmetric pattern
+    for(Eigen::Index i = first; i < last; ++i)
     {
-      const Eigen::Index j = rows[p];
-      double m = w * M[std::size_t(p)];
-      if(!mass_weight.empty()) m *= mass_weight[std::size_t(i)] * mass_weight[std::size_t(j)];
-      const double l = L[std::size_t(p)];
-      for(Eigen::Index col = 0; col < k; ++col) r[col] += m * (X0(j, col) - X(j, col)) - l * X(j, col);
+      double* r = R.row(i).data();
+      std::fill(r, r + k, 0.0);
+      const double w = omega[std::size_t(i)];
+      for(int p = outer[i]; p < outer[i + 1]; ++p)
+      {
+        const Eigen::Index j = rows[p];
+        double m = w * M[std::size_t(p)];
+        if(!mass_weight.empty()) m *= mass_weight[std::size_t(i)] * mass_weight[std::size_t(j)];
+        const double l = L[std::size_t(p)];
+        for(Eigen::Index col = 0; col < k; ++col) r[col] += m * (X0(j, col) - X(j, col)) - l * X(j, col);
+      }
+      const double t = f * tau[std::size_t(i)];
+      for(Eigen::Index col = 0; col < k; ++col) r[col] *= t;
     }
-    const double t = f * tau[std::size_t(i)];
-    for(Eigen::Index col = 0; col < k; ++col) r[col] *= t;
-  }
+  });
 }
 
 /// The lumped (row-sum) mass D_i = sum_j M_ij, with the local time scale's weights as in the system.
