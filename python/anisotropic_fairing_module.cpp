@@ -1,7 +1,9 @@
-// The Python module anisotropic_fairing (pybind11): the package's fairing and limit surface on numpy
-// arrays. fair() reads its keyword arguments straight into the command-line program's options and makes the
-// program's library call (fairing_call.h), so that its defaults, its checks, its result and its report
-// (the program's JSON, as a dict) are the program's.
+// anisotropic_fairing._core, the compiled part of the Python package anisotropic_fairing (pybind11): the
+// package's fairing and limit surface on numpy arrays. The package (src/anisotropic_fairing/__init__.py)
+// gives fair() its typed keyword parameters and its documentation. fair() reads its keyword arguments
+// straight into the command-line program's options and makes the program's library call (fairing_call.h),
+// so that its defaults, its checks, its result and its report (the program's JSON, as a dict) are the
+// program's.
 #include "fairing_call.h"
 #include "json_report.h"
 #include "mesh_file_check.h"
@@ -262,7 +264,7 @@ Options options_of(const py::kwargs& kwargs, py::ssize_t attribute_columns)
     if(item.second.is_none()) continue;   // None: the default
     if(name == "maximum_deviation" &&
        PyErr_WarnEx(PyExc_DeprecationWarning, "maximum_deviation is relative (units of l); write relative_maximum_deviation, or "
-                    "absolute_maximum_deviation for model units", 1) != 0)
+                    "absolute_maximum_deviation for model units", 2) != 0)
       throw py::error_already_set();
     if((name == "maximum_deviation" || name == "relative_maximum_deviation") && std::exchange(relative_bound, true))
       throw py::value_error("give one of relative_maximum_deviation and absolute_maximum_deviation (maximum_deviation: the "
@@ -379,7 +381,7 @@ py::tuple fair(py::handle V, py::handle F, py::handle attributes, py::handle ver
   py::object report = json_loads(report_json(o, r, wall.time()));
   if(!r.report.succeeded())
   {
-    py::object error = py::module_::import("anisotropic_fairing").attr("FairingError")(
+    py::object error = py::module_::import("anisotropic_fairing._core").attr("FairingError")(
         "fairing failed (" + r.status + "): " + (r.message.empty() ? std::string("no detail") : r.message));
     error.attr("report") = report;
     PyErr_SetObject(error.get_type().ptr(), error.ptr());
@@ -505,37 +507,19 @@ private:
 
 } // namespace
 
-PYBIND11_MODULE(anisotropic_fairing, m)
+PYBIND11_MODULE(_core, m)
 {
-  m.doc() = "Anisotropic fairing of triangle meshes and of functions on them (Bajaj & Xu 2003) with Loop-subdivision "
-            "finite elements: the Anisotropic_fairing package for numpy arrays.";
+  m.doc() = "The compiled part of the package anisotropic_fairing: use the package (import anisotropic_fairing).";
   m.attr("__version__") = AF_VERSION;
   // raised with the report attached (fair()); the C++ type only names it
   static py::exception<Fairing_failed> fairing_error(m, "FairingError", PyExc_RuntimeError);
   m.def("fair", &fair, py::arg("V"), py::arg("F"), py::kw_only(), py::arg("attributes") = py::none(),
         py::arg("vertex_is_constrained") = py::none(), py::arg("callback") = py::none(),
-        R"doc(fair(V, F, *, attributes=None, vertex_is_constrained=None, callback=None, **parameters) -> (V2, attributes2, report)
-
-Fairs the triangle mesh (V: N x 3 float64 positions, F: M x 3 integer vertex indices) and, if given, the
-per-vertex attributes (N x d or N float64), as the command-line program anisotropic_fairing does with the
-same settings. Without parameters: the default run (the parameters are chosen from the mesh).
-
-parameters, the library's named parameters (None: the default): time_step, relative_time_step, flow_order,
-number_of_iterations, stopping_criteria ('auto', 'noise', 'paper', 'off'), fidelity_weight,
-relative_fidelity_weight, relative_maximum_deviation (units of l; maximum_deviation: its deprecated spelling),
-absolute_maximum_deviation,
-attribute_maximum_deviation, finite_element ('loop', 'linear'), output_positions ('limit', 'control'),
-tensor ('isotropic', 'anisotropic', 'uniform'), lambda_, epsilon, tangential_motion ('remove', 'keep'),
-linear_solver ('auto', 'cg', 'cholesky'), boundary_handling ('curve', 'vertices'), quadrature_degree,
-attribute_mode ('separate', 'coupled', 'attributes', 'geometry'), attribute_weight.
-vertex_is_constrained: N values, non-zero holds the vertex. callback(step: dict) is called after each step
-(step, time, time_step, area, energy, H_integral, max_displacement, solver_iterations); returning False
-ends the run, an exception it raises ends it and is raised again.
-
-Returns the faired positions (N x 3), the faired attributes (None without) and the report: a dict with the
-keys of the program's JSON report. Raises ValueError for invalid input or parameters (the message names
-the row or the parameter), TypeError for arrays of the wrong type, FairingError (with .report) if the
-fairing fails; the input arrays are never modified. The GIL is released during the run.)doc");
+        "fair(V, F, *, attributes=None, vertex_is_constrained=None, callback=None, **parameters) -> (V2, attributes2, report): "
+        "anisotropic_fairing.fair's run; its parameters (parameter_names) are checked here, as the program checks its options");
+  py::tuple names(keywords.size());
+  for(std::size_t k = 0; k < keywords.size(); ++k) names[k] = py::str(keywords[k]);
+  m.attr("parameter_names") = names;   // the package's fair() passes these on
   py::class_<Limit_surface>(m, "LimitSurface", "The Loop limit surface of a triangle mesh (see limit_surface()).")
       .def_property_readonly("positions", &Limit_surface::positions, "the limit points of the vertices (N x 3)")
       .def_property_readonly("normals", &Limit_surface::normals, "the unit normals of the limit surface at the vertices (N x 3)")
@@ -550,4 +534,6 @@ fairing fails; the input arrays are never modified. The GIL is released during t
         py::arg("V"), py::arg("F"), py::kw_only(), py::arg("quadrature_degree") = 8,
         "limit_surface(V, F, *, quadrature_degree=8) -> LimitSurface: the Loop limit surface of the mesh, with limit "
         "positions, normals, curvatures and resample(levels)");
+  // the names users meet, in tracebacks and help(): the package's
+  for(const char* name : { "FairingError", "LimitSurface" }) m.attr(name).attr("__module__") = "anisotropic_fairing";
 }

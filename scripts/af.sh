@@ -25,7 +25,7 @@ JOBS=2
 DEB_PACKAGES=(libcgal-dev libeigen3-dev libboost-dev libtbb-dev nlohmann-json3-dev cmake g++ python3)   # nlohmann-json: the program's report; python3: the cli_* tests
 DOC_PACKAGES=(doxygen libjs-mathjax)   # the test command's: the manual, checked without warnings, its formulas offline
 RENDER_PACKAGES=(python3-vtk9 xvfb xauth)   # the renderer of --snapshot and of the figures (VTK under a virtual display)
-PYTHON_PACKAGES=(pybind11-dev python3-dev python3-numpy python3-pytest)   # the Python module (python/) and its tests
+PYTHON_PACKAGES=(pybind11-dev python3-dev python3-numpy python3-pytest python3-venv python3-skbuild python3-meshio python3-open3d mypy ccache)   # the Python package (python/), pip install . (scikit-build, ccache), its tests and stubs (mypy)
 DISTRIBUTED_PACKAGES=(libpetsc-real-dev)   # the test command's: PETSc (with Open MPI) for anisotropic_fairing_mpi and its distributed_* tests
 
 # The main program: the one place to change what `af.sh main` runs.
@@ -69,8 +69,16 @@ cmd_deps() {
   "${as_root[@]}" env DEBIAN_FRONTEND=noninteractive apt-get install -y "${missing[@]}"
 }
 
+# ccache, when installed (the test command installs it): CMake (3.17 and later) takes this variable as a new
+# build directory's compiler launcher, so that the Python package that python_package builds again with
+# `pip install .` reuses the objects of build/ instead of compiling them a second time.
+use_ccache() {
+  if command -v ccache >/dev/null 2>&1; then export CMAKE_CXX_COMPILER_LAUNCHER="${CMAKE_CXX_COMPILER_LAUNCHER:-ccache}"; fi
+}
+
 cmd_build() {
   cmd_deps
+  use_ccache
   cmake -S . -B "$BUILD_DIR" -DCMAKE_BUILD_TYPE=Release
   cmake --build "$BUILD_DIR" -j"$JOBS"
 }
@@ -78,6 +86,7 @@ cmd_build() {
 cmd_main() {
   # only the program it runs: the tests and examples are the test command's
   cmd_deps
+  use_ccache
   cmake -S . -B "$BUILD_DIR" -DCMAKE_BUILD_TYPE=Release
   cmake --build "$BUILD_DIR" -j"$JOBS" --target anisotropic_fairing
   [ -x "$MAIN_EXE" ] || die "main program not built: $MAIN_EXE"

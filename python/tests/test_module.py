@@ -1,7 +1,8 @@
-"""Tests of the Python module anisotropic_fairing (pytest; run by CTest as python_module).
+"""Tests of the Python package anisotropic_fairing (pytest; run by CTest as python_module, and as
+python_package against the package pip installed).
 
-The environment gives the module (PYTHONPATH), the command-line program (AF_TOOL) and the data
-(AF_DATA: examples/Anisotropic_fairing/data). The module must give the program's results (to 1e-12) and
+The environment gives the package (PYTHONPATH, or none: the installed one), the command-line program
+(AF_TOOL) and the data (AF_DATA: examples/Anisotropic_fairing/data); meshes are read and written by meshio. The module must give the program's results (to 1e-12) and
 the program's report keys; bad input raises, never crashes; the GIL is released during a run.
 """
 import json
@@ -11,6 +12,7 @@ import subprocess
 import threading
 import time
 
+import meshio
 import numpy as np
 import pytest
 
@@ -20,38 +22,20 @@ TOOL = os.environ.get('AF_TOOL', '')
 DATA = os.environ.get('AF_DATA', '')
 
 
-def read_obj(path):
-    V, F = [], []
-    for line in open(path):
-        t = line.split()
-        if t and t[0] == 'v':
-            V.append([float(x) for x in t[1:4]])
-        elif t and t[0] == 'f':
-            F.append([int(x.split('/')[0]) - 1 for x in t[1:4]])
-    return np.array(V), np.array(F)
-
-
-def read_off(path):
-    words = [l.split() for l in open(path) if l.strip() and not l.startswith('#')]
-    n, m = int(words[1][0]), int(words[1][1])
-    return np.array([[float(x) for x in w[:3]] for w in words[2:2 + n]])
+def read_mesh(path):
+    """V (N x 3 float64), F (M x 3 int64) of a triangle mesh file, read by meshio"""
+    m = meshio.read(path)
+    return m.points, m.get_cells_type('triangle')
 
 
 def write_ply(path, V, F, q):
-    with open(path, 'w') as f:
-        f.write('ply\nformat ascii 1.0\nelement vertex %d\nproperty double x\nproperty double y\nproperty double z\n'
-                'property double q\nelement face %d\nproperty list uchar int vertex_indices\nend_header\n' % (len(V), len(F)))
-        for p, value in zip(V, q):
-            f.write('%r %r %r %r\n' % (float(p[0]), float(p[1]), float(p[2]), float(value)))
-        for t in F:
-            f.write('3 %d %d %d\n' % tuple(t))
+    """a binary PLY (every double exact) with the vertex property q"""
+    meshio.Mesh(V, [('triangle', F.astype(np.int32))], point_data={'q': q}).write(path, binary=True)
 
 
 def read_ply_xyzq(path):
-    header, body = open(path).read().split('end_header\n', 1)
-    n = int(header.split('element vertex ')[1].split()[0])
-    rows = [r.split() for r in body.splitlines()[:n]]
-    return np.array([[float(x) for x in r[:3]] for r in rows]), np.array([float(r[3]) for r in rows])
+    m = meshio.read(path)
+    return m.points, m.point_data['q']
 
 
 def run_tool(args, cwd):
@@ -62,7 +46,7 @@ def run_tool(args, cwd):
 
 @pytest.fixture(scope='module')
 def fandisk():
-    return read_obj(os.path.join(DATA, 'fandisk_noisy.obj'))
+    return read_mesh(os.path.join(DATA, 'fandisk_noisy.obj'))
 
 
 def grid(n=8, z=None):
@@ -81,7 +65,7 @@ def grid(n=8, z=None):
 def test_default_run_equals_the_program(fandisk, tmp_path):
     V, F = fandisk
     run_tool([os.path.join(DATA, 'fandisk_noisy.obj'), 'out.off', '--report', 'out.json'], tmp_path)
-    expected = read_off(tmp_path / 'out.off')
+    expected, _ = read_mesh(tmp_path / 'out.off')
     program_report = json.load(open(tmp_path / 'out.json'))
     V0, F0 = V.copy(), F.copy()
     V2, attributes, report = af.fair(V, F)
@@ -255,3 +239,57 @@ def test_limit_surface():
     normals = af.limit_surface(V, F).normals
     for a, b in ((c['d1'], c['d2']), (c['d1'], normals), (c['d2'], normals)):
         assert np.abs(np.einsum('ij,ij->i', a, b)).max() < 1e-9
+
+
+def test_fair_has_every_parameter_as_a_typed_keyword():
+    """the package's fair() names every parameter the compiled part takes, keyword-only, default None"""
+    import inspect
+    from anisotropic_fairing import _core
+    parameters = inspect.signature(af.fair).parameters
+    assert list(parameters)[:2] == ['V', 'F']
+    keywords = list(parameters)[2:]
+    assert keywords == ['attributes', 'vertex_is_constrained', 'callback'] + list(_core.parameter_names)
+    for name in keywords:
+        assert parameters[name].kind == inspect.Parameter.KEYWORD_ONLY and parameters[name].default is None, name
+    assert 'relative_time_step' in af.fair.__doc__ and af.__version__
+
+
+def conforms(value, annotation):
+    """whether a JSON value has the type `annotation` (the typing forms report.py uses)"""
+    import typing
+    origin, args = typing.get_origin(annotation), typing.get_args(annotation)
+    if origin is typing.Union:
+        return any(conforms(value, a) for a in args)
+    if origin is list:
+        return isinstance(value, list) and all(conforms(v, args[0]) for v in value)
+    if annotation is type(None):
+        return value is None
+    if typing.is_typeddict(annotation):
+        hints = typing.get_type_hints(annotation)
+        return isinstance(value, dict) and set(value) == set(hints) and all(conforms(value[k], hints[k]) for k in hints)
+    if annotation is float:
+        return isinstance(value, (int, float)) and not isinstance(value, bool)
+    if annotation is int:
+        return isinstance(value, int) and not isinstance(value, bool)
+    return isinstance(value, annotation)
+
+
+def test_the_report_is_a_fairing_report(fandisk, tmp_path):
+    """every report (a run, a run with attributes and a bound, a failed one, the program's) has exactly the
+    keys of FairingReport, each value of its type; the callback's dict is a StepInfo"""
+    V, F = fandisk
+    seen = []
+    _, _, default = af.fair(V, F, callback=lambda s: seen.append(s))
+    assert conforms(default, af.FairingReport) and len(default['steps']) > 0
+    assert seen and all(conforms(s, af.StepInfo) for s in seen)
+    _, _, bounded = af.fair(V, F, attributes=np.column_stack([V[:, 0], V[:, 1]]), attribute_mode='coupled',
+                            relative_maximum_deviation=0.002, number_of_iterations=2)
+    assert conforms(bounded, af.FairingReport)
+    with pytest.raises(af.FairingError) as e:
+        octahedron = np.array([[1, 0, 0], [-1, 0, 0], [0, 1, 0], [0, -1, 0], [0, 0, 1], [0, 0, -1]], dtype=float)
+        faces = np.array([[0, 2, 4], [2, 1, 4], [1, 3, 4], [3, 0, 4], [2, 0, 5], [1, 2, 5], [3, 1, 5], [0, 3, 5]])
+        af.fair(octahedron, faces, relative_time_step=10, number_of_iterations=50, stopping_criteria='off')
+    assert conforms(e.value.report, af.FairingReport)
+    run_tool([os.path.join(DATA, 'fandisk_noisy.obj'), 'out.off', '--report', 'out.json', '--resample', '1'], tmp_path)
+    assert conforms(json.load(open(tmp_path / 'out.json')), af.FairingReport)
+    assert not conforms(dict(default, vertices='many'), af.FairingReport), 'the check can fail'

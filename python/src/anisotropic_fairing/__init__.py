@@ -1,0 +1,57 @@
+"""Anisotropic fairing of triangle meshes and of functions on them (Bajaj & Xu 2003) with Loop-subdivision
+finite elements: the Anisotropic_fairing package for numpy arrays.
+
+    import anisotropic_fairing as af
+    V2, _, report = af.fair(V, F)        # the default run: every parameter chosen from the mesh
+
+:func:`fair` fairs a mesh given as arrays (and functions on it, as ``attributes``); :func:`limit_surface`
+gives its Loop limit surface (exact positions, normals, curvatures, finer meshes); :func:`fair_meshio`
+and :func:`fair_open3d` fair a ``meshio.Mesh`` and an Open3D ``TriangleMesh``. The types are in the
+package's stubs (``__init__.pyi``); the report is a :class:`FairingReport`.
+"""
+from . import _core
+from ._core import FairingError, LimitSurface, __version__, limit_surface
+from .meshes import fair_meshio, fair_open3d
+from .report import FairingReport, FairingStep, InitialSurface, StepInfo
+
+__all__ = ['fair', 'limit_surface', 'LimitSurface', 'FairingError', 'fair_meshio', 'fair_open3d', 'FairingReport',
+           'FairingStep', 'InitialSurface', 'StepInfo', '__version__']
+
+
+def fair(V, F, *, attributes=None, vertex_is_constrained=None, callback=None, time_step=None, relative_time_step=None,
+         flow_order=None, number_of_iterations=None, stopping_criteria=None, fidelity_weight=None,
+         relative_fidelity_weight=None, relative_maximum_deviation=None, absolute_maximum_deviation=None,
+         maximum_deviation=None, attribute_maximum_deviation=None, finite_element=None, output_positions=None,
+         tensor=None, lambda_=None, epsilon=None, tangential_motion=None, linear_solver=None, boundary_handling=None,
+         quadrature_degree=None, attribute_mode=None, attribute_weight=None):
+    """Fairs a triangle mesh and, if given, the functions on it; returns ``(V2, attributes2, report)``.
+
+    ``V``: N x 3 positions (float64), ``F``: M x 3 vertex indices (integers) of an oriented 2-manifold mesh,
+    with or without borders. ``attributes``: N x d (or N) float64 values per vertex, faired with the surface.
+    ``vertex_is_constrained``: N values, non-zero holds the vertex. ``callback(step)``: called after each
+    step with a :class:`StepInfo` dict; returning False ends the run, an exception it raises ends it and is
+    raised again.
+
+    Every other parameter left at None takes its default; with none given this is the default run, every
+    setting chosen from the mesh (noise estimate, tensor, time step, stop at the noise level), as the
+    command-line program ``anisotropic_fairing`` does. They are the library's named parameters:
+    ``time_step`` or ``relative_time_step`` (units of l^2, l the model's scale), ``flow_order`` (2 or 4),
+    ``number_of_iterations``, ``stopping_criteria`` ('auto', 'noise', 'paper', 'off'), ``fidelity_weight``
+    or ``relative_fidelity_weight``, ``relative_maximum_deviation`` (units of l) or
+    ``absolute_maximum_deviation`` (model units; ``maximum_deviation``: the relative one's deprecated
+    spelling), ``attribute_maximum_deviation``, ``finite_element`` ('loop', 'linear'), ``output_positions``
+    ('limit', 'control'), ``tensor`` ('isotropic', 'anisotropic', 'uniform') with, for 'anisotropic',
+    ``lambda_``, ``epsilon`` and ``tangential_motion`` ('remove', 'keep'), ``linear_solver`` ('auto', 'cg',
+    'cholesky'), ``boundary_handling`` ('curve', 'vertices'), ``quadrature_degree``, ``attribute_mode``
+    ('separate', 'coupled', 'attributes', 'geometry') and ``attribute_weight``.
+
+    Returns the faired positions (N x 3), the faired attributes (the shape given; None without) and the
+    report (:class:`FairingReport`: the keys of the program's JSON report). Raises ValueError for invalid
+    input or parameters (the message names the row or the parameter), TypeError for arrays or values of the
+    wrong type, :class:`FairingError` (with ``.report``) if the fairing fails. The input arrays are never
+    modified; the GIL is released while the run computes.
+    """
+    given = locals()
+    parameters = {name: given[name] for name in _core.parameter_names if given[name] is not None}
+    return _core.fair(V, F, attributes=attributes, vertex_is_constrained=vertex_is_constrained, callback=callback,
+                      **parameters)

@@ -1,0 +1,124 @@
+"""The report of a run as a typed dictionary: the keys and value types of the program's JSON report
+(``anisotropic_fairing --report``), which :func:`anisotropic_fairing.fair` returns as a ``dict``.
+
+A key whose value the run does not know (a setting not given, a number that is not finite) holds ``None``.
+The manual's page on the program lists what each key means.
+"""
+from typing import List, Optional, TypedDict
+
+__all__ = ['FairingReport', 'FairingStep', 'InitialSurface', 'StepInfo']
+
+
+class InitialSurface(TypedDict):
+    """The input's limit surface (``report['initial']``)."""
+    area: Optional[float]
+    energy: Optional[float]
+    H_integral: Optional[float]
+
+
+class FairingStep(TypedDict):
+    """One accepted time step (``report['steps'][k]``)."""
+    step: int
+    time: Optional[float]
+    solver_iterations: int
+    residual: Optional[float]
+    area: Optional[float]
+    energy: Optional[float]
+    H_integral: Optional[float]
+    max_displacement: Optional[float]
+    step_displacement: Optional[float]
+    assemble_seconds: Optional[float]
+    solve_seconds: Optional[float]
+    direct_solve: bool
+    time_step: Optional[float]
+    noise_displacement: Optional[float]
+
+
+class StepInfo(TypedDict):
+    """What a ``callback`` of :func:`anisotropic_fairing.fair` receives after each step."""
+    step: int
+    time: float
+    time_step: float
+    area: float
+    energy: float
+    H_integral: float
+    max_displacement: float
+    solver_iterations: int
+
+
+# The functional form: one key, ``lambda``, is a Python keyword.
+FairingReport = TypedDict('FairingReport', {
+    'status': str,
+    'message': str,
+    'input': Optional[str],
+    'output': Optional[str],
+    'vertices': Optional[int],
+    'faces': Optional[int],
+    'element': str,
+    'output_positions': str,
+    'tensor': str,
+    'lambda': Optional[float],
+    'lambda_model_units': Optional[float],
+    'epsilon': Optional[float],
+    'tangential_motion': str,
+    'solver': Optional[str],
+    'requested_solver': str,
+    'stop': str,
+    'max_steps': int,
+    'quadrature_degree': int,
+    'time_step': Optional[float],
+    'order': int,
+    'relative_time_step': Optional[float],
+    'scale': Optional[float],
+    'fidelity_weight': Optional[float],
+    'relative_fidelity_weight': Optional[float],
+    'mean_edge_length': Optional[float],
+    'normals': str,
+    'curvature': bool,
+    'hold': Optional[str],
+    'held_vertices': int,
+    'resample': Optional[int],
+    'resampled_vertices': Optional[int],
+    'resampled_faces': Optional[int],
+    'snapshot': Optional[str],
+    'mode': str,
+    'attributes': List[str],
+    'attribute_dimension': Optional[int],
+    'attribute_weight': Optional[float],
+    'boundary_handling': str,
+    'boundary_vertices': Optional[int],
+    'boundary_held_vertices': Optional[int],
+    'boundary_loops': Optional[int],
+    'isolated_vertices': Optional[int],
+    'constrained_vertices': Optional[int],
+    'stop_reason': Optional[str],
+    'automatic_parameters': bool,
+    'choices': Optional[str],
+    'noise_level': Optional[float],
+    'noise_deviation': Optional[float],
+    'noise_displacement': Optional[float],
+    'removed_spikes': Optional[int],
+    'limit_weight': Optional[float],
+    'components': Optional[int],
+    'rejected_steps': Optional[int],
+    'maximum_deviation': Optional[float],
+    'relative_maximum_deviation': Optional[float],
+    'largest_deviation': Optional[float],
+    'attribute_maximum_deviation': Optional[float],
+    'largest_attribute_deviation': Optional[float],
+    'bound_fidelity_weight': Optional[float],
+    'bound_held_vertices': Optional[int],
+    'bound_uniform_weight': Optional[float],
+    'bound_retaken_steps': Optional[int],
+    'clamped_vertices': Optional[int],
+    'initial': Optional[InitialSurface],
+    'steps': List[FairingStep],
+    'read_seconds': Optional[float],
+    'input_seconds': Optional[float],
+    'setup_seconds': Optional[float],
+    'write_back_seconds': Optional[float],
+    'total_seconds': Optional[float],
+    'write_seconds': Optional[float],
+    'wall_seconds': Optional[float],
+})
+FairingReport.__doc__ = """The report of a run: the program's JSON report (``anisotropic_fairing --report``) as a dict."""
