@@ -4,8 +4,11 @@
 #   bash scripts/af.sh deps    install the missing Debian 12 packages (as root, or through sudo)
 #   bash scripts/af.sh build   deps, then configure (Release) and build everything into build/
 #   bash scripts/af.sh main    build, then fair the bundled noisy fandisk with build/bin/anisotropic_fairing
-#   bash scripts/af.sh test    build, then run all CTest tests (non-zero exit on failure), then
-#                              `sanitize input`: what CI runs
+#   bash scripts/af.sh test    build everything it installs (the distributed program too, whatever ran
+#                              before), run all CTest tests under the read check (scripts/check_reads.py:
+#                              a test that touches a file beside the repository, such as ../shared,
+#                              fails the run), then `sanitize input`; non-zero exit on any failure:
+#                              what CI runs
 #   bash scripts/af.sh sanitize [input]  build into build-sanitize/ with AddressSanitizer and
 #                              UndefinedBehaviorSanitizer, then run all CTest tests there; with
 #                              `input`, only the program and the tests of reading and of the
@@ -25,8 +28,10 @@ JOBS=2
 DEB_PACKAGES=(libcgal-dev libeigen3-dev libboost-dev libtbb-dev nlohmann-json3-dev cmake g++ python3)   # nlohmann-json: the program's report; python3: the cli_* tests
 DOC_PACKAGES=(doxygen libjs-mathjax)   # the test command's: the manual, checked without warnings, its formulas offline
 RENDER_PACKAGES=(python3-vtk9 xvfb xauth)   # the renderer of --snapshot and of the figures (VTK under a virtual display)
-PYTHON_PACKAGES=(pybind11-dev python3-dev python3-numpy python3-pytest python3-venv python3-skbuild python3-meshio python3-open3d mypy ccache)   # the Python package (python/), pip install . (scikit-build, ccache), its tests and stubs (mypy)
+PYTHON_PACKAGES=(pybind11-dev python3-dev python3-numpy python3-pytest python3-venv python3-skbuild python3-meshio python3-open3d python3-tqdm mypy ccache)   # the Python package (python/), pip install . (scikit-build, ccache), its tests (tqdm: the progress bar; VTK, for fair_vtk, comes with RENDER_PACKAGES) and stubs (mypy)
 DISTRIBUTED_PACKAGES=(libpetsc-real-dev)   # the test command's: PETSc (with Open MPI) for anisotropic_fairing_mpi and its distributed_* tests
+CHECK_PACKAGES=(strace)   # the test command's read check (scripts/check_reads.py)
+CONFIGURE_ARGS=()   # more arguments for the configure step of build/ (the test command requires the distributed part)
 
 # The main program: the one place to change what `af.sh main` runs.
 # The default run, no tuning flag: fairs the noisy fandisk of the denoising benchmark (6475 vertices,
@@ -42,7 +47,7 @@ log() { printf '[af] %s\n' "$*" >&2; }
 die() { printf '[af] error: %s\n' "$*" >&2; exit 1; }
 
 usage() {
-  sed -n '2,15p' "${BASH_SOURCE[0]}" | sed 's/^# \{0,1\}//' >&2
+  sed -n '2,18p' "${BASH_SOURCE[0]}" | sed 's/^# \{0,1\}//' >&2
 }
 
 is_installed() {
@@ -79,7 +84,7 @@ use_ccache() {
 cmd_build() {
   cmd_deps
   use_ccache
-  cmake -S . -B "$BUILD_DIR" -DCMAKE_BUILD_TYPE=Release
+  cmake -S . -B "$BUILD_DIR" -DCMAKE_BUILD_TYPE=Release "${CONFIGURE_ARGS[@]}"
   cmake --build "$BUILD_DIR" -j"$JOBS"
 }
 
@@ -95,10 +100,38 @@ cmd_main() {
   echo "Output written to $ROOT/$MAIN_OUTPUT"
 }
 
+# The tests under the read check: strace follows every process of the CTest run (the tests, their
+# compilers, Python, mpirun and the MPI processes) and the run fails, naming them, if any touched a path in
+# the repository's parent directory outside the repository (CI has ../shared there; a fresh clone has
+# nothing), even one a test copes without. (Hiding the parent in a mount namespace instead would only catch
+# reads that make a test fail, and needs CAP_SYS_ADMIN, which containers deny more often than ptrace.)
+# The check first proves itself (self-test: it must catch probes that read beside a scratch repository)
+# and fails loudly if it cannot trace here; it does not fall back to an unchecked run. AF_READ_CHECK=off
+# runs the tests unchecked, with a warning (refused when CI=true). Its cost: about a quarter more CPU time
+# on tests that start many processes or compile (the corpus, cli, python, distributed, consumer tests),
+# 2% on the numerical ones: under a minute on the suite. The sanitized run is not traced (LeakSanitizer
+# cannot work under ptrace); its tests are ones the traced run has just run.
+run_checked_tests() {
+  if [ "${AF_READ_CHECK:-on}" = off ]; then
+    [ "${CI:-}" != true ] || die "AF_READ_CHECK=off: the read check cannot be turned off in CI"
+    log "WARNING: AF_READ_CHECK=off: the tests run WITHOUT the check that they read nothing beside the repository"
+    "$@"
+    return
+  fi
+  local python=/usr/bin/python3
+  [ -x "$python" ] || python=python3
+  "$python" scripts/check_reads.py self-test ||
+    die "the read check does not work here (above); it needs strace and ptrace (in a container: --cap-add SYS_PTRACE). AF_READ_CHECK=off runs the tests without it"
+  "$python" scripts/check_reads.py run --repo "$ROOT" -- "$@"
+}
+
 cmd_test() {
-  DEB_PACKAGES+=("${DOC_PACKAGES[@]}" "${RENDER_PACKAGES[@]}" "${PYTHON_PACKAGES[@]}" "${DISTRIBUTED_PACKAGES[@]}")
+  DEB_PACKAGES+=("${DOC_PACKAGES[@]}" "${RENDER_PACKAGES[@]}" "${PYTHON_PACKAGES[@]}" "${DISTRIBUTED_PACKAGES[@]}" "${CHECK_PACKAGES[@]}")
+  # the distributed part required, not left to the build directory's cache: build/ may have been configured
+  # by `main` before PETSc was installed; an error if PETSc or MPI cannot be found
+  CONFIGURE_ARGS+=(-DANISOTROPIC_FAIRING_BUILD_DISTRIBUTED=ON)
   cmd_build
-  ctest --test-dir "$BUILD_DIR" --output-on-failure --no-tests=error -j"$JOBS"
+  run_checked_tests ctest --test-dir "$BUILD_DIR" --output-on-failure --no-tests=error -j"$JOBS"
   cmd_sanitize input
 }
 

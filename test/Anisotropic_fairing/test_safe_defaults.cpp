@@ -4,7 +4,7 @@
 // components are each faired as if alone; zero-area faces are faired; the noise estimate recovers the
 // deviation of generated noise; and the default run denoises the Fandisk0.3 pair.
 //
-// argv[1]: the test data folder; argv[2]: the shared data folder (armadillo.obj).
+// argv[1]: the test data folder (test/Anisotropic_fairing/data), the only place it reads meshes from.
 
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/Surface_mesh.h>
@@ -455,11 +455,10 @@ void local_time_scale_on_a_graded_scan()
 int main(int argc, char** argv)
 {
   DATA = argc > 1 ? argv[1] : "data";
-  const std::string shared = argc > 2 ? argv[2] : "../shared/data";
   constructed_fold();
   known_fold_places();
   stress_rows();
-  noise_free(shared + "/armadillo.obj", 0.05);
+  noise_free(DATA + "/armadillo.obj", 0.05);
   noise_free(DATA + "/camelhead.off", 0.05);
   two_spheres();
   zero_area_faces();
