@@ -26,7 +26,7 @@ setup(
     package_data={'anisotropic_fairing': ['py.typed', '*.pyi']},
     python_requires='>=3.9',
     install_requires=['numpy'],
-    extras_require={'meshio': ['meshio'], 'open3d': ['open3d']},
+    extras_require={'meshio': ['meshio'], 'open3d': ['open3d'], 'vtk': ['vtk'], 'progress': ['tqdm']},
     cmake_args=['-DANISOTROPIC_FAIRING_PYTHON_ONLY=ON', '-DBUILD_TESTING=OFF', '-DCMAKE_BUILD_TYPE=Release'],
     cmake_install_dir='python/src',
 )

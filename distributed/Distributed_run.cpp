@@ -106,13 +106,16 @@ void write_result(const af_tool::Options& o, Input& in, const Replicated_setup& 
   const af_tool::Attribute_vectors attribute_map{ &faired };
   const AF::Attribute_mode mode = in.fair_attributes ? in.mode : AF::Attribute_mode::GEOMETRY_ONLY;
   AFI::write_back(setup.im, values, mode, kept, in.mesh.points(), attribute_map);
+  af_tool::merge_copies(in.mesh, in.info.split);   // a split vertex at the mean of its copies, as anisotropic_fairing writes it
+  af_tool::merge_copies(faired, in.info.split);
   if(in.fair_attributes) af_tool::scatter(in.mesh, in.columns, faired);
   af_tool::Format format;
   af_tool::format_of(o.output, format);
   const std::filesystem::path tmp = af_tool::temporary_next_to(o.output);
   try
   {
-    af_tool::write_mesh(tmp.string(), format, in.mesh, in.info, false);
+    af_tool::write_mesh(tmp.string(), format, in.mesh, in.info, false, o.text_output);
+    af_tool::merge_copies_in_file(tmp.string(), format, in.info.split);
   }
   catch(const af_tool::Failure&)
   {
@@ -132,6 +135,8 @@ void write_result(const af_tool::Options& o, Input& in, const Replicated_setup& 
   for(const std::string& p : af_tool::dropped_properties(in.mesh, format)) dropped += (dropped.empty() ? "" : ", ") + p;
   if(!dropped.empty())
     std::fprintf(stderr, "anisotropic_fairing_mpi: warning: %s cannot hold the input's %s: not written\n", o.output.c_str(), dropped.c_str());
+  for(const std::string& w : in.info.warnings)   // what reading changed for the run (split vertices, triangulated polygons)
+    std::fprintf(stderr, "anisotropic_fairing_mpi: warning: %s\n", af_tool::one_line(w).c_str());
 }
 
 // the flow with one tensor type, on this process's part

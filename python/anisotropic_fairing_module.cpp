@@ -6,12 +6,16 @@
 // program's.
 #include "fairing_call.h"
 #include "json_report.h"
+#include "mesh_arrays.h"
 #include "mesh_file_check.h"
+#include "mesh_repair.h"
 #include "option_words.h"
 #include "options.h"
+#include "vertex_split.h"
 
 #include <CGAL/Anisotropic_fairing/Input_error.h>
 #include <CGAL/Anisotropic_fairing/Loop_limit_surface.h>
+#include <CGAL/Polygon_mesh_processing/compute_normal.h>
 #include <CGAL/Real_timer.h>
 
 #include <pybind11/numpy.h>
@@ -31,6 +35,7 @@
 
 namespace py = pybind11;
 using namespace af_tool;
+using namespace af_python;
 
 namespace {
 
@@ -39,107 +44,11 @@ struct Fairing_failed : std::runtime_error
   using std::runtime_error::runtime_error;
 };
 
-// ---- arrays in, arrays out ------------------------------------------------------------------------
-
-std::string describe(const py::array& a)
+// Thrown by the step callback to end the library's call at once (no further step, no further run of the
+// default run's comparison) when a Python exception is to be raised: Ctrl-C, or one the callback raised.
+struct Run_abandoned
 {
-  std::string shape = "(";
-  for(py::ssize_t i = 0; i < a.ndim(); ++i) shape += (i ? ", " : "") + std::to_string(a.shape(i));
-  return shape + (a.ndim() == 1 ? ",)" : ")") + " and dtype " + py::str(a.dtype()).cast<std::string>();
-}
-
-// `a` as a C-contiguous float64 array of `rows` x `cols` (rows < 0: any; cols < 0: any, and a 1-D array is
-// one column); integers are converted, anything else is refused with a message that names `name`.
-py::array_t<double, py::array::c_style> real_matrix(py::handle a, const std::string& name, py::ssize_t rows, py::ssize_t cols,
-                                                    bool booleans = false)
-{
-  py::array arr = py::array::ensure(a);
-  if(!arr) throw py::type_error(name + " must be a numpy array (or a nested list) of real numbers");
-  const char kind = arr.dtype().kind();
-  if(kind != 'f' && kind != 'i' && kind != 'u' && !(booleans && kind == 'b'))
-    throw py::type_error(name + (booleans ? " must hold booleans or numbers" : " must hold real numbers (float64)") + ", not an array of " +
-                         describe(arr));
-  const bool column = cols < 0 && arr.ndim() == 1;
-  if(!(arr.ndim() == 2 || column) || (cols > 0 && arr.shape(1) != cols))
-    throw py::value_error(name + " must be an " + (cols > 0 ? "N x " + std::to_string(cols) : std::string("N x d (or N)")) +
-                          " array, not one of " + describe(arr));
-  if(rows >= 0 && arr.shape(0) != rows)
-    throw py::value_error(name + " must have one row per vertex (" + std::to_string(rows) + "), not an array of " + describe(arr));
-  return py::array_t<double, py::array::c_style | py::array::forcecast>::ensure(arr);
-}
-
-// The mesh of V (N x 3 float64) and F (M x 3 integers), checked as the program checks a file: every index,
-// every coordinate, and that the faces form an oriented 2-manifold (the message names the row of F).
-Mesh mesh_from_arrays(py::handle V, py::handle F)
-{
-  const auto points = real_matrix(V, "V", -1, 3);
-  py::array faces_in = py::array::ensure(F);
-  if(!faces_in) throw py::type_error("F must be a numpy array (or a nested list) of vertex indices");
-  const char kind = faces_in.dtype().kind();
-  if(kind != 'i' && kind != 'u') throw py::type_error("F must hold integer vertex indices, not an array of " + describe(faces_in));
-  if(faces_in.ndim() != 2 || faces_in.shape(1) != 3) throw py::value_error("F must be an M x 3 array of triangles, not one of " + describe(faces_in));
-  const auto faces = py::array_t<long long, py::array::c_style | py::array::forcecast>::ensure(faces_in);
-  const py::ssize_t n = points.shape(0), m = faces.shape(0);
-  if(m == 0) throw py::value_error("F has no face: nothing to fair");
-
-  Polygon_soup soup;
-  soup.path = "F";
-  auto p = points.unchecked<2>();
-  for(py::ssize_t i = 0; i < n; ++i)
-  {
-    for(int c = 0; c < 3; ++c)
-      if(!std::isfinite(p(i, c))) throw py::value_error("V row " + std::to_string(i) + " is not finite");
-    soup.points.push_back({ p(i, 0), p(i, 1), p(i, 2) });
-  }
-  auto f = faces.unchecked<2>();
-  for(py::ssize_t k = 0; k < m; ++k)
-  {
-    std::vector<std::size_t> face;
-    for(int c = 0; c < 3; ++c)
-    {
-      if(f(k, c) < 0 || f(k, c) >= n)
-        throw py::value_error("F row " + std::to_string(k) + " refers to vertex " + std::to_string(f(k, c)) + ", but V has " +
-                              std::to_string(n) + " vertices (0.." + std::to_string(n - 1) + ")");
-      face.push_back(std::size_t(f(k, c)));
-    }
-    soup.faces.push_back(face);
-    soup.face_place.push_back("row " + std::to_string(k));
-  }
-  try
-  {
-    check_oriented_manifold(soup);
-  }
-  catch(const File_problem& e)
-  {
-    throw py::value_error(e.what());
-  }
-  Mesh mesh;
-  for(const auto& q : soup.points) mesh.add_vertex(Point(q[0], q[1], q[2]));
-  for(const auto& face : soup.faces)
-    if(mesh.add_face(Vertex_index(Mesh::size_type(face[0])), Vertex_index(Mesh::size_type(face[1])),
-                     Vertex_index(Mesh::size_type(face[2]))) == Mesh::null_face())
-      throw py::value_error("F: the triangles cannot form a 2-manifold mesh");
-  return mesh;
-}
-
-py::array_t<double> points_array(const Mesh& mesh)
-{
-  py::array_t<double> out({ py::ssize_t(mesh.number_of_vertices()), py::ssize_t(3) });
-  auto o = out.mutable_unchecked<2>();
-  for(Vertex_index v : mesh.vertices())
-    for(int c = 0; c < 3; ++c) o(py::ssize_t(v), c) = mesh.point(v)[c];
-  return out;
-}
-
-template <typename Vectors>
-py::array_t<double> vectors_array(const Vectors& values)
-{
-  py::array_t<double> out({ py::ssize_t(values.size()), py::ssize_t(3) });
-  auto o = out.mutable_unchecked<2>();
-  for(std::size_t i = 0; i < values.size(); ++i)
-    for(int c = 0; c < 3; ++c) o(py::ssize_t(i), c) = values[i][c];
-  return out;
-}
+};
 
 // ---- fair() ----------------------------------------------------------------------------------------
 
@@ -202,6 +111,7 @@ void take_keyword(Options& o, const std::string& name, py::handle v)
     f.number_of_iterations = unsigned(n);
   }
   else if(name == "stopping_criteria") f.stopping_criteria = stopping_rule(o.stop = word_argument(name, v, stop_words));
+  else if(name == "strength") f.strength = number_argument(name, v);   // (> 0 and the noise stop: checked by the library)
   else if(name == "fidelity_weight") f.fidelity_weight = number_argument(name, v);
   else if(name == "relative_fidelity_weight") f.relative_fidelity_weight = number_argument(name, v);
   else if(name == "relative_maximum_deviation" || name == "maximum_deviation") f.relative_maximum_deviation = number_argument(name, v);
@@ -239,7 +149,7 @@ void take_keyword(Options& o, const std::string& name, py::handle v)
 }
 
 const std::vector<const char*> keywords = {
-  "time_step", "relative_time_step", "flow_order", "number_of_iterations", "stopping_criteria", "fidelity_weight",
+  "time_step", "relative_time_step", "flow_order", "number_of_iterations", "stopping_criteria", "strength", "fidelity_weight",
   "relative_fidelity_weight", "relative_maximum_deviation", "absolute_maximum_deviation", "maximum_deviation",
   "attribute_maximum_deviation", "finite_element", "output_positions", "tensor", "lambda_", "epsilon", "tangential_motion",
   "linear_solver", "boundary_handling", "quadrature_degree", "attribute_mode", "attribute_weight"};
@@ -259,7 +169,7 @@ Options options_of(const py::kwargs& kwargs, py::ssize_t attribute_columns)
       std::string list;
       for(const char* k : keywords) list += std::string(", ") + k;
       throw py::type_error("fair() got an unexpected keyword argument '" + name + "' (it takes: attributes, vertex_is_constrained, "
-                           "callback" + list + ")");
+                           "callback, quiet" + list + ")");
     }
     if(item.second.is_none()) continue;   // None: the default
     if(name == "maximum_deviation" &&
@@ -286,13 +196,49 @@ Options options_of(const py::kwargs& kwargs, py::ssize_t attribute_columns)
 
 py::object json_loads(const std::string& text) { return py::module_::import("json").attr("loads")(text); }
 
+// The vertex normals of the faired surface as the program writes them for an input with normals: the exact
+// normals of the Loop limit surface of the faired control points where the limit surface is written,
+// else (control points, linear element) CGAL's compute_vertex_normals of the mesh written; None when the
+// geometry was not faired (attribute_mode 'attributes': the input's normals are still right).
+py::object written_normals(const Mesh& written, const std::vector<Point>& control_points, const Options& o, AF::Attribute_mode mode,
+                           const Vertex_split& split)
+{
+  if(mode == AF::Attribute_mode::ATTRIBUTES_ONLY) return py::none();
+  std::vector<Vector> normals(written.number_of_vertices(), Vector(0, 0, 0));
+  if(o.fairing.finite_element == AF::Finite_element::LOOP && o.fairing.output_positions == AF::Output_positions::LIMIT_SURFACE)
+  {
+    Mesh control = written;
+    for(Vertex_index v : control.vertices()) control.point(v) = control_points[std::size_t(v)];
+    const AF::Loop_limit_surface<Mesh> limit(control, AF::parameters::quadrature_degree(4));
+    limit.limit_normals(CGAL::make_property_map(normals));
+  }
+  else
+  {
+    auto map = CGAL::make_property_map(normals);
+    CGAL::Polygon_mesh_processing::compute_vertex_normals(written, map);
+  }
+  // a split vertex: the mean of its copies' normals, normalised
+  std::vector<std::vector<double>> columns(normals.size());
+  for(std::size_t v = 0; v < normals.size(); ++v) columns[v] = { normals[v].x(), normals[v].y(), normals[v].z() };
+  merge_copies(columns, split);
+  normals.resize(split.empty() ? normals.size() : split.file_vertices);
+  for(std::size_t v = 0; v < normals.size(); ++v)
+  {
+    const Vector n(columns[v][0], columns[v][1], columns[v][2]);
+    normals[v] = split.empty() || n.squared_length() == 0 ? n : n / std::sqrt(n.squared_length());
+  }
+  return vectors_array(normals);
+}
+
 py::tuple fair(py::handle V, py::handle F, py::handle attributes, py::handle vertex_is_constrained, py::handle callback,
-               const py::kwargs& kwargs)
+               bool vertex_normals, const py::kwargs& kwargs)
 {
   CGAL::Real_timer wall;
   wall.start();
-  Mesh mesh = mesh_from_arrays(V, F);
-  const std::size_t n = mesh.number_of_vertices();
+  Vertex_split split;   // non-manifold vertices split for the run: n rows in and out, run_n vertices faired
+  std::vector<std::string> changes;
+  Mesh mesh = mesh_from_arrays(V, F, &split, &changes);
+  const std::size_t run_n = mesh.number_of_vertices(), n = split.empty() ? run_n : split.file_vertices;
   py::array_t<double, py::array::c_style> A;
   bool one_column = false;
   if(!attributes.is_none())
@@ -304,7 +250,7 @@ py::tuple fair(py::handle V, py::handle F, py::handle attributes, py::handle ver
   const py::ssize_t d = attributes.is_none() ? 0 : one_column ? 1 : A.shape(1);
   const Options o = options_of(kwargs, d);
 
-  std::vector<std::vector<double>> values(n, std::vector<double>(std::size_t(d)));
+  std::vector<std::vector<double>> values(run_n, std::vector<double>(std::size_t(d)));
   if(d > 0)
   {
     const double* a = A.data();
@@ -315,7 +261,7 @@ py::tuple fair(py::handle V, py::handle F, py::handle attributes, py::handle ver
         if(!std::isfinite(values[i][std::size_t(c)])) throw py::value_error("attributes row " + std::to_string(i) + " is not finite");
       }
   }
-  std::vector<unsigned char> held(n, 0);
+  std::vector<unsigned char> held(run_n, 0);
   Run_record r;
   if(!vertex_is_constrained.is_none())
   {
@@ -324,46 +270,63 @@ py::tuple fair(py::handle V, py::handle F, py::handle attributes, py::handle ver
     for(std::size_t i = 0; i < n; ++i) r.held_vertices += (held[i] = h.data()[i] != 0);
   }
 
+  for(std::size_t i = 0; i < split.copy_of.size(); ++i)   // a copy has its vertex's values and hold
+  {
+    values[n + i] = values[split.copy_of[i]];
+    held[n + i] = held[split.copy_of[i]];
+  }
+
   const AF::Attribute_mode mode = effective_mode(o);
   const AF::Attribute_mode library_mode = d > 0 ? mode : AF::Attribute_mode::GEOMETRY_ONLY;
   std::vector<std::vector<double>> controls = values;
-  std::vector<Point> control_points(n);
+  std::vector<Point> control_points(run_n);
   r.mesh_read = true;
   r.vertices = n;
   r.faces = mesh.number_of_faces();
+  r.input_changes = changes;
+  r.split_vertices = split.split_vertices;
 
-  // the run without the GIL; a Python callback takes it for its call, and an exception it raises ends the
-  // run (as returning False does) and is raised again afterwards
+  // The run without the GIL. After every step the callback takes it: Python's signal handlers run there
+  // (Ctrl-C: KeyboardInterrupt), then the Python callback, if any. An exception either raises ends the
+  // library's call at once (Run_abandoned) and is raised again afterwards.
   std::exception_ptr raised;
-  Step_callback step = [](const AF::Fairing_step&) { return true; };
-  if(!callback.is_none())
-    step = [&callback, &raised](const AF::Fairing_step& s) {
-      py::gil_scoped_acquire gil;
-      try
-      {
-        py::dict info;
-        info["step"] = s.step;
-        info["time"] = s.time;
-        info["time_step"] = s.time_step;
-        info["area"] = s.area;
-        info["energy"] = s.energy;
-        info["H_integral"] = s.H_integral;
-        info["max_displacement"] = s.max_displacement;
-        info["solver_iterations"] = s.solver_iterations;
-        const py::object go_on = callback(info);
-        return go_on.is_none() || bool(py::bool_(go_on));   // None (a progress printer) goes on
-      }
-      catch(...)
-      {
-        raised = std::current_exception();
-        return false;
-      }
-    };
+  const bool python_callback = !callback.is_none();
+  const Step_callback step = [&callback, &raised, python_callback](const AF::Fairing_step& s) {
+    py::gil_scoped_acquire gil;
+    try
+    {
+      if(PyErr_CheckSignals() != 0) throw py::error_already_set();
+      if(!python_callback) return true;
+      py::dict info;
+      info["step"] = s.step;
+      info["time"] = s.time;
+      info["time_step"] = s.time_step;
+      info["area"] = s.area;
+      info["energy"] = s.energy;
+      info["H_integral"] = s.H_integral;
+      info["max_displacement"] = s.max_displacement;
+      info["solver_iterations"] = s.solver_iterations;
+      info["run"] = s.run;
+      info["runs"] = s.runs;
+      info["run_name"] = s.run_name;
+      const py::object go_on = callback(info);
+      return go_on.is_none() || bool(py::bool_(go_on));   // None (a progress printer) goes on
+    }
+    catch(...)
+    {
+      raised = std::current_exception();
+    }
+    throw Run_abandoned();
+  };
   {
     py::gil_scoped_release no_gil;
     try
     {
       r.report = fair_with_options(mesh, o, library_mode, Attribute_vectors{&values}, controls, control_points, held, step);
+    }
+    catch(const Run_abandoned&)
+    {
+      // `raised` holds the exception; nothing of the run is kept (the input arrays were only read)
     }
     catch(const AF::Input_error& e)
     {
@@ -377,6 +340,18 @@ py::tuple fair(py::handle V, py::handle F, py::handle attributes, py::handle ver
   {
     r.status = AF::to_string(r.report.status);
     r.message = r.report.message;
+  }
+  merge_copies(mesh, split);
+  merge_copies(values, split);
+  py::object normals = py::none();
+  if(vertex_normals && r.report.succeeded())
+  {
+    normals = written_normals(mesh, control_points, o, mode, split);
+    r.normals = mode == AF::Attribute_mode::ATTRIBUTES_ONLY ? "input"
+                : o.fairing.finite_element == AF::Finite_element::LOOP &&
+                      o.fairing.output_positions == AF::Output_positions::LIMIT_SURFACE
+                  ? "limit_surface"
+                  : "vertex_normals";
   }
   py::object report = json_loads(report_json(o, r, wall.time()));
   if(!r.report.succeeded())
@@ -396,7 +371,8 @@ py::tuple fair(py::handle V, py::handle F, py::handle attributes, py::handle ver
       for(py::ssize_t c = 0; c < d; ++c) p[i * std::size_t(d) + std::size_t(c)] = values[i][std::size_t(c)];
     out_attributes = a;
   }
-  return py::make_tuple(points_array(mesh), out_attributes, report);
+  if(vertex_normals) return py::make_tuple(points_array(mesh, n), out_attributes, report, normals);
+  return py::make_tuple(points_array(mesh, n), out_attributes, report);
 }
 
 // ---- limit_surface() -------------------------------------------------------------------------------
@@ -514,9 +490,11 @@ PYBIND11_MODULE(_core, m)
   // raised with the report attached (fair()); the C++ type only names it
   static py::exception<Fairing_failed> fairing_error(m, "FairingError", PyExc_RuntimeError);
   m.def("fair", &fair, py::arg("V"), py::arg("F"), py::kw_only(), py::arg("attributes") = py::none(),
-        py::arg("vertex_is_constrained") = py::none(), py::arg("callback") = py::none(),
-        "fair(V, F, *, attributes=None, vertex_is_constrained=None, callback=None, **parameters) -> (V2, attributes2, report): "
-        "anisotropic_fairing.fair's run; its parameters (parameter_names) are checked here, as the program checks its options");
+        py::arg("vertex_is_constrained") = py::none(), py::arg("callback") = py::none(), py::arg("vertex_normals") = false,
+        "fair(V, F, *, attributes=None, vertex_is_constrained=None, callback=None, vertex_normals=False, **parameters) -> "
+        "(V2, attributes2, report), and with vertex_normals the normals the program writes (N x 3; None if the geometry was "
+        "not faired) fourth: anisotropic_fairing.fair's run; its parameters (parameter_names) are checked here, as the program "
+        "checks its options; Ctrl-C raises KeyboardInterrupt after the step it arrives in");
   py::tuple names(keywords.size());
   for(std::size_t k = 0; k < keywords.size(); ++k) names[k] = py::str(keywords[k]);
   m.attr("parameter_names") = names;   // the package's fair() passes these on

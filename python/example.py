@@ -40,11 +40,13 @@ print('scalar field: roughness %.3g -> %.3g (mean |f_i - f_j| over the edges)' %
 V4, _, report = af.fair(V, F, relative_maximum_deviation=0.005)
 print('bounded: largest deviation %.4g <= %.4g' % (np.linalg.norm(V4 - V, axis=1).max(), report['maximum_deviation'] or 0.0))
 
-# %% Progress, and stopping early, with a callback (the GIL is released while the run computes)
+# %% Progress, and stopping early, with a callback (the GIL is released while the run computes). Every run
+# longer than about a second shows its progress on stderr (tqdm's bar if it is installed); quiet=True: not,
+# as here, where the callback prints its own. Ctrl-C raises KeyboardInterrupt after the current step.
 def progress(step):
     print('  step %d: area %.5g, int |H|^2 %.5g' % (step['step'], step['area'], step['H_integral']))
     return step['step'] < 3   # False ends the run
-af.fair(V, F, relative_time_step=1e-4, number_of_iterations=10, callback=progress)
+af.fair(V, F, relative_time_step=1e-4, number_of_iterations=10, callback=progress, quiet=True)
 
 # %% The faired limit surface: control points in, exact limit positions, normals, curvature, finer meshes
 V5 = af.fair(V, F, output_positions='control')[0]

@@ -3,12 +3,18 @@ python_package against the package pip installed).
 
 The environment gives the package (PYTHONPATH, or none: the installed one), the command-line program
 (AF_TOOL) and the data (AF_DATA: examples/Anisotropic_fairing/data); meshes are read and written by meshio. The module must give the program's results (to 1e-12) and
-the program's report keys; bad input raises, never crashes; the GIL is released during a run.
+the program's report keys; bad input raises, never crashes; the GIL is released during a run; a run
+shows its progress on stderr (through tqdm: Debian python3-tqdm, and without it) unless quiet, and Ctrl-C
+ends it.
 """
+import io
 import json
 import math
 import os
+import re
+import signal
 import subprocess
+import sys
 import threading
 import time
 
@@ -135,6 +141,33 @@ def test_maximum_deviation_is_a_deprecated_spelling(fandisk):
         af.fair(V, F, relative_maximum_deviation=0.001, absolute_maximum_deviation=0.01, **settings)
 
 
+def test_strength_scales_the_noise_target(fandisk, tmp_path):
+    """strength (the program's --strength): 1 is the default run; 2 keeps the flow the default run keeps (the
+    anisotropic one on this CAD part), runs it to twice the noise and moves the surface farther, as the program
+    does; a value that is not positive and finite, or a strength where no run stops at the noise level, is refused
+    naming it"""
+    V, F = fandisk
+    V1, _, r1 = af.fair(V, F, quiet=True)
+    V1s, _, r1s = af.fair(V, F, quiet=True, strength=1)
+    assert np.array_equal(V1, V1s) and r1['choices'] == r1s['choices'] and r1s['strength'] == 1
+    V2, _, r2 = af.fair(V, F, quiet=True, strength=2)
+    assert r2['status'] == 'success' and r2['strength'] == 2 and r2['tensor'] == r1['tensor'] == 'anisotropic'
+    assert abs(r2['noise_displacement'] / (2 * r2['noise_level']) - 1) < 0.02 and 'strength 2' in r2['choices']
+    moved = [np.linalg.norm(X - V, axis=1).mean() for X in (V1, V2)]
+    assert moved[1] > 1.5 * moved[0], moved
+    run_tool([os.path.join(DATA, 'fandisk_noisy.obj'), 'out.off', '--strength', '2', '--report', 'out.json'], tmp_path)
+    expected, _ = read_mesh(tmp_path / 'out.off')
+    assert np.abs(V2 - expected).max() <= 1e-12 * np.ptp(V, axis=0).max(), 'the program\'s --strength 2'
+    assert json.load(open(tmp_path / 'out.json'))['choices'] == r2['choices']
+    for bad in (0, -1.0, float('nan'), float('inf')):
+        with pytest.raises(ValueError, match='strength'):
+            af.fair(V, F, quiet=True, strength=bad)
+    with pytest.raises(TypeError, match='strength'):
+        af.fair(V, F, quiet=True, strength='more')
+    with pytest.raises(ValueError, match='strength'):
+        af.fair(V, F, quiet=True, strength=2, relative_time_step=1e-3)   # the paper's criteria: no noise stop
+
+
 def test_bad_input_raises():
     V, F = grid(3)
     cases = [
@@ -146,7 +179,6 @@ def test_bad_input_raises():
         (lambda: af.fair(V, np.vstack([F, [[0, -1, 2]]])), ValueError, 'refers to vertex -1'),
         (lambda: af.fair(V, F[:0]), ValueError, 'no face'),
         (lambda: af.fair(np.where(np.arange(48).reshape(16, 3) == 7, np.nan, V), F), ValueError, 'V row 2 is not finite'),
-        (lambda: af.fair(V, np.vstack([F, F[:1]])), ValueError, 'row'),   # a face twice: not a 2-manifold
         (lambda: af.fair(V, F, attributes=np.zeros((5, 2))), ValueError, 'attributes must have one row per vertex (16)'),
         (lambda: af.fair(V, F, time_step=1e-3, relative_time_step=1e-3), ValueError, 'give either time_step or relative_time_step'),
         (lambda: af.fair(V, F, tensor='bilateral'), ValueError, 'tensor expects isotropic, anisotropic or uniform'),
@@ -160,6 +192,54 @@ def test_bad_input_raises():
         with pytest.raises(error) as e:
             call()
         assert text in str(e.value), (text, str(e.value))
+
+
+def icosphere(level):
+    t = (1 + 5 ** 0.5) / 2
+    V = [[-1, t, 0], [1, t, 0], [-1, -t, 0], [1, -t, 0], [0, -1, t], [0, 1, t], [0, -1, -t], [0, 1, -t],
+         [t, 0, -1], [t, 0, 1], [-t, 0, -1], [-t, 0, 1]]
+    F = [[0, 11, 5], [0, 5, 1], [0, 1, 7], [0, 7, 10], [0, 10, 11], [1, 5, 9], [5, 11, 4], [11, 10, 2], [10, 7, 6],
+         [7, 1, 8], [3, 9, 4], [3, 4, 2], [3, 2, 6], [3, 6, 8], [3, 8, 9], [4, 9, 5], [2, 4, 11], [6, 2, 10], [8, 6, 7], [9, 8, 1]]
+    for _ in range(level):
+        middle, G = {}, []
+        def mid(a, b):
+            if (min(a, b), max(a, b)) not in middle:
+                middle[(min(a, b), max(a, b))] = len(V)
+                V.append([(V[a][k] + V[b][k]) / 2 for k in range(3)])
+            return middle[(min(a, b), max(a, b))]
+        for a, b, c in F:
+            G += [[a, mid(a, b), mid(c, a)], [b, mid(b, c), mid(a, b)], [c, mid(c, a), mid(b, c)], [mid(a, b), mid(b, c), mid(c, a)]]
+        F = G
+    V = np.array(V)
+    return V / np.linalg.norm(V, axis=1)[:, None], np.array(F)
+
+
+def test_non_manifold_vertices_are_split_as_the_program_splits_them(tmp_path):
+    # two noisy spheres touching at a vertex (a bow-tie, as raw scans have): faired without asking, the
+    # shared vertex returned once, and the result the program's for the same mesh
+    A, FA = icosphere(2)
+    rng = np.random.default_rng(5)
+    A = A * (1 + 0.01 * rng.standard_normal((len(A), 1)))
+    B = A - A[3] + A[0]   # B's vertex 3 on A's vertex 0, B outside A
+    keep = [j for j in range(len(B)) if j != 3]
+    index = {j: len(A) + k for k, j in enumerate(keep)}
+    index[3] = 0
+    V = np.vstack([A, B[keep]])
+    F = np.vstack([FA, [[index[j] for j in f] for f in FA]])
+    q = np.arange(len(V), dtype=float)
+    write_ply(tmp_path / 'bowtie.ply', V, F, q)
+    p = run_tool(['bowtie.ply', 'out.ply', '--report', 'out.json'], tmp_path)
+    assert 'non-manifold' in p.stderr
+    expected, _ = read_ply_xyzq(tmp_path / 'out.ply')
+    V0, F0 = V.copy(), F.copy()
+    with pytest.warns(UserWarning, match='vertex 0 is non-manifold.*split 1 non-manifold vertex'):
+        V2, _, report = af.fair(V, F)
+    assert V2.shape == V.shape and np.array_equal(V, V0) and np.array_equal(F, F0)
+    assert np.abs(V2 - expected).max() <= 1e-12 * np.ptp(V, axis=0).max()
+    assert report['split_vertices'] == 1 and report['vertices'] == len(V) and report['input_changes']
+    assert report['split_vertices'] == json.load(open(tmp_path / 'out.json'))['split_vertices']
+    with pytest.raises(ValueError, match='non-manifold'):
+        af.limit_surface(V, F)   # the limit surface of a mesh that is not a 2-manifold is not defined
 
 
 def test_a_failed_run_raises_with_its_report():
@@ -183,6 +263,16 @@ def test_callback_and_gil(fandisk):
         raise KeyError('from the callback')
     with pytest.raises(KeyError):
         af.fair(V, F, relative_time_step=1e-4, number_of_iterations=5, callback=boom)
+    # an exception ends the call at once: the default run's comparison makes no further run
+    runs = []
+
+    def boom_in_run_2(step):
+        runs.append(step['run'])
+        if step['run'] == 2:
+            raise KeyError('from run 2')
+    with pytest.raises(KeyError, match='from run 2'):
+        af.fair(V, F, callback=boom_in_run_2)
+    assert runs.count(2) == 1 and runs[-1] == 2, runs
 
     # another Python thread runs while the fairing does: the GIL is released. Without that it would run
     # for a few switch intervals (5 ms each) at most; with it, about as often as while this one sleeps.
@@ -248,9 +338,10 @@ def test_fair_has_every_parameter_as_a_typed_keyword():
     parameters = inspect.signature(af.fair).parameters
     assert list(parameters)[:2] == ['V', 'F']
     keywords = list(parameters)[2:]
-    assert keywords == ['attributes', 'vertex_is_constrained', 'callback'] + list(_core.parameter_names)
+    assert keywords == ['attributes', 'vertex_is_constrained', 'callback', 'quiet'] + list(_core.parameter_names)
     for name in keywords:
-        assert parameters[name].kind == inspect.Parameter.KEYWORD_ONLY and parameters[name].default is None, name
+        default = False if name == 'quiet' else None
+        assert parameters[name].kind == inspect.Parameter.KEYWORD_ONLY and parameters[name].default is default, name
     assert 'relative_time_step' in af.fair.__doc__ and af.__version__
 
 
@@ -282,6 +373,8 @@ def test_the_report_is_a_fairing_report(fandisk, tmp_path):
     _, _, default = af.fair(V, F, callback=lambda s: seen.append(s))
     assert conforms(default, af.FairingReport) and len(default['steps']) > 0
     assert seen and all(conforms(s, af.StepInfo) for s in seen)
+    # the default run compares flows: each step says which run it belongs to
+    assert {s['run_name'] for s in seen} >= {'anisotropic flow', 'isotropic flow'} and seen[-1]['runs'] >= seen[-1]['run'] > 1
     _, _, bounded = af.fair(V, F, attributes=np.column_stack([V[:, 0], V[:, 1]]), attribute_mode='coupled',
                             relative_maximum_deviation=0.002, number_of_iterations=2)
     assert conforms(bounded, af.FairingReport)
@@ -293,3 +386,95 @@ def test_the_report_is_a_fairing_report(fandisk, tmp_path):
     run_tool([os.path.join(DATA, 'fandisk_noisy.obj'), 'out.off', '--report', 'out.json', '--resample', '1'], tmp_path)
     assert conforms(json.load(open(tmp_path / 'out.json')), af.FairingReport)
     assert not conforms(dict(default, vertices='many'), af.FairingReport), 'the check can fail'
+
+
+def progress_of(capsys, call):
+    """what a call writes on stderr, and its result"""
+    capsys.readouterr()
+    result = call()
+    return capsys.readouterr().err, result
+
+
+def test_progress_on_stderr(fandisk, capsys, monkeypatch):
+    """a run longer than about a second shows its steps on stderr, through tqdm or without it; quiet=True,
+    and a shorter run, show nothing; the result is the same, bit for bit"""
+    import tqdm   # noqa: F401 (Debian: python3-tqdm)
+    from anisotropic_fairing import _progress
+    V, F = fandisk
+    settings = dict(relative_time_step=1e-4, number_of_iterations=3, stopping_criteria='off')
+    err, _ = progress_of(capsys, lambda: af.fair(*grid(6), **settings))
+    assert err == '', 'a run shorter than a second shows nothing'
+    monkeypatch.setattr(_progress, 'DELAY', 0.0)   # as if every run lasted longer
+    err, (V_tqdm, _, report) = progress_of(capsys, lambda: af.fair(V, F, **settings))
+    assert 'anisotropic_fairing: 3 steps [00:0' in err and 'steps/s, done after step 3]' in err, 'tqdm: ' + err
+    err, (V_quiet, _, quiet_report) = progress_of(capsys, lambda: af.fair(V, F, quiet=True, **settings))
+    assert err == ''
+    monkeypatch.setitem(sys.modules, 'tqdm', None)   # without tqdm: a line per step (stderr is not a terminal)
+    seen = []
+    err, (V_plain, _, _) = progress_of(capsys, lambda: af.fair(V, F, callback=seen.append, **settings))
+    lines = [line for line in err.splitlines() if ': step ' in line]
+    assert len(lines) == 3 and len(seen) == 3, err
+    for k, line in enumerate(lines, 1):
+        assert re.fullmatch(r'anisotropic_fairing: step %d \(%d steps in all, [0-9.]+ s\)' % (k, k), line), line
+    assert re.fullmatch(r'anisotropic_fairing: done after 3 steps, [0-9.]+ s', err.splitlines()[-1]), err
+    assert np.array_equal(V_tqdm, V_quiet) and np.array_equal(V_quiet, V_plain), 'the display does not touch the run'
+    assert [s['H_integral'] for s in report['steps']] == [s['H_integral'] for s in quiet_report['steps']]
+    # the default run names its runs
+    err, _ = progress_of(capsys, lambda: af.fair(V, F, number_of_iterations=12))
+    assert 'step 1 of run 2 of at most' in err and 'the isotropic flow' in err, err
+
+
+def test_progress_on_a_terminal(monkeypatch):
+    """without tqdm on a terminal: one line, refreshed in place, also during the set-up before the first step"""
+    from anisotropic_fairing._progress import Progress
+    monkeypatch.setitem(sys.modules, 'tqdm', None)
+
+    class Terminal(io.StringIO):
+        def isatty(self):
+            return True
+    out = Terminal()
+    with Progress(file=out, delay=0.0) as p:
+        time.sleep(0.8)   # the set-up: the thread shows it
+        p.step(dict(step=1, run=1, runs=1, run_name=''))
+    text = out.getvalue()
+    assert text.startswith('\ranisotropic_fairing: 0 steps, ') and 'setting up' in text, text
+    assert '\ranisotropic_fairing: 1 steps, ' in text and '\ranisotropic_fairing: done after 1 steps' in text, text
+    assert text.endswith('\n') and text.count('\n') == 1, text
+
+
+CHILD = """
+import signal, sys, time
+import numpy as np
+import anisotropic_fairing as af
+signal.signal(signal.SIGINT, signal.default_int_handler)   # Python's own, whatever the test runner did
+V, F = np.load(sys.argv[1])['V'], np.load(sys.argv[1])['F']
+V0, F0 = V.copy(), F.copy()
+print('started', flush=True)
+try:
+    quiet = dict(quiet=True) if sys.argv[2] == 'quiet' else {}   # else the default: the progress shown
+    af.fair(V, F, relative_time_step=1e-6, number_of_iterations=100000, stopping_criteria='off', **quiet)
+finally:
+    print('unchanged' if np.array_equal(V, V0) and np.array_equal(F, F0) else 'modified', flush=True)
+"""
+
+
+@pytest.mark.parametrize('quiet', ['quiet', 'progress'])
+def test_ctrl_c_raises_keyboard_interrupt(fandisk, tmp_path, quiet):
+    """Ctrl-C during a run without a callback (100000 tiny steps: half an hour or more) raises
+    KeyboardInterrupt after the step it arrives in, and the input arrays are as they were"""
+    V, F = fandisk
+    np.savez(tmp_path / 'mesh.npz', V=V, F=F)
+    child = subprocess.Popen([sys.executable, '-c', CHILD, str(tmp_path / 'mesh.npz'), quiet], stdout=subprocess.PIPE,
+                             stderr=subprocess.PIPE, text=True, env=dict(os.environ))
+    try:
+        assert child.stdout.readline() == 'started\n'
+        time.sleep(1.5)   # the set-up and a few steps
+        child.send_signal(signal.SIGINT)
+        sent = time.perf_counter()
+        out, err = child.communicate(timeout=30)
+    finally:
+        child.kill()
+        child.wait()
+    seconds = time.perf_counter() - sent
+    assert 'KeyboardInterrupt' in err.splitlines()[-1], err[-2000:]
+    assert out == 'unchanged\n' and seconds < 10, (out, seconds)

@@ -23,7 +23,7 @@ sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 import render_mesh as rm  # noqa: E402
 
 ROOT = os.path.dirname(os.path.dirname(os.path.dirname(os.path.abspath(__file__))))
-FIGURES = ["denoising_pair", "face_isocontours", "torus_texture", "deviation_sweep", "curvature_limit", "resampled"]
+FIGURES = ["denoising_pair", "face_isocontours", "torus_texture", "deviation_sweep", "curvature_limit", "resampled", "strength"]
 
 
 def log(message):
@@ -326,6 +326,57 @@ def resampled(ctx):
         panels.append(rm.Panel(mesh, "limit surface, --resample %d\n%d faces" % (levels, len(rm.face_array(mesh))),
                                edges=True, edge_color=(0.15, 0.15, 0.2) if levels == 1 else (0.45, 0.45, 0.5)))
     rm.render_panels(panels, ctx.figure("resampled"), size=(2400, 860), view=(30.0, 25.0), zoom=1.45)
+
+
+def stack_rows(rows, output):
+    """The PNG images `rows` (of one width) stacked top to bottom into `output`."""
+    vtk = rm.import_vtk()
+    append = vtk.vtkImageAppend()
+    append.SetAppendAxis(1)
+    for path in reversed(rows):   # VTK's images start at the bottom row
+        reader = vtk.vtkPNGReader()
+        reader.SetFileName(path)
+        reader.Update()
+        append.AddInputData(reader.GetOutput())
+    append.Update()
+    writer = vtk.vtkPNGWriter()
+    writer.SetCompressionLevel(9)
+    writer.SetFileName(output)
+    writer.SetInputData(append.GetOutput())
+    writer.Write()
+
+
+def strength(ctx):
+    """The default run at --strength 0.5, 1 and 2 on a face scan and a CAD part of the denoising benchmark."""
+    cases = [("Julius0.2", "face scan (Julius, sigma 0.2 h)", dict(view=(-75.0, 5.0), zoom=1.1)),
+             ("Fandisk0.3", "CAD part (Fandisk, sigma 0.3 h)", dict(view=(150.0, 30.0), zoom=0.98))]
+    rows = []
+    for name, label, camera in cases:
+        pair = os.path.join(ctx.data, "denoising", name)
+        noisy_path, clean = os.path.join(pair, "Noisy.obj"), rm.read_mesh(os.path.join(pair, "Original.obj"))
+        noisy = rm.read_mesh(noisy_path)
+        h = mean_edge_length(noisy)
+        panels = [None]   # the input's, once its noise is estimated
+        for value in (0.5, 1, 2):
+            target = ctx.work_file("strength_%s_%g.off" % (name, value))
+            report = ctx.fair(noisy_path, target, *([] if value == 1 else ["--strength", "%g" % value]))
+            result = rm.read_mesh(target)
+            error = mean_normal_error(result, clean)
+            moved = float(moved_distance(result, noisy).mean()) / h
+            steps = len(report.get("steps", []))
+            log("  %s, strength %g: %s flow kept, %d step(s) of its last run (%s), moved %.3f h along the normals "
+                "(noise %.3f h), %.3f h per vertex; mean normal error %.2f deg; %.1f s"
+                % (name, value, report["tensor"], steps, report["stop_reason"], report["noise_displacement"],
+                   report["noise_level"], moved, error, report["wall_seconds"]))
+            title = "%s: %s flow, %d step%s\nmoved %.2f h, mean normal error %.2f\u00b0" % (
+                "default run (strength 1)" if value == 1 else "--strength %g" % value, report["tensor"], steps,
+                "" if steps == 1 else "s", report["noise_displacement"], error)
+            panels.append(rm.Panel(result, title))
+            panels[0] = rm.Panel(noisy, "noisy %s, noise estimated %.2f h\nmean normal error %.2f\u00b0" % (
+                label, report["noise_level"], mean_normal_error(noisy, clean)))
+        rows.append(ctx.work_file("strength_%s.png" % name))
+        rm.render_panels(panels, rows[-1], size=(2400, 800), **camera)
+    stack_rows(rows, ctx.figure("strength"))
 
 
 def main():

@@ -19,6 +19,7 @@
 #include <CGAL/Anisotropic_fairing/anisotropic_fairing.h>
 
 #include "test_support/check.h"
+#include "test_support/denoising_pair.h"
 
 #include <cmath>
 #include <cstdio>
@@ -30,35 +31,8 @@ namespace PMP = CGAL::Polygon_mesh_processing;
 typedef CGAL::Exact_predicates_inexact_constructions_kernel K;
 typedef CGAL::Surface_mesh<K::Point_3> Mesh;
 
-// in file order (read_polygon_mesh may reorder), so faces correspond between the two files
-bool read_obj_in_order(const std::string& path, Mesh& mesh)
-{
-  std::vector<K::Point_3> points;
-  std::vector<std::vector<std::size_t>> polygons;
-  if(!CGAL::IO::read_OBJ(path, points, polygons) || !PMP::is_polygon_soup_a_polygon_mesh(polygons)) return false;
-  PMP::polygon_soup_to_polygon_mesh(points, polygons, mesh);
-  return num_vertices(mesh) == points.size() && num_faces(mesh) == polygons.size();
-}
-
-K::Vector_3 face_normal(const Mesh& m, Mesh::Face_index f)
-{
-  const auto h = m.halfedge(f);
-  const K::Point_3 &a = m.point(m.source(h)), &b = m.point(m.target(h)), &c = m.point(m.target(m.next(h)));
-  return CGAL::cross_product(b - a, c - a);
-}
-
-// mean angle in degrees between corresponding face normals
-double mean_normal_angle(const Mesh& m, const Mesh& reference)
-{
-  double sum = 0;
-  auto r = reference.faces().begin();
-  for(Mesh::Face_index f : m.faces())
-  {
-    const K::Vector_3 n = face_normal(m, f), t = face_normal(reference, *r++);
-    sum += std::atan2(std::sqrt(CGAL::cross_product(n, t).squared_length()), n * t);
-  }
-  return sum / double(num_faces(m)) * 180 / 3.14159265358979323846;
-}
+using AF_test::mean_normal_angle;
+using AF_test::read_obj_in_order;
 
 template <typename Tensor>
 double best_angle(const Mesh& noisy, const Mesh& original, double l2, const std::vector<double>& taus,

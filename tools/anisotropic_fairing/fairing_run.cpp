@@ -94,8 +94,11 @@ int run(const Options& o, Run_record& r)
   read_input(o.input, mesh, info, o.repair);
   r.read_seconds = elapsed_seconds() - read_from;
   r.mesh_read = true;
-  r.vertices = mesh.number_of_vertices();
+  r.vertices = info.split.empty() ? mesh.number_of_vertices() : info.split.file_vertices;   // as written
   r.faces = mesh.number_of_faces();
+  r.input_changes = info.input_changes;
+  r.split_vertices = info.split.split_vertices;
+  r.triangulated_faces = info.triangulated_faces;
   if(o.has_resample) check_resample_size(mesh, o.resample);
 
   // --curvature adds three vertex properties; never overwrite the input's own
@@ -126,6 +129,7 @@ int run(const Options& o, Run_record& r)
   std::vector<Point> control_points(mesh.number_of_vertices());
   std::vector<unsigned char> held(mesh.number_of_vertices(), 0);
   if(!o.hold.empty()) r.held_vertices = read_held_vertices(mesh, o.hold, held);
+  for(std::size_t i = 0; i < info.split.copy_of.size(); ++i) held[info.split.file_vertices + i] = held[info.split.copy_of[i]];
 
   const unsigned int max_steps = o.fairing.maximum_steps();
   const bool quiet = o.quiet;
@@ -202,6 +206,9 @@ int run(const Options& o, Run_record& r)
     else
       r.normals = "input";   // the geometry was not faired: the input's normals are still right
   }
+  // a split vertex at the mean of its copies (the copies are dropped when the file is written)
+  merge_copies(mesh, info.split);
+  merge_copies(attribute_values, info.split);
   // back into the input's own properties (rounded, clamped), which are written with the mesh
   if(fair_attributes) scatter(mesh, columns, attribute_values);
   if(o.has_resample)
@@ -216,7 +223,8 @@ int run(const Options& o, Run_record& r)
     info.warnings.push_back("--attribute-weight has no effect without --mode coupled");
 
   // printed once OUTPUT exists, so that on failure the failure is the only line starting with "anisotropic_fairing: "
-  std::vector<std::string> warnings = info.warnings;
+  std::vector<std::string> warnings = o.deprecations;
+  warnings.insert(warnings.end(), info.warnings.begin(), info.warnings.end());
   const std::vector<std::string> dropped = dropped_properties(mesh, out_format);
   if(!dropped.empty())
   {
@@ -230,7 +238,8 @@ int run(const Options& o, Run_record& r)
   heartbeat.phase("writing " + o.output);
   try
   {
-    write_mesh(tmp.string(), out_format, mesh, info, info.has_normals);
+    write_mesh(tmp.string(), out_format, mesh, info, info.has_normals, o.text_output);
+    if(!o.has_resample) merge_copies_in_file(tmp.string(), out_format, info.split);   // resampled: a new mesh, copies and all
   }
   catch(const Failure&)
   {

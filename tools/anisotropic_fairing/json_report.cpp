@@ -43,6 +43,9 @@ std::string report_json(const Options& o, const Run_record& r, double wall_secon
   j["output"] = known(r.output_written, o.output);
   j["vertices"] = known(r.mesh_read, r.vertices);
   j["faces"] = known(r.mesh_read, r.faces);
+  j["input_changes"] = r.input_changes;
+  j["split_vertices"] = known(r.mesh_read, r.split_vertices);
+  j["triangulated_faces"] = known(r.mesh_read, r.triangulated_faces);
   const AF::Fairing_options& given = o.fairing;
   j["element"] = element_name(given.finite_element);
   j["output_positions"] = output_name(given.output_positions);
@@ -63,6 +66,7 @@ std::string report_json(const Options& o, const Run_record& r, double wall_secon
   j["solver"] = ran ? Json(f.used_cholesky ? "cholesky" : "cg") : Json(nullptr);
   j["requested_solver"] = solver_name(given.linear_solver);
   j["stop"] = o.stop;
+  j["strength"] = number(given.strength);   // the factor of the noise stop's target (--strength)
   j["max_steps"] = given.maximum_steps();
   j["quadrature_degree"] = given.quadrature_degree;
   j["time_step"] = ran ? number(f.time_step) : given.time_step ? number(*given.time_step) : Json(nullptr);
@@ -103,10 +107,11 @@ std::string report_json(const Options& o, const Run_record& r, double wall_secon
   j["components"] = known(ran, f.components);
   j["rejected_steps"] = known(ran, f.rejected_steps);
   // the bounds the run used, model units (and in units of l), and the largest deviations written
-  j["maximum_deviation"] = ran ? (f.maximum_deviation > 0 ? number(f.maximum_deviation) : Json(nullptr))
-                           : given.absolute_maximum_deviation ? number(*given.absolute_maximum_deviation) : Json(nullptr);
+  j["absolute_maximum_deviation"] = ran ? (f.absolute_maximum_deviation > 0 ? number(f.absolute_maximum_deviation) : Json(nullptr))
+                                    : given.absolute_maximum_deviation ? number(*given.absolute_maximum_deviation) : Json(nullptr);
+  j["maximum_deviation"] = j["absolute_maximum_deviation"];   // deprecated: the library's maximum_deviation is the relative bound
   j["relative_maximum_deviation"] = given.relative_maximum_deviation.value_or(0) > 0 ? number(*given.relative_maximum_deviation)
-                                    : ran && f.maximum_deviation > 0 && f.scale > 0 ? number(f.maximum_deviation / f.scale) : Json(nullptr);
+                                    : ran && f.absolute_maximum_deviation > 0 && f.scale > 0 ? number(f.absolute_maximum_deviation / f.scale) : Json(nullptr);
   j["largest_deviation"] = ran ? number(f.largest_deviation) : Json(nullptr);
   j["attribute_maximum_deviation"] = given.attribute_maximum_deviation > 0 ? number(given.attribute_maximum_deviation) : Json(nullptr);
   j["largest_attribute_deviation"] = ran && f.attribute_dimension > 0 ? number(f.largest_attribute_deviation) : Json(nullptr);

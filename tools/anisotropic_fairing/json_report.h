@@ -13,6 +13,7 @@
 
 #include <cstddef>
 #include <string>
+#include <vector>
 
 namespace af_tool {
 
@@ -23,6 +24,9 @@ struct Run_record
   std::string message;
   bool mesh_read = false;
   std::size_t vertices = 0, faces = 0;
+  std::vector<std::string> input_changes;   // what was changed in the input for the run
+  std::size_t split_vertices = 0;           // non-manifold vertices split for the run
+  std::size_t triangulated_faces = 0;       // faces of the input that were not triangles
   bool fairing_ran = false;
   AF::Fairing_report report;
   std::string normals = "none";

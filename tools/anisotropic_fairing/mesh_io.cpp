@@ -1,6 +1,8 @@
-// Reading and writing the meshes of anisotropic_fairing (see mesh_io.h).
+// Reading the meshes of anisotropic_fairing (see mesh_io.h; writing: mesh_write.cpp).
 #include "mesh_io.h"
 
+#include "captured_streams.h"
+#include "element_properties.h"
 #include "mesh_file_check.h"
 #include "mesh_repair.h"
 #include "obj_vertex_data.h"
@@ -28,29 +30,6 @@ namespace af_tool {
 namespace fs = std::filesystem;
 
 namespace {
-
-// ------------------------------------------------------------------------------------------------
-// Capturing what CGAL's readers and writers print, so that a failure stays a one-line message
-// ------------------------------------------------------------------------------------------------
-class Capture_streams
-{
-public:
-  Capture_streams() : cerr_(std::cerr.rdbuf(err_.rdbuf())), cout_(std::cout.rdbuf(out_.rdbuf())) {}
-  ~Capture_streams() { std::cerr.rdbuf(cerr_); std::cout.rdbuf(cout_); }
-  // the first non-empty line printed, if any
-  std::string first_line() const
-  {
-    std::istringstream in(err_.str() + "\n" + out_.str());
-    std::string line;
-    while(std::getline(in, line))
-      if(!one_line(line).empty()) return one_line(line);
-    return std::string();
-  }
-private:
-  std::ostringstream err_, out_;
-  std::streambuf* cerr_;
-  std::streambuf* cout_;
-};
 
 // ------------------------------------------------------------------------------------------------
 // Input
@@ -130,29 +109,6 @@ bool fold_alpha(Mesh& mesh, const Range& range, const std::string& color_name, c
   return true;
 }
 
-// The reverse for writing: CGAL's PLY writer writes a colour with an alpha. When the input had none, the
-// colour goes out as the three uchar properties red, green, blue (prefix "v:" or "f:") instead, so that
-// the output's properties are the input's. Returns whether it did.
-template <typename Index, typename Range>
-bool unfold_rgb(Mesh& mesh, const Range& range, const std::string& prefix)
-{
-  Mesh::Property_map<Index, CGAL::IO::Color> color;
-  bool has_color = false;
-  std::tie(color, has_color) = mesh.property_map<Index, CGAL::IO::Color>(prefix + "color");
-  if(!has_color) return false;
-  auto red = mesh.add_property_map<Index, boost::uint8_t>(prefix + "red", 0).first;
-  auto green = mesh.add_property_map<Index, boost::uint8_t>(prefix + "green", 0).first;
-  auto blue = mesh.add_property_map<Index, boost::uint8_t>(prefix + "blue", 0).first;
-  for(Index i : range)
-  {
-    red[i] = color[i].red();
-    green[i] = color[i].green();
-    blue[i] = color[i].blue();
-  }
-  mesh.remove_property_map(color);
-  return true;
-}
-
 // CGAL 5.5's ASCII OFF scanner reads texture coordinates at an index it computes only for files with
 // colours: an "STOFF" (or STNOFF, ...) file without "C" makes it read uninitialised memory (a crash).
 // For such a file, `patched` is its text with "C" inserted after "ST" in the header keyword: with no
@@ -203,6 +159,119 @@ void add_soup_faces(const af_tool::Polygon_soup& soup, Mesh& mesh)
   }
 }
 
+// Whether the faces of an ASCII OFF file carry colours: CGAL's reader makes "f:color" for every file with
+// "C" in its keyword, black where a face line has none.
+bool off_face_colours(const std::string& text)
+{
+  std::istringstream in(text);
+  std::string line;
+  std::size_t content = 0, vertices = 0, faces = 0;
+  while(std::getline(in, line))
+  {
+    std::istringstream words(line.substr(0, line.find('#')));
+    std::vector<std::string> w{std::istream_iterator<std::string>(words), std::istream_iterator<std::string>()};
+    if(w.empty()) continue;
+    if(content == 0 && w.size() >= 4) { vertices = std::strtoull(w[1].c_str(), nullptr, 10); faces = std::strtoull(w[2].c_str(), nullptr, 10); content = 2; continue; }
+    if(content == 1) { vertices = std::strtoull(w[0].c_str(), nullptr, 10); faces = std::strtoull(w[1].c_str(), nullptr, 10); }
+    ++content;
+    if(content <= 2 + vertices) continue;
+    if(content > 2 + vertices + faces) break;
+    if(w.size() > 1 + std::strtoull(w[0].c_str(), nullptr, 10)) return true;
+  }
+  return false;
+}
+
+// The text of an OFF or PLY file whose header declares no face (nor triangle strip): CGAL's reader then
+// reads the vertices and their properties alone. False for a file it cannot say so of (binary OFF).
+bool without_faces(std::string& text, Format format)
+{
+  if(format == Format::PLY)
+  {
+    const std::size_t end = text.find("end_header");
+    if(end == std::string::npos) return false;
+    for(const char* element : {"element face ", "element tristrips "})
+      for(std::size_t at = text.find(element); at != std::string::npos && at < end; at = text.find(element, at + 1))
+      {
+        const std::size_t count = at + std::strlen(element), eol = text.find_first_of("\r\n", count);
+        text.replace(count, eol - count, "0");
+      }
+    return true;
+  }
+  // OFF: the keyword ([ST][C][N]OFF), then "vertices faces edges", on its line or the next
+  std::size_t at = 0;
+  std::vector<std::pair<std::size_t, std::size_t> > words;   // offset, length
+  while(words.size() < 3)
+  {
+    at = text.find_first_not_of(" \t\r\n", at);
+    if(at == std::string::npos) return false;
+    if(text[at] == '#') { at = text.find('\n', at); continue; }
+    const std::size_t end = std::min(text.find_first_of(" \t\r\n#", at), text.size());
+    words.emplace_back(at, end - at);
+    if(words.size() == 1)
+    {
+      const std::string keyword = text.substr(at, end - at);
+      if(keyword.size() < 3 || keyword.compare(keyword.size() - 3, 3, "OFF") != 0 || keyword.find_first_of("4n") != std::string::npos)
+        return false;
+      const std::size_t eol = text.find('\n', end);
+      if(text.substr(end, eol == std::string::npos ? std::string::npos : eol - end).find("BINARY") != std::string::npos) return false;
+    }
+    at = end;
+  }
+  text.replace(words[2].first, words[2].second, "0");
+  return true;
+}
+
+// The mesh of a repaired soup with the vertex properties of the file's vertices: CGAL's reader reads
+// the vertices alone (without_faces), the copies of split vertices and the faces come from the soup.
+// Where that cannot be done, the positions alone, as said in a warning.
+void read_vertices_then_soup_faces(const std::string& path, const Polygon_soup& soup, std::size_t file_vertices, Mesh& mesh,
+                                   Input_info& info)
+{
+  std::ifstream file(path, std::ios::binary);
+  std::string text((std::istreambuf_iterator<char>(file)), std::istreambuf_iterator<char>());
+  std::string patched;
+  const bool stoff = info.format == Format::OFF && stoff_without_colors(path, patched);
+  if(stoff) text = patched;
+  const bool face_colours = info.format == Format::OFF && off_face_colours(text);
+  bool read = false;
+  if(without_faces(text, info.format))
+  {
+    Capture_streams capture;
+    std::istringstream in(text);
+    if(info.format == Format::PLY)
+    {
+      info.ply_binary = ply_is_binary(path);
+      read = CGAL::IO::read_PLY(in, mesh, info.ply_comments, false);
+    }
+    else
+    {
+      read = CGAL::IO::read_OFF(in, mesh);
+      if(stoff)   // the colour map made for the "C" stoff_without_colors() put in
+      {
+        auto vcolor = mesh.property_map<Vertex_index, CGAL::IO::Color>("v:color");
+        if(vcolor.second) mesh.remove_property_map(vcolor.first);
+      }
+    }
+    read = read && mesh.number_of_vertices() == file_vertices;
+  }
+  if(!read)
+  {
+    mesh.clear();
+    info.warnings.push_back("the mesh of " + path + " was rebuilt from its positions and faces: its other vertex properties are not kept");
+  }
+  std::string face_properties;   // made by the reader for faces it did not read
+  for(const std::string& p : mesh.properties<Face_index>())
+    if(!is_internal_property(p)) face_properties += (face_properties.empty() ? "" : ", ") + p.substr(2);
+  for(const std::string& p : mesh.properties<Face_index>())
+    if(!is_internal_property(p)) with_property_map<Face_index>(mesh, p, [&](auto& map) { mesh.remove_property_map(map); });
+  if(!face_properties.empty() && (info.format == Format::PLY || face_colours))
+    info.warnings.push_back("the face properties of " + path + " (" + face_properties + ") are not kept: its faces were rebuilt");
+  if(read)
+    for(std::size_t v = file_vertices; v < soup.points.size(); ++v)
+      mesh.add_vertex(Point(soup.points[v][0], soup.points[v][1], soup.points[v][2]));
+  add_soup_faces(soup, mesh);
+}
+
 } // namespace
 
 void read_input(const std::string& path, Mesh& mesh, Input_info& info, bool repair)
@@ -218,27 +287,46 @@ void read_input(const std::string& path, Mesh& mesh, Input_info& info, bool repa
   af_tool::Polygon_soup soup;
   try { soup = af_tool::read_checked_soup(path, af_tool::Mesh_format(int(info.format))); }
   catch(const af_tool::File_problem& e) { fail("read_error", std::string("cannot read ") + e.what()); }
-  // a file that reads but whose faces are no oriented 2-manifold is an input the fairing refuses, unless
-  // --repair asks to make it one (then the mesh is built from the repaired soup)
+  // faces that are no oriented 2-manifold (non-manifold vertices and edges of raw scans, flipped faces,
+  // faces repeating a vertex) are made one for the run (vertex_split.h), and the mesh is then built from
+  // the repaired soup, with the vertex properties the file's vertices have
+  const std::size_t file_vertices = soup.points.size();
   bool rebuilt = false;
   try { af_tool::check_oriented_manifold(soup); }
   catch(const af_tool::File_problem& e)
   {
-    if(!repair) fail("input_error", std::string("cannot fair ") + e.what() + " (--repair may make it usable)");
-    for(const std::string& c : af_tool::repair_soup(soup)) info.notes.push_back("--repair: " + c);
+    const af_tool::Soup_repair fixed = af_tool::repair_soup(soup);
     try { af_tool::check_oriented_manifold(soup); }
-    catch(const af_tool::File_problem& again) { fail("input_error", std::string("cannot fair ") + again.what() + ", even after --repair"); }
+    catch(const af_tool::File_problem& again)
+    {
+      fail("input_error", std::string("cannot fair ") + again.what() + (repair ? ", even after --repair" : ", even after splitting its non-manifold vertices"));
+    }
     rebuilt = true;
-    if(info.format != Format::STL)
-      info.warnings.push_back("--repair rebuilt the mesh of " + path + " from its positions and faces: its other vertex properties are not kept");
+    info.split.file_vertices = file_vertices;
+    info.split.copy_of = fixed.copy_of;
+    info.split.split_vertices = fixed.split_vertices;
+    for(const std::string& c : fixed.changes) info.input_changes.push_back(repair ? "--repair: " + c : c);
+    if(repair && !fixed.copy_of.empty())
+      info.input_changes.push_back("--repair: the copies of split vertices are written after the input's " + std::to_string(file_vertices) + " vertices");
+    if(!repair)
+    {
+      std::string changes;
+      for(const std::string& c : fixed.changes) changes += (changes.empty() ? "" : "; ") + c;
+      info.warnings.push_back(std::string(e.what()) + ": for the run, " + changes +
+                              (fixed.copy_of.empty() ? std::string()
+                                                     : "; each split vertex is written once, at the mean of its copies, with the input's vertex numbers"));
+    }
   }
   info.warnings.insert(info.warnings.end(), soup.warnings.begin(), soup.warnings.end());
-  if(rebuilt && info.format != Format::STL) add_soup_faces(soup, mesh);
+  if(rebuilt && info.format != Format::STL && info.format != Format::OBJ)
+    read_vertices_then_soup_faces(path, soup, file_vertices, mesh, info);
+  else if(rebuilt && info.format == Format::OBJ)
+    add_soup_faces(soup, mesh);   // CGAL's OBJ reader keeps no vertex property: what the program keeps is read below
   if(info.format == Format::STL)
   {
     add_soup_faces(soup, mesh);
     info.notes.push_back(std::to_string(soup.merged_points) + " triangle corners of " + path + " merged into the " +
-                         std::to_string(soup.points.size()) + " vertices they coincide with");
+                         std::to_string(file_vertices) + " vertices they coincide with");
   }
 
   bool ok = info.format == Format::STL || rebuilt;
@@ -263,6 +351,11 @@ void read_input(const std::string& path, Mesh& mesh, Input_info& info, bool repa
       {
         std::ifstream in(path);
         ok = CGAL::IO::read_OFF(in, mesh);  // Surface_mesh overload: keeps normals, colours, texture coordinates in v:*
+        // no face colours where the file has none (CGAL's reader makes them black for a COFF file)
+        auto fcolor = mesh.property_map<Face_index, CGAL::IO::Color>("f:color");
+        std::ifstream again(path, std::ios::binary);
+        if(ok && fcolor.second && !off_face_colours(std::string(std::istreambuf_iterator<char>(again), std::istreambuf_iterator<char>())))
+          mesh.remove_property_map(fcolor.first);
       }
     }
     else if(info.format == Format::PLY)
@@ -304,8 +397,6 @@ void read_input(const std::string& path, Mesh& mesh, Input_info& info, bool repa
     fail("read_error", "cannot read a polygon mesh from " + path + " (CGAL's reader refused a file the checks accepted)" +
                        (printed.empty() ? std::string() : ": " + printed));
   }
-  if(repair)
-    for(const std::string& c : af_tool::repair_mesh(mesh)) info.notes.push_back("--repair: " + c);
   if(info.format == Format::PLY)
   {
     info.vertex_alpha = fold_alpha<Vertex_index>(mesh, mesh.vertices(), "v:color", "v:alpha");
@@ -318,11 +409,11 @@ void read_input(const std::string& path, Mesh& mesh, Input_info& info, bool repa
     if(normals) mesh.add_property_map<Vertex_index, Vector>("v:normal", Vector(0, 0, 0));
     if(textures)
     {
-      const Obj_texcoords t = read_obj_texcoords(path, mesh.number_of_vertices());
+      const Obj_texcoords t = read_obj_texcoords(path, file_vertices);
       if(t.matched)
       {
         Texcoord_map uv = mesh.add_property_map<Vertex_index, Texcoord>("v:texcoord", Texcoord(0, 0)).first;
-        for(Vertex_index v : mesh.vertices()) uv[v] = Texcoord(t.uv[std::size_t(v)][0], t.uv[std::size_t(v)][1]);
+        for(std::size_t v = 0; v < file_vertices; ++v) uv[Vertex_index(Mesh::size_type(v))] = Texcoord(t.uv[v][0], t.uv[v][1]);
         if(t.dropped_w) info.warnings.push_back("the third components (w) of the vt of " + path + " are not kept");
       }
       else
@@ -333,172 +424,23 @@ void read_input(const std::string& path, Mesh& mesh, Input_info& info, bool repa
     }
     if(colors) info.warnings.push_back("vertex colours on the v lines of " + path + " are not kept (CGAL's OBJ reader drops them)");
   }
+  copy_properties_to_copies(mesh, info.split);
+  if(repair)
+  {
+    for(const std::string& c : af_tool::repair_mesh(mesh)) info.input_changes.push_back("--repair: " + c);
+    info.split = Vertex_split();   // --repair writes the repaired mesh, copies included
+  }
+  info.triangulated_faces = af_tool::triangulate_polygons(mesh);
+  if(info.triangulated_faces)
+  {
+    info.input_changes.push_back("triangulated " + std::to_string(info.triangulated_faces) + " faces that are not triangles");
+    info.warnings.push_back(std::to_string(info.triangulated_faces) + " faces of " + path +
+                            " are not triangles: triangulated (CGAL's triangulate_faces), and written as triangles");
+  }
+  for(const std::string& c : info.input_changes)
+    if(c.compare(0, 9, "--repair:") == 0) info.notes.push_back(c);
   info.has_normals = mesh.property_map<Vertex_index, Vector>("v:normal").second;
   info.normals_read = info.has_normals && info.format != Format::OBJ;
-}
-
-// ------------------------------------------------------------------------------------------------
-// Output
-// ------------------------------------------------------------------------------------------------
-namespace {
-
-bool is_internal_property(const std::string& name)
-{
-  return name == "v:connectivity" || name == "v:point" || name == "v:removed" || name == "f:connectivity" ||
-         name == "f:removed" || name == "e:removed" || name == "h:connectivity";
-}
-
-} // namespace
-
-// The properties of the mesh that a file of format `f` does not hold (warned about, not an error).
-std::vector<std::string> dropped_properties(const Mesh& mesh, Format f)
-{
-  std::vector<std::string> all = mesh.properties<Vertex_index>();
-  for(const std::string& p : mesh.properties<Face_index>()) all.push_back(p);
-  for(const std::string& p : mesh.properties<Mesh::Edge_index>()) all.push_back(p);
-  for(const std::string& p : mesh.properties<Mesh::Halfedge_index>()) all.push_back(p);
-  std::vector<std::string> dropped;
-  for(const std::string& p : all)
-  {
-    if(is_internal_property(p)) continue;
-    bool kept = false;
-    if(f == Format::PLY)  // CGAL's Surface_mesh PLY writer writes normals, colours and every numeric property
-      kept = p == "v:normal" || p == "v:color" || p == "f:color" ||
-             (p.compare(0, 2, "v:") == 0 && is_numeric_property<Vertex_index>(mesh, p)) ||
-             (p.compare(0, 2, "f:") == 0 && is_numeric_property<Face_index>(mesh, p)) ||
-             (p.compare(0, 2, "e:") == 0 && is_numeric_property<Mesh::Edge_index>(mesh, p)) ||
-             (p.compare(0, 2, "h:") == 0 && is_numeric_property<Mesh::Halfedge_index>(mesh, p));
-    else if(f == Format::OFF) kept = (p == "v:normal" || p == "v:color" || p == "v:texcoord" || p == "f:color");
-    else kept = (p == "v:normal" || p == "v:texcoord");
-    if(!kept) dropped.push_back(p);
-  }
-  return dropped;
-}
-
-namespace {
-
-// OBJ with normals or texture coordinates, which CGAL's OBJ writer does not attach to the vertices
-// (it writes vn lines but faces without //n references, and no vt). This writes one vn and one vt per
-// vertex, in the vertex order, and faces "f a//a", "f a/a" or "f a/a/a".
-bool write_obj_with_vertex_data(std::ostream& os, const Mesh& mesh, const Normal_map* normals, const Texcoord_map* uv)
-{
-  os.precision(17);
-  os << "# written by anisotropic_fairing\n";
-  os << "# " << mesh.number_of_vertices() << " vertices, " << mesh.number_of_faces() << " faces\n";
-  for(Vertex_index v : mesh.vertices())
-  {
-    const Point& p = mesh.point(v);
-    os << "v " << p.x() << ' ' << p.y() << ' ' << p.z() << '\n';
-  }
-  if(uv)
-    for(Vertex_index v : mesh.vertices())
-    {
-      const Texcoord& t = (*uv)[v];
-      os << "vt " << t.x() << ' ' << t.y() << '\n';
-    }
-  if(normals)
-    for(Vertex_index v : mesh.vertices())
-    {
-      const Vector& n = (*normals)[v];
-      os << "vn " << n.x() << ' ' << n.y() << ' ' << n.z() << '\n';
-    }
-  for(Face_index f : mesh.faces())
-  {
-    os << 'f';
-    for(Vertex_index v : CGAL::vertices_around_face(mesh.halfedge(f), mesh))
-    {
-      const std::size_t i = std::size_t(v) + 1;
-      os << ' ' << i;
-      if(uv) os << '/' << i;
-      if(normals) os << (uv ? "/" : "//") << i;
-    }
-    os << '\n';
-  }
-  return bool(os);
-}
-
-} // namespace
-
-void write_mesh(const std::string& path, Format f, const Mesh& mesh, const Input_info& info, bool with_normals)
-{
-  bool ok = false;
-  {
-    Capture_streams capture;
-    if(f == Format::PLY)
-    {
-      const bool binary = info.format == Format::PLY && info.ply_binary;
-      std::ofstream out(path, std::ios::binary);
-      if(out)
-      {
-        CGAL::IO::set_mode(out, binary ? CGAL::IO::BINARY : CGAL::IO::ASCII);
-        // colours without the alpha the input did not have (a copy: the mesh is the caller's)
-        const bool vertex_rgb = !info.vertex_alpha && mesh.property_map<Vertex_index, CGAL::IO::Color>("v:color").second;
-        const bool face_rgb = !info.face_alpha && mesh.property_map<Face_index, CGAL::IO::Color>("f:color").second;
-        if(vertex_rgb || face_rgb)
-        {
-          Mesh rgb = mesh;
-          if(vertex_rgb) unfold_rgb<Vertex_index>(rgb, rgb.vertices(), "v:");
-          if(face_rgb) unfold_rgb<Face_index>(rgb, rgb.faces(), "f:");
-          ok = CGAL::IO::write_PLY(out, rgb, info.ply_comments, CGAL::parameters::stream_precision(17));
-        }
-        else ok = CGAL::IO::write_PLY(out, mesh, info.ply_comments, CGAL::parameters::stream_precision(17));
-        out.close();
-        ok = ok && !out.fail();
-      }
-    }
-    else if(f == Format::OFF)
-    {
-      std::ofstream out(path);
-      if(out)
-      {
-        // the Surface_mesh overload also writes v:normal, v:color, v:texcoord and f:color
-        ok = CGAL::IO::write_OFF(out, mesh, CGAL::parameters::stream_precision(17));
-        out.close();
-        ok = ok && !out.fail();
-      }
-    }
-    else
-    {
-      std::ofstream out(path);
-      if(out)
-      {
-        const auto normals = mesh.property_map<Vertex_index, Vector>("v:normal");
-        const auto uv = mesh.property_map<Vertex_index, Texcoord>("v:texcoord");
-        if((with_normals && normals.second) || uv.second)
-          ok = write_obj_with_vertex_data(out, mesh, with_normals && normals.second ? &normals.first : nullptr,
-                                          uv.second ? &uv.first : nullptr);
-        else
-          ok = CGAL::IO::write_OBJ(out, mesh, CGAL::parameters::stream_precision(17));
-        out.close();
-        ok = ok && !out.fail();
-      }
-    }
-  }
-  if(!ok) fail("write_error", "cannot write " + path);
-}
-
-fs::path temporary_next_to(const std::string& path)
-{
-  const fs::path p(path);
-  const fs::path dir = p.has_parent_path() ? p.parent_path() : fs::path(".");
-  // the extension kept last, so that a reader (--snapshot's renderer) knows the format
-  return dir / ("." + p.stem().string() + ".tmp" + std::to_string(long(::getpid())) + p.extension().string());
-}
-
-bool write_file_atomically(const std::string& path, const std::string& text)
-{
-  const fs::path tmp = temporary_next_to(path);
-  {
-    std::ofstream out(tmp, std::ios::binary);
-    if(!out) return false;
-    out << text;
-    out.close();
-    if(out.fail()) { std::error_code ec; fs::remove(tmp, ec); return false; }
-  }
-  std::error_code ec;
-  fs::rename(tmp, path, ec);
-  if(ec) { fs::remove(tmp, ec); return false; }
-  return true;
 }
 
 } // namespace af_tool

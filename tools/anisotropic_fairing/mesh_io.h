@@ -7,6 +7,7 @@
 #define AF_TOOL_MESH_IO_H
 
 #include "tool_common.h"
+#include "vertex_split.h"
 
 #include <boost/cstdint.hpp>
 
@@ -28,9 +29,13 @@ struct Input_info
   std::string uv_problem;         // OBJ: why its vt could not be kept (empty: none, or kept as v:texcoord)
   std::vector<std::string> warnings;
   std::vector<std::string> notes;   // what was done to read the file (STL corners merged, strips split)
+  std::vector<std::string> input_changes;   // what was changed for the run (split, triangulated, --repair's changes)
+  Vertex_split split;             // the non-manifold vertices split for the run, merged on writing
+  std::size_t triangulated_faces = 0;   // faces that were not triangles
 };
 
-// Reads INPUT (checked first; with `repair`, repaired as --repair says). Throws Failure.
+// Reads INPUT (checked first). Faces that are not an oriented 2-manifold are made one for the run
+// (vertex_split.h), polygons are triangulated; with `repair`, also as --repair says. Throws Failure.
 void read_input(const std::string& path, Mesh& mesh, Input_info& info, bool repair);
 
 // The numeric types a PLY property can have (CGAL's reader makes a v:<name> map of that type).
@@ -53,8 +58,9 @@ bool is_numeric_property(const Mesh& mesh, const std::string& property)
 // The properties of the mesh that a file of format `f` does not hold (warned about, not an error).
 std::vector<std::string> dropped_properties(const Mesh& mesh, Format f);
 
-// Writes the mesh in format `f` (PLY binary if the input was a binary PLY). Throws Failure.
-void write_mesh(const std::string& path, Format f, const Mesh& mesh, const Input_info& info, bool with_normals);
+// Writes the mesh in format `f`: PLY binary if the input was a binary PLY, STL binary; as text if `text`.
+// Throws Failure.
+void write_mesh(const std::string& path, Format f, const Mesh& mesh, const Input_info& info, bool with_normals, bool text);
 
 // A temporary file next to `path`, renamed to it once everything succeeded.
 std::filesystem::path temporary_next_to(const std::string& path);

@@ -3,6 +3,7 @@
 // from the help (the test cli_option_docs checks they agree).
 #include "options.h"
 #include "json_report.h"
+#include "option_values.h"
 #include "option_words.h"
 
 #include <CGAL/Anisotropic_fairing/Fairing_settings.h>
@@ -30,98 +31,6 @@ namespace af_tool {
 namespace fs = std::filesystem;
 
 namespace {
-
-// "quality,red" -> {"quality", "red"}; blanks around a name are ignored
-std::vector<std::string> parse_attribute_list(const std::string& text)
-{
-  std::vector<std::string> names;
-  std::string::size_type start = 0;
-  for(;;)
-  {
-    const std::string::size_type comma = text.find(',', start);
-    std::string name = text.substr(start, comma == std::string::npos ? std::string::npos : comma - start);
-    const std::string::size_type b = name.find_first_not_of(" \t"), e = name.find_last_not_of(" \t");
-    name = b == std::string::npos ? std::string() : name.substr(b, e - b + 1);
-    if(name.empty()) usage_error("--attributes expects NAME,NAME,..., not " + quoted_excerpt(text));
-    if(std::find(names.begin(), names.end(), name) != names.end())
-      usage_error("--attributes names '" + name + "' twice");
-    names.push_back(name);
-    if(comma == std::string::npos) break;
-    start = comma + 1;
-  }
-  return names;
-}
-
-double parse_double(const std::string& flag, const std::string& text)
-{
-  errno = 0;
-  char* end = nullptr;
-  const double v = std::strtod(text.c_str(), &end);
-  if(text.empty() || end != text.c_str() + text.size() || (errno != ERANGE && !std::isfinite(v)))
-    usage_error(flag + " expects a finite number, not " + quoted_excerpt(text));
-  if(errno == ERANGE && std::abs(v) > 1) usage_error(flag + " " + text + " is beyond the range of double precision");
-  if(errno == ERANGE)   // strtod says so below the smallest normal double, where the arithmetic loses its digits
-    usage_error(flag + " " + text + " is below the smallest normal double (2.2e-308), too small to compute with");
-  return v;
-}
-
-unsigned int parse_unsigned(const std::string& flag, const std::string& text)
-{
-  errno = 0;
-  char* end = nullptr;
-  const unsigned long long v = std::strtoull(text.c_str(), &end, 10);
-  if(text.empty() || text[0] == '-' || text[0] == '+' || end != text.c_str() + text.size() || errno == ERANGE ||
-     v > (std::numeric_limits<unsigned int>::max)())
-    usage_error(flag + " expects a non-negative integer, not " + quoted_excerpt(text));
-  return static_cast<unsigned int>(v);
-}
-
-// A number option: `value` read from `text` and checked (> 0, or >= 0 with `zero_allowed`); `given` is set
-// after the check, or, with `given_if_invalid`, before it (a usage error's report then shows the value).
-void set_number(double& value, bool& given, const std::string& flag, const std::string& text, bool zero_allowed,
-                bool given_if_invalid = false)
-{
-  value = parse_double(flag, text);
-  if(given_if_invalid) given = true;
-  if(zero_allowed ? !(value >= 0) : !(value > 0)) usage_error(flag + (zero_allowed ? " must be >= 0" : " must be positive"));
-  given = true;
-}
-
-// A number option of the library's: set once read and checked as above.
-void set_number(std::optional<double>& value, const std::string& flag, const std::string& text, bool zero_allowed)
-{
-  double v = 0;
-  bool given = false;
-  set_number(v, given, flag, text, zero_allowed);
-  value = v;
-}
-
-// The index of `text` among `names`; for any other text a usage error that lists them ("a, b or c").
-std::size_t choice_index(const std::string& flag, const std::string& text, const std::vector<const char*>& names)
-{
-  for(std::size_t i = 0; i < names.size(); ++i)
-    if(text == names[i]) return i;
-  usage_error(flag + " expects " + word_list(names) + ", not " + quoted_excerpt(text));
-}
-
-// The value that `text` names in `table`; for any other text that usage error.
-template <typename T>
-T choice(const std::string& flag, const std::string& text, const Word_table<T>& table)
-{
-  return table[choice_index(flag, text, words_of(table))].second;
-}
-
-// Whether two paths name one file: the same file if both exist (links included), else the same path.
-bool same_file(const std::string& a, const std::string& b)
-{
-  std::error_code ec1, ec2;
-  if(fs::exists(a, ec1) && fs::exists(b, ec2))
-  {
-    std::error_code ec;
-    return fs::equivalent(a, b, ec);
-  }
-  return fs::weakly_canonical(a, ec1) == fs::weakly_canonical(b, ec2);
-}
 
 // One option: its name, an alias, the value it takes (nullptr: a flag without value), its help (the
 // lines after the first are indented under it) and what it does with its value. A handler may throw
@@ -176,6 +85,16 @@ const Option_spec option_table[] = {
      choice_index(flag, v, stop_words);
      o.fairing.stopping_criteria = stopping_rule(v);
    }},
+  {"--strength", nullptr, "S",
+   "how far the noise stop goes: until the surface has moved off the input\n"
+   "by S times the estimated noise (default 1; 2 smooths more, 0.5 less).\n"
+   "The rest stays automatic: the flows are compared at the noise level,\n"
+   "and the one kept runs again to S times it. Needs the noise stop:\n"
+   "automatic parameters, or --stop noise with a time step (strength)",
+   [](Options& o, const std::string& flag, const std::string& v) {
+     bool given = false;
+     set_number(o.fairing.strength, given, flag, v, false);
+   }},
   {"--fidelity", nullptr, "W", "fidelity weight omega in model units (1/time), as in the paper (default 0;\n"
    "fidelity_weight)",
    [](Options& o, const std::string& flag, const std::string& v) { set_number(o.fairing.fidelity_weight, flag, v, true); }},
@@ -184,13 +103,19 @@ const Option_spec option_table[] = {
    [](Options& o, const std::string& flag, const std::string& v) {
      set_number(o.fairing.relative_fidelity_weight, flag, v, true);
    }},
-  {"--maximum-deviation", "--absolute-maximum-deviation", "D",
+  {"--absolute-maximum-deviation", "--maximum-deviation", "D",
    "no written vertex moves farther than D (model units) off its input\n"
    "position: the vertices nearing it are held by a fidelity weight of\n"
    "their own, and one it cannot hold is written on the bound (default:\n"
-   "no bound; 0: none; absolute_maximum_deviation; also spelt\n"
-   "--absolute-maximum-deviation)",
-   [](Options& o, const std::string& flag, const std::string& v) { set_number(o.fairing.absolute_maximum_deviation, flag, v, true); }},
+   "no bound; 0: none; absolute_maximum_deviation; --maximum-deviation,\n"
+   "its former spelling, is deprecated: in the library and Python that\n"
+   "name is the relative bound)",
+   [](Options& o, const std::string& flag, const std::string& v) {
+     if(flag == "--maximum-deviation")
+       o.deprecations.push_back("--maximum-deviation is deprecated: write --absolute-maximum-deviation (model units, as here) or "
+                                "--relative-maximum-deviation (units of l, as the library's maximum_deviation)");
+     set_number(o.fairing.absolute_maximum_deviation, flag, v, true);
+   }},
   {"--relative-maximum-deviation", nullptr, "R", "the same in units of l (relative_maximum_deviation); give at most one of the two",
    [](Options& o, const std::string& flag, const std::string& v) { set_number(o.fairing.relative_maximum_deviation, flag, v, true); }},
   {"--attribute-maximum-deviation", nullptr, "D",
@@ -326,12 +251,16 @@ const Option_spec option_table[] = {
   {"--report", nullptr, "FILE.json", "write per-step statistics (also, with status and message, on failure)",
    [](Options& o, const std::string&, const std::string& v) { o.report = v; }},
   {"--repair", nullptr, nullptr,
-   "if the faces are not an oriented 2-manifold, repair them with CGAL's\n"
-   "Polygon_mesh_processing (drop faces that repeat a vertex, orient, split\n"
-   "non-manifold vertices and edges; the input's vertex properties other\n"
-   "than positions are then not kept), and on any mesh stitch coinciding\n"
-   "borders and remove vertices on no face; each change is printed",
+   "repair the mesh with CGAL's Polygon_mesh_processing and write it as\n"
+   "repaired: stitch coinciding borders, remove vertices on no face (the\n"
+   "later vertices move up) and keep the copies of split vertices (written\n"
+   "after the input's); the vertex properties of the vertices kept are\n"
+   "kept; each change is printed",
    [](Options& o, const std::string&, const std::string&) { o.repair = true; }},
+  {"--ascii", nullptr, nullptr,
+   "write OUTPUT as text: an ASCII STL (STL is otherwise binary, which holds\n"
+   "single-precision floats), or an ASCII PLY where INPUT is a binary PLY",
+   [](Options& o, const std::string&, const std::string&) { o.text_output = true; }},
   {"--quiet", "-q", nullptr, "no progress line per step on stderr (the callback named parameter)",
    [](Options& o, const std::string&, const std::string&) { o.quiet = true; }},
   {"--progress-interval", nullptr, "SECONDS", "after this many seconds without a line on stderr, say what the\n"
@@ -352,13 +281,17 @@ const char* const help_before_options =
 "Fairs the triangle mesh INPUT by geometric diffusion with Loop-subdivision finite elements\n"
 "(Bajaj & Xu 2003; isotropic tensor: mean-curvature flow, or the anisotropic, feature-preserving one)\n"
 "and writes the result to OUTPUT.\n"
-"INPUT and OUTPUT are OFF, OBJ or PLY files (by extension; the formats may differ); INPUT may also be\n"
-"STL (coincident corners are merged into vertices) or a PLY of triangle strips. Every file is checked\n"
-"before it is read: a bad count, index, number or a face set that is not an oriented 2-manifold is\n"
-"refused with the line or element named (see --repair). The output keeps\n"
-"the vertex order, full double precision and every vertex property of the input that its format can\n"
-"hold (PLY: normals, colours, numeric properties; OFF: colours, texture coordinates, face colours;\n"
-"OBJ: normals, texture coordinates; a warning names the dropped ones).\n"
+"INPUT and OUTPUT are OFF, OBJ, PLY or STL files (by extension; the formats may differ); in STL\n"
+"coincident corners are merged into vertices; INPUT may also be a PLY of triangle strips. Every file is\n"
+"checked before it is read: a bad count, index or number is refused with the line or element named.\n"
+"Faces that are not triangles are triangulated. Faces that are not an oriented 2-manifold (vertices\n"
+"where separate fans of faces meet, edges of three or more faces, flipped faces, faces that use a vertex\n"
+"twice) are made one for the run: such a vertex is split into one copy per fan, and written back once,\n"
+"at the mean of its copies; flipped faces are turned, faces that use a vertex twice removed;\n"
+"a warning and the report's input_changes say what was done. The output keeps the input's vertices in\n"
+"their order and number, full double precision and every vertex property of the input that its format\n"
+"can hold (PLY: normals, colours, numeric properties; OFF: colours, texture coordinates, face colours;\n"
+"OBJ: normals, texture coordinates; STL: positions; a warning names the dropped ones).\n"
 "If the input has vertex normals, the normals of the faired surface are written: for the Loop element\n"
 "with --output limit the exact normals of the faired limit surface (and the limit points), otherwise\n"
 "the vertex normals of the output mesh (CGAL::Polygon_mesh_processing::compute_vertex_normals);\n"
@@ -384,7 +317,7 @@ const char* const help_before_options =
 const char* const help_after_options =
 "Options also accept the form --option=value.\n"
 "\n"
-"exit status: 0 success; 1 failure (unreadable input, a mesh that is not a 2-manifold triangle mesh,\n"
+"exit status: 0 success; 1 failure (unreadable input, a mesh the library refuses,\n"
 "an attribute the input does not have, fairing failure, unwritable output or report); 2 usage error\n"
 "(including OUTPUT or --report naming the INPUT or each other).\n"
 "On failure one line starting with\n"
@@ -538,10 +471,19 @@ void parse_arguments(int argc, char** argv, Options& o)
   if(given.time_step && given.relative_time_step) usage_error("give either --time-step or --relative-time-step, not both");
   if(given.fidelity_weight && given.relative_fidelity_weight) usage_error("give either --fidelity or --relative-fidelity, not both");
   if(given.absolute_maximum_deviation && given.relative_maximum_deviation)
-    usage_error("give either --maximum-deviation or --relative-maximum-deviation, not both");
+    usage_error("give either --absolute-maximum-deviation or --relative-maximum-deviation, not both");
   const AF::Attribute_mode mode = effective_mode(o);
   if(o.attributes.empty() && (mode == AF::Attribute_mode::COUPLED || mode == AF::Attribute_mode::ATTRIBUTES_ONLY))
     usage_error(std::string("--mode ") + mode_name(mode) + " needs --attributes");
+  // --strength scales the noise stop's target: where no run stops at the noise level it would change nothing
+  const bool noise_stop = mode != AF::Attribute_mode::ATTRIBUTES_ONLY &&
+                          (given.stopping_criteria ? given.stopping_criteria->noise_discrepancy > 0 : given.automatic_parameters());
+  if(given.strength != 1 && !noise_stop)
+    usage_error(std::string("--strength scales the noise stop, which this run does not use (") +
+                (mode == AF::Attribute_mode::ATTRIBUTES_ONLY ? "--mode attributes fairs on a fixed surface"
+                 : given.stopping_criteria ? "--stop " + o.stop
+                                           : std::string("a time step is given: --stop paper")) +
+                "); give --stop noise, or no --strength");
   const bool asked_anisotropic = o.tensor == "anisotropic";   // the tensor's options need it said
   if(o.has_lambda && !asked_anisotropic) usage_error("--lambda needs --tensor anisotropic");
   if(o.has_epsilon && !asked_anisotropic) usage_error("--epsilon needs --tensor anisotropic");
@@ -550,7 +492,7 @@ void parse_arguments(int argc, char** argv, Options& o)
                                               o.lambda, o.epsilon, o.normal_motion_only);
   Format f;
   if(!format_of(o.input, f)) usage_error("INPUT must be an .off, .obj, .ply or .stl file: " + o.input);
-  if(!format_of(o.output, f) || f == Format::STL) usage_error("OUTPUT must be an .off, .obj or .ply file: " + o.output);
+  if(!format_of(o.output, f)) usage_error("OUTPUT must be an .off, .obj, .ply or .stl file: " + o.output);
   // nothing written may overwrite the input or another file written (the report is not written either)
   if(same_file(o.output, o.input)) usage_error("OUTPUT " + o.output + " is the INPUT: it would be overwritten");
   if(!o.report.empty() && same_file(o.report, o.input))

@@ -31,7 +31,9 @@ struct Options
   bool quiet = false;
   double progress_interval = 2;   // seconds of silence before a line says what the program is doing (0: never)
   bool has_progress_interval = false;
-  bool repair = false;           // --repair: make a non-manifold or inconsistently oriented input usable
+  bool repair = false;           // --repair: also stitch borders and remove lone vertices
+  bool text_output = false;      // --ascii: STL and PLY written as text
+  std::vector<std::string> deprecations;   // the deprecated spellings used, each with what to write instead
   bool report_refused = false;   // the report's path collides with the input or the output: never written
   std::vector<std::string> positional;   // the arguments that are not options, as given (even after a usage error)
   std::string hold;            // --hold: a vertex property or a file of vertex indices

@@ -40,6 +40,7 @@ struct Fairing_options
   int flow_order = 2;                                ///< 2 or 4
   std::optional<unsigned int> number_of_iterations;  ///< automatic: `automatic_maximum_steps`, or 10 with a time step
   std::optional<Stopping_criteria> stopping_criteria;    ///< automatic: the noise level, or the paper's criteria
+  double strength = 1;                               ///< multiplies the noise criterion's target: > 1 smooths more, < 1 less (> 0)
   std::optional<double> fidelity_weight;             ///< model units; excludes `relative_fidelity_weight`
   std::optional<double> relative_fidelity_weight;    ///< units of \f$1/\ell^2\f$; 0 when neither is given
   std::optional<double> relative_maximum_deviation;  ///< units of \f$\ell\f$; excludes `absolute_maximum_deviation`

@@ -139,6 +139,7 @@ struct Fairing_report
   double noise_deviation = 0;     ///< the same in model units, \f$\sigma \approx\f$ `noise_level` \f$\times\f$ `mean_edge_length`
   std::size_t removed_spikes = 0; ///< with automatic parameters: vertices that stood out of their ring alone, moved to its centroid before the noise was estimated, when they were at least 2% of the vertices (impulsive noise; a clean mesh's tips and corners are far fewer); 0 otherwise
   double noise_displacement = 0;  ///< how far the written surface moved off the input (as `Fairing_step::noise_displacement`), at the end
+  double strength = 1;            ///< the named parameter `strength`: the noise criterion's target was `Stopping_criteria::noise_discrepancy` times it times `noise_level` (1: the estimated noise itself)
   double feature_threshold = 0;   ///< the anisotropic tensor's threshold \f$\lambda\f$ used, model units (1/length); 0 for the isotropic tensor
   double prefilter_time = 0;      ///< the anisotropic tensor's prefilter time \f$\varepsilon\f$ used, model units; 0 without prefilter
   /// the share of the way from the input to its Loop limit points that the written positions go,
@@ -146,7 +147,11 @@ struct Fairing_report
   /// first step, the input's own limit surface being off it by more than the noise (Loop element; with
   /// `Output_positions::CONTROL_POINTS` the input is written and this says what the limit output would be)
   double limit_weight = 1;
-  double maximum_deviation = 0;   ///< the bound on how far a written vertex moves off the input (named parameter `relative_maximum_deviation` or `absolute_maximum_deviation`), model units; 0 without a bound
+  double absolute_maximum_deviation = 0;   ///< the bound on how far a written vertex moves off the input (named parameter `relative_maximum_deviation` or `absolute_maximum_deviation`), model units; 0 without a bound
+  /// \deprecated `absolute_maximum_deviation` under its former name, which the named parameters give the relative
+  /// bound; filled as it, to be removed (no compiler warning: on a data member the compilers warn wherever a
+  /// report is made or copied)
+  double maximum_deviation = 0;
   double largest_deviation = 0;   ///< the largest distance from a written vertex to its input position, model units (with or without a bound)
   double attribute_maximum_deviation = 0; ///< the bound on each vertex's attribute values (`attribute_maximum_deviation`), the attributes' units; 0 without
   double largest_attribute_deviation = 0; ///< the largest Euclidean distance between a vertex's written and input attribute values

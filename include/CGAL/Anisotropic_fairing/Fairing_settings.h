@@ -103,7 +103,8 @@ With \f$\mathcal{H}(t) = \int_{M(t)} |H|^2 dA / \int_{M(0)} |H|^2 dA\f$ and its 
 - steady state: \f$\max_i |x_i(t_{n+1}) - x_i(t_n)| / \tau \le\f$ `steady_speed` (the flow has stopped, e.g. balanced by the fidelity term);
 - noise level (the discrepancy principle): the written surface has moved off the input, along the input's
   normals and in units of the local edge length (robust deviation over the vertices), by `noise_discrepancy`
-  times the noise the package estimates from the input itself (`Fairing_report::noise_level`). Removing noise
+  times the noise the package estimates from the input itself (`Fairing_report::noise_level`), times the named
+  parameter `strength` (1 unless given). Removing noise
   of deviation \f$\sigma\f$ moves the vertices by about \f$\sigma\f$; diffusing further removes shape.
   The run ends on the surface where the level is reached: the step that passes it is taken again,
   shorter, until it ends within 2% of the level (the rest is interpolated).

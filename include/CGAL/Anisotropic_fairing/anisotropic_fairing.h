@@ -155,6 +155,21 @@ of its area per step. `time_step` and `fidelity_weight` give them in model units
     \cgalParamDefault{`Stopping_criteria::automatic()` (the noise level) with automatic parameters, except in
                       `Attribute_mode::ATTRIBUTES_ONLY`; otherwise `Stopping_criteria()`: the paper's thresholds 0.005, 8 and 0.2 read at unit scale}
   \cgalParamNEnd
+  \cgalParamNBegin{strength}
+    \cgalParamDescription{how far the noise criterion goes: its target, `Stopping_criteria::noise_discrepancy` times the
+                          estimated noise, times this (2 smooths more, 0.5 less). Everything else stays automatic. In the
+                          default run the flows are compared at the noise level itself, where the risk estimate measures
+                          the error of a denoised surface, and the flow kept (`Fairing_report::selected_tensor`) then runs
+                          again from the input to `strength` times the noise; its run is the report's, and `choices` ends
+                          with it. A run with a tensor given or a time step, stopped by the noise criterion, aims at the
+                          scaled target directly. Above 1 the automatic fourth-order flow steps at the scale `strength`
+                          \f$\times h\f$ (time step \f$0.1\,(\mathrm{strength}\,h)^4\f$, its levelling off read on waves of
+                          \f$4\pi\,\mathrm{strength}\,h\f$), so that it reaches the farther target in about as many steps.
+                          Where no run stops at the noise level (the paper's criteria, `Stopping_criteria::none()`,
+                          `Attribute_mode::ATTRIBUTES_ONLY`) any value but 1 is refused, since it would change nothing
+                          (Section \ref sec_AF_strength)}
+    \cgalParamType{double > 0, finite} \cgalParamDefault{`1`: the estimated noise itself}
+  \cgalParamNEnd
   \cgalParamNBegin{diffusion_tensor}
     \cgalParamDescription{the tensor \f$D\f$}
     \cgalParamType{a model of `DiffusionTensor`}

@@ -5,21 +5,23 @@ finite elements: the Anisotropic_fairing package for numpy arrays.
     V2, _, report = af.fair(V, F)        # the default run: every parameter chosen from the mesh
 
 :func:`fair` fairs a mesh given as arrays (and functions on it, as ``attributes``); :func:`limit_surface`
-gives its Loop limit surface (exact positions, normals, curvatures, finer meshes); :func:`fair_meshio`
-and :func:`fair_open3d` fair a ``meshio.Mesh`` and an Open3D ``TriangleMesh``. The types are in the
-package's stubs (``__init__.pyi``); the report is a :class:`FairingReport`.
+gives its Loop limit surface (exact positions, normals, curvatures, finer meshes); :func:`fair_meshio`,
+:func:`fair_open3d` and :func:`fair_vtk` fair a ``meshio.Mesh``, an Open3D ``TriangleMesh`` and a VTK
+``vtkPolyData`` (a PyVista ``PolyData`` too). The types are in the package's stubs (``__init__.pyi``); the
+report is a :class:`FairingReport`.
 """
 from . import _core
 from ._core import FairingError, LimitSurface, __version__, limit_surface
-from .meshes import fair_meshio, fair_open3d
+from ._progress import Progress as _Progress
+from .meshes import fair_meshio, fair_open3d, fair_vtk
 from .report import FairingReport, FairingStep, InitialSurface, StepInfo
 
-__all__ = ['fair', 'limit_surface', 'LimitSurface', 'FairingError', 'fair_meshio', 'fair_open3d', 'FairingReport',
-           'FairingStep', 'InitialSurface', 'StepInfo', '__version__']
+__all__ = ['fair', 'limit_surface', 'LimitSurface', 'FairingError', 'fair_meshio', 'fair_open3d', 'fair_vtk',
+           'FairingReport', 'FairingStep', 'InitialSurface', 'StepInfo', '__version__']
 
 
-def fair(V, F, *, attributes=None, vertex_is_constrained=None, callback=None, time_step=None, relative_time_step=None,
-         flow_order=None, number_of_iterations=None, stopping_criteria=None, fidelity_weight=None,
+def fair(V, F, *, attributes=None, vertex_is_constrained=None, callback=None, quiet=False, time_step=None, relative_time_step=None,
+         flow_order=None, number_of_iterations=None, stopping_criteria=None, strength=None, fidelity_weight=None,
          relative_fidelity_weight=None, relative_maximum_deviation=None, absolute_maximum_deviation=None,
          maximum_deviation=None, attribute_maximum_deviation=None, finite_element=None, output_positions=None,
          tensor=None, lambda_=None, epsilon=None, tangential_motion=None, linear_solver=None, boundary_handling=None,
@@ -30,13 +32,18 @@ def fair(V, F, *, attributes=None, vertex_is_constrained=None, callback=None, ti
     with or without borders. ``attributes``: N x d (or N) float64 values per vertex, faired with the surface.
     ``vertex_is_constrained``: N values, non-zero holds the vertex. ``callback(step)``: called after each
     step with a :class:`StepInfo` dict; returning False ends the run, an exception it raises ends it and is
-    raised again.
+    raised again. A run that lasts more than about a second shows its progress on stderr (the steps, the
+    run they belong to, the time elapsed; through ``tqdm`` if it is installed) unless ``quiet``; the result
+    is the same either way. Ctrl-C raises KeyboardInterrupt at the end of the step it arrives in (or of the
+    first step, during the set-up before it), leaving the inputs as they were.
 
     Every other parameter left at None takes its default; with none given this is the default run, every
     setting chosen from the mesh (noise estimate, tensor, time step, stop at the noise level), as the
     command-line program ``anisotropic_fairing`` does. They are the library's named parameters:
     ``time_step`` or ``relative_time_step`` (units of l^2, l the model's scale), ``flow_order`` (2 or 4),
-    ``number_of_iterations``, ``stopping_criteria`` ('auto', 'noise', 'paper', 'off'), ``fidelity_weight``
+    ``number_of_iterations``, ``stopping_criteria`` ('auto', 'noise', 'paper', 'off'), ``strength`` (the
+    noise stop's target in units of the estimated noise: 2 smooths more, 0.5 less; default 1; the tensor and
+    the choice of the result kept stay automatic; it needs the noise stop), ``fidelity_weight``
     or ``relative_fidelity_weight``, ``relative_maximum_deviation`` (units of l) or
     ``absolute_maximum_deviation`` (model units; ``maximum_deviation``: the relative one's deprecated
     spelling), ``attribute_maximum_deviation``, ``finite_element`` ('loop', 'linear'), ``output_positions``
@@ -53,5 +60,17 @@ def fair(V, F, *, attributes=None, vertex_is_constrained=None, callback=None, ti
     """
     given = locals()
     parameters = {name: given[name] for name in _core.parameter_names if given[name] is not None}
-    return _core.fair(V, F, attributes=attributes, vertex_is_constrained=vertex_is_constrained, callback=callback,
-                      **parameters)
+    return _run(V, F, attributes, vertex_is_constrained, callback, quiet, parameters)
+
+
+def _run(V, F, attributes, vertex_is_constrained, callback, quiet, parameters, vertex_normals=False):
+    """fair()'s run (and the adapters', which also ask for the vertex normals the program would write)."""
+    if quiet:
+        return _core.fair(V, F, attributes=attributes, vertex_is_constrained=vertex_is_constrained, callback=callback,
+                          vertex_normals=vertex_normals, **parameters)
+    with _Progress() as progress:
+        def step(info):
+            progress.step(info)
+            return None if callback is None else callback(info)
+        return _core.fair(V, F, attributes=attributes, vertex_is_constrained=vertex_is_constrained, callback=step,
+                          vertex_normals=vertex_normals, **parameters)

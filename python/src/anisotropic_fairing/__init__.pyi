@@ -1,6 +1,6 @@
 # Type stubs of the package anisotropic_fairing, checked against the installed module by mypy's stubtest
 # (the test command's python_package step). The report's types are in report.py.
-from typing import Any, Callable, Literal, Optional, Sequence, Tuple, Union, overload
+from typing import Any, Callable, Literal, Optional, Sequence, Tuple, TypeVar, Union, overload
 
 import numpy as np
 import numpy.typing as npt
@@ -10,8 +10,8 @@ from .report import FairingStep as FairingStep
 from .report import InitialSurface as InitialSurface
 from .report import StepInfo as StepInfo
 
-__all__ = ['fair', 'limit_surface', 'LimitSurface', 'FairingError', 'fair_meshio', 'fair_open3d', 'FairingReport',
-           'FairingStep', 'InitialSurface', 'StepInfo', '__version__']
+__all__ = ['fair', 'limit_surface', 'LimitSurface', 'FairingError', 'fair_meshio', 'fair_open3d', 'fair_vtk',
+           'FairingReport', 'FairingStep', 'InitialSurface', 'StepInfo', '__version__']
 
 __version__: str
 
@@ -24,10 +24,10 @@ class FairingError(RuntimeError):
 
 def fair(V: npt.ArrayLike, F: npt.ArrayLike, *, attributes: Optional[npt.ArrayLike] = None,
          vertex_is_constrained: Optional[npt.ArrayLike] = None,
-         callback: Optional[Callable[[StepInfo], Optional[bool]]] = None,
+         callback: Optional[Callable[[StepInfo], Optional[bool]]] = None, quiet: bool = False,
          time_step: Optional[float] = None, relative_time_step: Optional[float] = None,
          flow_order: Optional[Literal[2, 4]] = None, number_of_iterations: Optional[int] = None,
-         stopping_criteria: Optional[Literal['auto', 'noise', 'paper', 'off']] = None,
+         stopping_criteria: Optional[Literal['auto', 'noise', 'paper', 'off']] = None, strength: Optional[float] = None,
          fidelity_weight: Optional[float] = None, relative_fidelity_weight: Optional[float] = None,
          relative_maximum_deviation: Optional[float] = None, absolute_maximum_deviation: Optional[float] = None,
          maximum_deviation: Optional[float] = None, attribute_maximum_deviation: Optional[float] = None,
@@ -60,3 +60,7 @@ def limit_surface(V: npt.ArrayLike, F: npt.ArrayLike, *, quadrature_degree: int 
 
 def fair_meshio(mesh: Any, *, attributes: Union[str, Sequence[str]] = (), **parameters: Any) -> Tuple[Any, FairingReport]: ...
 def fair_open3d(mesh: Any, *, colours: bool = True, **parameters: Any) -> Tuple[Any, FairingReport]: ...
+
+_PolyData = TypeVar('_PolyData')   # a vtkPolyData (VTK ships no type information), e.g. a pyvista.PolyData
+
+def fair_vtk(mesh: _PolyData, *, attributes: Union[str, Sequence[str]] = (), **parameters: Any) -> Tuple[_PolyData, FairingReport]: ...

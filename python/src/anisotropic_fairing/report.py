@@ -35,7 +35,9 @@ class FairingStep(TypedDict):
 
 
 class StepInfo(TypedDict):
-    """What a ``callback`` of :func:`anisotropic_fairing.fair` receives after each step."""
+    """What a ``callback`` of :func:`anisotropic_fairing.fair` receives after each step; ``step`` counts the
+    steps of its run, ``run`` (1, 2, ...) says which of at most ``runs`` (the default run compares several
+    flows), ``run_name`` what it is ('' when the call makes one run)."""
     step: int
     time: float
     time_step: float
@@ -44,6 +46,9 @@ class StepInfo(TypedDict):
     H_integral: float
     max_displacement: float
     solver_iterations: int
+    run: int
+    runs: int
+    run_name: str
 
 
 # The functional form: one key, ``lambda``, is a Python keyword.
@@ -54,6 +59,9 @@ FairingReport = TypedDict('FairingReport', {
     'output': Optional[str],
     'vertices': Optional[int],
     'faces': Optional[int],
+    'input_changes': List[str],
+    'split_vertices': Optional[int],
+    'triangulated_faces': Optional[int],
     'element': str,
     'output_positions': str,
     'tensor': str,
@@ -64,6 +72,7 @@ FairingReport = TypedDict('FairingReport', {
     'solver': Optional[str],
     'requested_solver': str,
     'stop': str,
+    'strength': Optional[float],
     'max_steps': int,
     'quadrature_degree': int,
     'time_step': Optional[float],
@@ -101,7 +110,8 @@ FairingReport = TypedDict('FairingReport', {
     'limit_weight': Optional[float],
     'components': Optional[int],
     'rejected_steps': Optional[int],
-    'maximum_deviation': Optional[float],
+    'absolute_maximum_deviation': Optional[float],
+    'maximum_deviation': Optional[float],   # deprecated: absolute_maximum_deviation (model units)
     'relative_maximum_deviation': Optional[float],
     'largest_deviation': Optional[float],
     'attribute_maximum_deviation': Optional[float],

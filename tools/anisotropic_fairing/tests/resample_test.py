@@ -22,14 +22,7 @@ import shutil
 import subprocess
 import sys
 
-failures = []
-
-
-def check(ok, what):
-    print(('ok      ' if ok else 'FAILED  ') + what)
-    if not ok:
-        failures.append(what)
-    return ok
+from checks import check, failures
 
 
 def run(tool, args, work, env=None):

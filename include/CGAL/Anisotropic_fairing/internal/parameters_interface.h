@@ -33,3 +33,4 @@ CGAL_AF_add_named_parameter(attribute_maximum_deviation_t, attribute_maximum_dev
 CGAL_AF_add_named_parameter(control_point_map_t,         control_point_map,         control_point_map)
 CGAL_AF_add_named_parameter(attribute_control_map_t,     attribute_control_map,     attribute_control_map)
 CGAL_AF_add_named_parameter(fairing_options_t,           fairing_options,           fairing_options)
+CGAL_AF_add_named_parameter(strength_t,                  strength,                  strength)

@@ -141,7 +141,7 @@ private:
     bound_->set_start(anchor_, Z0_);
     accepted_ = initial_;
     lowest_H_.emplace(a);
-    target_ = noise_stop_ ? s_.stopping.noise_discrepancy * s_.noise->relative_sigma() : 0.0;
+    target_ = noise_stop_ ? s_.stopping.noise_discrepancy * s_.strength * s_.noise->relative_sigma() : 0.0;
     discrepancy_ = noise_stop_ ? s_.noise->relative_displacement(Y_, Z0_, {}) : 0.0;
     report_.noise_displacement = discrepancy_;
     // before the first step, the limit surface of the input may round its creases by more than the
@@ -448,7 +448,7 @@ private:
       end_within_step(theta);
     }
     if(noise_stop_ && s_.order == 4 && report_.stop_reason != Stop_reason::NOISE_LEVEL &&
-       noise_removed(previous_discrepancy, discrepancy_, st.time_step, t_.mean_edge_))
+       noise_removed(previous_discrepancy, discrepancy_, st.time_step, t_.mean_edge_, s_.strength))
       report_.stop_reason = Stop_reason::NOISE_REMOVED;
     if(noise_stop_ && bound_->active() && report_.stop_reason != Stop_reason::NOISE_LEVEL &&
        held_by_bound(previous_discrepancy, discrepancy_))

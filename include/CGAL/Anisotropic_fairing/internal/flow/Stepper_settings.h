@@ -39,6 +39,9 @@ struct Stepper_settings
   double maximum_deviation = 0;     // the bound on the written geometry's motion (0: none), in units of l if relative
   bool relative_deviation = true;
   double attribute_maximum_deviation = 0;   // on the attribute columns as the stepper holds them (0: none)
+  // the named parameter strength: the noise criterion's target is stopping.noise_discrepancy x strength x the
+  // noise; above 1 the fourth-order flow is read at the scale strength x h too (Step_control.h)
+  double strength = 1;
 };
 
 } // namespace internal

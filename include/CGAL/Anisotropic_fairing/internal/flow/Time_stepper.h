@@ -131,8 +131,11 @@ private:
   Deviation_bound make_bound(const Stepper_settings& s, const Control_matrix& Z, bool fixed, bool uniform, Fairing_report& report) const
   {
     if(s.maximum_deviation > 0)
-      report.maximum_deviation = s.relative_deviation ? s.maximum_deviation * units_.scale : s.maximum_deviation;
-    const auto bounds = user_bounds(Z.cols(), !fixed, fixed ? 0 : 3, report.maximum_deviation, s.attribute_maximum_deviation);
+    {
+      report.absolute_maximum_deviation = s.relative_deviation ? s.maximum_deviation * units_.scale : s.maximum_deviation;
+      report.maximum_deviation = report.absolute_maximum_deviation;   // its deprecated name, still filled
+    }
+    const auto bounds = user_bounds(Z.cols(), !fixed, fixed ? 0 : 3, report.absolute_maximum_deviation, s.attribute_maximum_deviation);
     return Deviation_bound(bounds[0], bounds[1], std::size_t(Z.rows()), uniform);
   }
 

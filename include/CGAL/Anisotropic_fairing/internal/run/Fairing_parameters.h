@@ -75,6 +75,7 @@ Fairing_options read_fairing_options(const NamedParameters& np)
   take_option(np, internal_np::flow_order, o.flow_order);
   take_option(np, CGAL::internal_np::number_of_iterations, o.number_of_iterations);
   take_option(np, internal_np::stopping_criteria, o.stopping_criteria);
+  take_option(np, internal_np::strength, o.strength);
   take_option(np, internal_np::fidelity_weight, o.fidelity_weight);
   take_option(np, internal_np::relative_fidelity_weight, o.relative_fidelity_weight);
   // relative_maximum_deviation, or its deprecated spelling maximum_deviation; or absolute_maximum_deviation
@@ -151,6 +152,18 @@ inline Fairing_parameters resolve_fairing_parameters(const Fairing_options& o, b
   check_parameter(std::isfinite(s.stopping.curvature_rate_ratio) && std::isfinite(s.stopping.curvature_rate) &&
                   std::isfinite(s.stopping.displacement) && std::isfinite(s.stopping.steady_speed) &&
                   std::isfinite(s.stopping.noise_discrepancy), "stopping_criteria: the thresholds must be finite");
+  // strength: the noise criterion's target times it (Stepper_settings::strength; the default run compares its
+  // flows at the noise level itself, then runs the one kept to this target: Fairing_core.h). Without the noise
+  // criterion it would change nothing, so anything but 1 is refused
+  check_parameter(std::isfinite(o.strength) && o.strength > 0, "strength must be positive and finite");
+  const bool noise_criterion = s.stopping.noise_discrepancy > 0 && p.mode != Attribute_mode::ATTRIBUTES_ONLY;
+  check_parameter(o.strength == 1 || noise_criterion,
+                  "strength scales the noise criterion's target, and this run does not stop at the noise level (" +
+                  std::string(p.mode == Attribute_mode::ATTRIBUTES_ONLY ? "the attributes-only mode fairs on a fixed surface"
+                              : o.stopping_criteria ? "stopping_criteria has no noise_discrepancy"
+                                                    : "a time step is given: the paper's criteria") +
+                  "); leave strength at 1, or give the noise criterion (Stopping_criteria::automatic())");
+  s.strength = o.strength;
   p.attribute_weight = o.attribute_weight;
   check_parameter(std::isfinite(p.attribute_weight) && p.attribute_weight > 0, "attribute_weight must be positive and finite");
   p.boundary = o.boundary_handling;
