@@ -1,14 +1,12 @@
 // Copyright (c) 2026 Anisotropic_fairing developers.
 // SPDX-License-Identifier: GPL-3.0-or-later
 //
-// The library's flow (internal/flow/Flow_run.h and Time_stepper.h) for a run with a given time step and
-// number of steps, on distributed matrices: the units from the input's area, the semi-implicit steps
-// solved by PETSc, each candidate surface judged by the library's Step_safety (statistics and fold counts
-// reduced over the processes, so every process takes the same decision), a rejected step retried with the
-// library's Step_controller, the library's Stopping_monitor asked after each step, and at the end the
-// fall-back to the last surface without new folds. What the library does besides (the noise level, a
-// deviation bound, a local time scale, the risk probe, the fourth-order flow, a fixed surface) is refused
-// by the program before a run starts (Run_request.h).
+// The library's flow loop (internal/flow/Flow_loop.h) on distributed matrices: this file is its operator
+// (internal/flow/Flow_operator.h says what one provides). M and L(D) come from Distributed_operator, each step
+// is solved by PETSc, and every measure the loop decides on (motion, finiteness, folds, statistics) is reduced
+// over the processes, so every process takes the same decision. What needs row-wise measures of the whole
+// mesh (the noise level, a deviation bound, a local time scale, the fourth-order flow, a fixed surface) is
+// refused: by the program before a run starts (Run_request.h), and by unsupported() here.
 
 #ifndef AF_DISTRIBUTED_DISTRIBUTED_FLOW_H
 #define AF_DISTRIBUTED_DISTRIBUTED_FLOW_H
@@ -19,20 +17,16 @@
 #include "Surface_folds.h"
 
 #include <CGAL/Anisotropic_fairing/Fairing_report.h>
+#include <CGAL/Anisotropic_fairing/internal/flow/Flow_loop.h>
+#include <CGAL/Anisotropic_fairing/internal/flow/Flow_operator.h>
 #include <CGAL/Anisotropic_fairing/internal/flow/Normal_motion.h>
-#include <CGAL/Anisotropic_fairing/internal/flow/Step_control.h>
 #include <CGAL/Anisotropic_fairing/internal/flow/Step_units.h>
 #include <CGAL/Anisotropic_fairing/internal/flow/Stepper_settings.h>
-#include <CGAL/Anisotropic_fairing/internal/flow/Stopping_monitor.h>
-#include <CGAL/Anisotropic_fairing/internal/flow/Tensor_hooks.h>
-#include <CGAL/Anisotropic_fairing/internal/mesh/Mesh_components.h>
 
 #include <CGAL/Real_timer.h>
 
 #include <algorithm>
-#include <cmath>
 #include <functional>
-#include <optional>
 #include <string>
 #include <vector>
 
@@ -60,109 +54,60 @@ struct Flow_timing
   std::size_t iterations = 0, solves = 0;
 };
 
-template <typename Tensor>
-class Distributed_flow
+class Distributed_flow_operator
 {
-  enum class Outcome { NEXT, RETRY, ENDED, FAILED };
-
 public:
-  Distributed_flow(MPI_Comm comm, const Distributed_layout& d, Ghosted_rows& rows, Distributed_operator& op, const Flow_input& in,
-                   const AFI::Stepper_settings& s, const Tensor& tensor)
-    : comm_(comm), d_(d), rows_(rows), op_(op), in_(in), s_(s), tensor_(tensor), filter_(in.layer),
-      solver_(comm, d, in.constrained, "", s.solver_tolerance, s.solver_maximum_iterations)
+  Distributed_flow_operator(MPI_Comm comm, const Distributed_layout& d, Ghosted_rows& rows, Distributed_operator& op,
+                            const Flow_input& in, const AFI::Stepper_settings& s)
+    : comm_(comm), d_(d), rows_(rows), op_(op), in_(in),
+      mesh_{ in.layer, in.components, in.component_edge, in.mean_edge }, filter_(in.layer),
+      solver_(comm, d, in.constrained, "", s.solver_tolerance, s.solver_maximum_iterations),
+      context_(AFI::flow_context(in.numbering, mesh_, curvature_bound_))
   {
-    for(double h : in.component_edge) curvature_bound_.push_back(2 / h);
-    context_ = in.numbering;
-    context_.face_component = &in.components.of_face;
-    context_.components = in.components.count;
-    context_.curvature_bound = &curvature_bound_;
-    context_.folded_turn = AFI::turn_120;
-    context_.bent_turn = AFI::turn_110;
     op_.assembler().set_context(context_);
     for(std::size_t k = 0; k < d.owned_vertices.size(); ++k)
-      if(!in.constrained[std::size_t(d.owned_vertices[k])]) free_.push_back(k);
-  }
-
-  /// Runs the flow from Z (owned and overlap rows); on success Z's owned and overlap rows hold the result.
-  /// `progress` is told of every accepted step.
-  AF::Fairing_report run(Control_matrix& Z, const std::function<void(const AF::Fairing_step&)>& progress)
-  {
-    total_.start();
-    progress_ = progress;
-    if(!start(Z)) return report_;
-    for(std::size_t step = 1; step <= s_.maximum_steps && nfree_ > 0;)
-    {
-      const Outcome o = attempt(Z, step);
-      if(o == Outcome::FAILED) return report_;
-      if(o == Outcome::ENDED) break;
-      if(o == Outcome::RETRY) continue;
-      control_.grow();
-      ++step;
-    }
-    finish(Z);
-    return report_;
+      if(!in.constrained[std::size_t(d.owned_vertices[k])])
+      {
+        free_.push_back(k);
+        free_rows_.push_back(d.owned_vertices[k]);
+      }
   }
 
   const Flow_timing& timing() const { return timing_; }
 
-private:
-  // the units of every vertex from the input's area, then M and L(D) at Z (Time_stepper::set_units)
-  bool set_units(const Control_matrix& Z, AFI::Assembly_statistics& a)
+  const AFI::Flow_mesh& mesh() const { return mesh_; }
+  std::string unsupported(const AFI::Stepper_settings& s, bool fixed) const
   {
-    const bool scaled_tensor = AFI::wants_length_scale(tensor_);
-    const std::size_t n = std::size_t(Z.rows());
-    std::vector<double> eps(n, scaled_tensor ? 0.0 : AFI::prefilter_time(tensor_));
-    if(scaled_tensor) a = op_.assemble(Z, in_.metric_columns, AF::Isotropic_diffusion_tensor(), false);
-    else
-    {
-      op_.set_prefilter(eps);
-      a = op_.assemble(Z, in_.metric_columns, tensor_, true);
-    }
-    for(std::size_t c = 0; c < a.component_area.size(); ++c)
-      if(!(a.component_area[c] > 0) || !std::isfinite(a.component_area[c]) || !(in_.component_edge[c] > 0))
-      {
-        AFI::fail(report_, AF::Fairing_status::DEGENERATE_METRIC, "the input's limit surface has no area" +
-                  (in_.components.count > 1 ? " in connected component " + std::to_string(c) : std::string()) +
-                  " (sqrt(det G) <= 0 on face " + std::to_string(a.degenerate_face) + "): its control points do not span a surface" +
-                  part_of_face(a), total_);
-        return false;
-      }
-    const AFI::Length_unit tensor_unit = AFI::is_automatic_tensor(tensor_) ? AFI::Length_unit::EDGE : AFI::Length_unit::SCALE;
-    units_ = AFI::make_step_units(a, in_.components, n, s_.time_step, s_.time_unit, s_.order, s_.fidelity_weight, s_.relative_fidelity,
-                                  s_.stopping.relative_units, tensor_unit, in_.component_edge, in_.mean_edge);
-    report_.scale = units_.scale;
-    report_.flow_order = s_.order;
-    report_.time_step = units_.time_step;
-    report_.fidelity_weight = units_.fidelity_weight;
-    report_.components = in_.components.count;
-    if(scaled_tensor)
-    {
-      // each component's prefilter time as the tensor measures it at that component's scale
-      std::vector<double> component_eps(in_.components.count);
-      for(std::size_t c = 0; c < in_.components.count; ++c)
-      {
-        Tensor t = tensor_;
-        AFI::give_length_scale(t, units_.tensor_unit * units_.tensor_scale[c]);
-        component_eps[c] = AFI::prefilter_time(t);
-      }
-      for(std::size_t i = 0; i < n; ++i)
-        if(in_.components.of_vertex[i] >= 0) eps[i] = component_eps[std::size_t(in_.components.of_vertex[i])];
-      context_.component_scale = &units_.tensor_scale;
-      op_.assembler().set_context(context_);
-      AFI::give_length_scale(tensor_, units_.tensor_unit);
-      report_.feature_threshold = std::isfinite(AFI::threshold_of(tensor_)) ? AFI::threshold_of(tensor_) : 0.0;
-      report_.prefilter_time = AFI::prefilter_time(tensor_);
-      op_.set_prefilter(std::move(eps));
-      a = op_.assemble(Z, in_.metric_columns, tensor_, true);
-    }
-    report_.initial.area = a.area;
-    report_.initial.energy = a.energy;
-    report_.initial.H_integral = a.H_integral;
-    return true;
+    std::string what = fixed ? "a fixed surface (the attributes-only mode)" : s.noise ? "the noise criterion"
+                     : s.maximum_deviation > 0 || s.attribute_maximum_deviation > 0 ? "a deviation bound"
+                     : s.local_time_scale ? "a local time scale" : s.order != 2 ? "the fourth-order flow" : "";
+    return what.empty() ? what : what + " is not supported by the distributed program";
   }
+  std::size_t free_count() const
+  {
+    unsigned long long mine = free_.size(), all = 0;
+    MPI_Allreduce(&mine, &all, 1, MPI_UNSIGNED_LONG_LONG, MPI_SUM, comm_);
+    return std::size_t(all);
+  }
+  void begin_run(const AFI::Stepper_settings& s, bool) { settings_ = &s; }
 
-  // which process's part holds the degenerate face named by `a` (the caller's numbering), when there are several
-  std::string part_of_face(const AFI::Assembly_statistics& a) const
+  // --- the units
+  AFI::Assembly_statistics assemble_isotropic(const Control_matrix& X, int columns, bool)
+  {
+    return assemble(X, columns, AF::Isotropic_diffusion_tensor(), false);
+  }
+  void discard_isotropic() {}
+  void set_prefilter(std::vector<double> eps, const AFI::Stepper_settings&) { op_.set_prefilter(std::move(eps)); }
+  void set_units(const AFI::Step_units& u, const AFI::Assembly_statistics&, bool component_scale)
+  {
+    units_ = u;
+    if(!component_scale) return;
+    context_.component_scale = &units_.tensor_scale;
+    op_.assembler().set_context(context_);
+  }
+  const AFI::Step_units& units() const { return units_; }
+  /// which process's part holds the degenerate face named by `a` (the caller's numbering), when there are several
+  std::string where_face(const AFI::Assembly_statistics& a) const
   {
     if(d_.size == 1 || !a.degenerate || !in_.numbering.original_face) return std::string();
     const std::vector<std::size_t>& original = *in_.numbering.original_face;
@@ -171,278 +116,159 @@ private:
     return std::string();
   }
 
-  // the units, the input's operator, the criteria's measures and the soundness of the start (Flow_run::start)
-  bool start(Control_matrix& Z)
+  // --- the operator on a surface: a failed prefilter (the same on every process) is an error()
+  template <typename Tensor>
+  AFI::Assembly_statistics assemble(const Control_matrix& X, int columns, const Tensor& tensor, bool with_matrices)
   {
-    report_.vertices = std::size_t(Z.rows());
-    unsigned long long free_count = free_.size(), all_free = 0;
-    MPI_Allreduce(&free_count, &all_free, 1, MPI_UNSIGNED_LONG_LONG, MPI_SUM, comm_);
-    nfree_ = std::size_t(all_free);
-    report_.constrained_vertices = std::size_t(Z.rows()) - nfree_;
     CGAL::Real_timer clock;
     clock.start();
+    error_.clear();
     AFI::Assembly_statistics a;
-    if(!set_units(Z, a)) return false;
-    timing_.assemble_seconds += clock.time();
-    Z0_ = Z;
-    time_unit_ = s_.stopping.relative_units ? std::pow(report_.scale, s_.order) : 1.0;
-    monitor_.emplace(s_.stopping, a.H_integral);
-    initial_ = AFI::Surface_soundness();
-    initial_.statistics = a;
-    count_folds(Z, initial_);
-    const AFI::Surface_soundness input = folds_of(Z0_);
-    input_folds_ = input.folded_edges;
-    input_fold_edges_ = input.folded_edge_list;
-    accepted_ = initial_;
-    lowest_H_.emplace(a);
-    allowed_folds_ = std::max(input_folds_, initial_.folded_edges);
-    Z_unfolded_ = Z;
-    if(nfree_ == 0) report_.stop_reason = AF::Stop_reason::NO_FREE_VERTEX;
-    return true;
+    try { a = op_.assemble(X, columns, tensor, with_matrices); }
+    catch(const std::exception& e) { error_ = e.what(); }
+    (stepping_ ? timing_.judge_seconds : timing_.assemble_seconds) += clock.time();
+    return a;
   }
+  const std::string& error() const { return error_; }
+  void save() { op_.save(); }
+  template <typename Tensor>
+  void restore(const Control_matrix&, int, const Tensor&) { op_.restore(); }
+  const Control_matrix* prefiltered() const { return op_.prefiltered(); }
+  double dirichlet_energy(const Control_matrix& Z) { return solver_.quadratic_form(op_.L(), Z); }
 
-  // the folds of the mesh of X's written positions (the limit points for the Loop element, as count_folds)
-  void count_folds(const Control_matrix& X, AFI::Surface_soundness& s)
+  // --- the step (the solver was made with the run's settings)
+  void start_solver(const AFI::Stepper_settings&, Eigen::Index, bool, const AFI::Output_fidelity*, const Control_matrix*,
+                    const Control_matrix&) {}
+  AFI::Solve_statistics solve(double factor, const Control_matrix& Z, const Control_matrix& Z0, const std::vector<double>&,
+                              bool& direct)
   {
-    distributed_limit_points(in_.layer, d_, rows_, X, Y_);
-    count_distributed_folds(comm_, in_.layer, d_, in_.components.of_face, in_.component_edge, Y_, s);
-  }
-  // the folds of the mesh of X itself (the input's control mesh)
-  AFI::Surface_soundness folds_of(const Control_matrix& X)
-  {
-    AFI::Surface_soundness s;
-    count_distributed_folds(comm_, in_.layer, d_, in_.components.of_face, in_.component_edge, X, s);
-    return s;
-  }
-
-  // one try at step `step`: solved, made a candidate, judged, then accepted or taken again
-  Outcome attempt(Control_matrix& Z, std::size_t step)
-  {
-    AF::Fairing_step st;
-    st.step = step;
-    st.time_step = control_.factor() * report_.time_step;
-    bool finite = false;
-    if(!solve(Z, st, finite)) return Outcome::FAILED;
-    make_candidate(Z, st, finite);
-    const Outcome judged = judge(step, finite, step == s_.maximum_steps);
-    if(judged != Outcome::NEXT) return judged;
-    return accept(Z, st);
-  }
-
-  // the step's system at Z_n solved (Step_solver.h): its displacement dZ_ over the owned rows
-  bool solve(const Control_matrix& Z, AF::Fairing_step& st, bool& finite)
-  {
+    stepping_ = true;
     CGAL::Real_timer clock;
     clock.start();
     std::vector<double> t(units_.tau);
-    for(double& x : t) x *= control_.factor();
-    const Distributed_solve sol = solver_.solve(op_.M(), op_.L(), t, units_.omega, Z, Z0_, int(Z.cols()), dZ_);
-    st.solve_seconds = clock.time();
-    st.assemble_seconds = pending_assemble_seconds_;
-    pending_assemble_seconds_ = 0;
-    st.solver_iterations = sol.iterations;
-    timing_.solve_seconds += st.solve_seconds;
+    for(double& x : t) x *= factor;
+    const Distributed_solve sol = solver_.solve(op_.M(), op_.L(), t, units_.omega, Z, Z0, int(Z.cols()), dZ_);
+    solve_seconds_ = clock.time();
+    timing_.solve_seconds += solve_seconds_;
     timing_.iterations += std::size_t(sol.iterations);
     ++timing_.solves;
+    direct = false;
+    AFI::Solve_statistics s;
+    s.ok = sol.ok;
+    s.iterations = sol.iterations;
+    s.message = sol.message;
+    return s;
+  }
+  const Control_matrix& displacement() const { return dZ_; }
+  bool solution_finite(const AFI::Solve_statistics&) const
+  {
     int mine = dZ_.allFinite() ? 1 : 0, all = 0;
     MPI_Allreduce(&mine, &all, 1, MPI_INT, MPI_MIN, comm_);
-    finite = all == 1;
-    if(!sol.ok && finite)
-    {
-      AFI::fail(report_, AF::Fairing_status::SOLVER_FAILED, "step " + std::to_string(st.step) + ": " + sol.message, total_);
-      return false;
-    }
-    return true;
+    return all == 1;
   }
+  double solve_seconds() const { return solve_seconds_; }
 
-  // Zc = Z + the solution (its normal part for the anisotropic flow), the overlap refreshed, and the step's
-  // and the total motion (Time_stepper::move_free_rows)
-  void make_candidate(const Control_matrix& Z, AF::Fairing_step& st, bool finite)
+  // --- the motion: dZ's rows are the owned vertices; the overlap refreshed after every move
+  AFI::Step_motion move(Control_matrix& Zc, const Control_matrix& dZ, const Control_matrix& Z0, int columns,
+                        const std::vector<double>& row_unit)
   {
-    Zc_ = Z;
-    if(finite)
+    double local[4] = { 0, 0, 0, 0 }, all[4];   // the step's largest, its largest relative, the total's relative, the total's
+    for(std::size_t k : free_)
     {
-      Control_matrix dZ = dZ_;
-      if(in_.normal_motion)
-      {
-        const Control_matrix& tangent_surface = op_.prefiltered() ? *op_.prefiltered() : Z;
-        filter_.remove(tangent_surface, in_.metric_columns, d_.owned_vertices, dZ);
-      }
-      double motion[3] = { 0, 0, 0 };   // the step's largest, its largest relative, the total's largest relative
-      double largest_total = 0;
-      const int columns = in_.metric_columns;
-      for(std::size_t k : free_)
-      {
-        const int row = d_.owned_vertices[k];
-        Zc_.row(row) += dZ.row(Eigen::Index(k));
-        const double m = dZ.row(Eigen::Index(k)).head(columns).norm();
-        motion[0] = std::max(motion[0], m);
-        motion[1] = std::max(motion[1], m / units_.length[std::size_t(row)]);
-      }
-      for(int row : d_.owned_vertices)
-      {
-        const double m = (Zc_.row(row) - Z0_.row(row)).head(columns).norm();
-        largest_total = std::max(largest_total, m);
-        motion[2] = std::max(motion[2], m / units_.length[std::size_t(row)]);
-      }
-      double local[4] = { motion[0], motion[1], motion[2], largest_total }, all[4];
-      MPI_Allreduce(local, all, 4, MPI_DOUBLE, MPI_MAX, comm_);
-      st.step_displacement = all[0];
-      moved_relative_ = all[1];
-      max_relative_ = all[2];
-      st.max_displacement = all[3];
+      const int row = d_.owned_vertices[k];
+      Zc.row(row) += dZ.row(Eigen::Index(k));
+      const double m = dZ.row(Eigen::Index(k)).head(columns).norm();
+      local[0] = std::max(local[0], m);
+      local[1] = std::max(local[1], m / row_unit[std::size_t(row)]);
     }
-    rows_.refresh(Zc_);
+    for(int row : d_.owned_vertices)
+    {
+      const double m = (Zc.row(row) - Z0.row(row)).head(columns).norm();
+      local[3] = std::max(local[3], m);
+      local[2] = std::max(local[2], m / row_unit[std::size_t(row)]);
+    }
+    MPI_Allreduce(local, all, 4, MPI_DOUBLE, MPI_MAX, comm_);
+    rows_.refresh(Zc);
+    AFI::Step_motion motion;
+    motion.step = all[0];
+    motion.step_relative = all[1];
+    motion.total_relative = all[2];
+    motion.total = all[3];
+    return motion;
+  }
+  void add(Control_matrix& X, const Control_matrix& dZ)
+  {
+    for(std::size_t k : free_) X.row(d_.owned_vertices[k]) += dZ.row(Eigen::Index(k));
+    rows_.refresh(X);
+  }
+  bool moves_normally() const { return in_.normal_motion; }
+  void normal_part(const Control_matrix& surface, int columns, Control_matrix& dZ) const
+  {
+    if(in_.normal_motion) filter_.remove(surface, columns, d_.owned_vertices, dZ);
   }
 
-  // the candidate judged by the library's Step_safety: NEXT when sound, else failed, retried shorter or ended
-  Outcome judge(std::size_t step, bool finite, bool last_step)
+  // --- the measures, of every process's rows
+  void measured_positions(const Control_matrix& X, Control_matrix& Y)
+  {
+    if(settings_->measure_limit_surface) limit_points(X, Y);
+    else Y = X;
+  }
+  void limit_points(const Control_matrix& X, Control_matrix& Y) { distributed_limit_points(in_.layer, d_, rows_, X, Y); }
+  /// the folds of the mesh of X's limit points
+  void count_folds(const Control_matrix& X, AFI::Surface_soundness& s)
   {
     CGAL::Real_timer clock;
     clock.start();
-    candidate_ = AFI::Surface_soundness();
-    candidate_.finite = finite && finite_everywhere(comm_, d_, Zc_);
-    std::string why;
-    AFI::Step_verdict verdict = AFI::Step_verdict::SOUND;
-    bool saved = false;
-    if(candidate_.finite) count_folds(Zc_, candidate_);
-    // folds where the accepted surface or the input was folded, as the serial flow judges them (every
-    // process has the whole mesh and the gathered fold lists)
-    const AFI::Known_fold_places known = [this](const AFI::Surface_soundness& c) {
-      return AFI::folds_at_known_places(*in_.layer.topology, in_.layer.real_faces, accepted_, input_fold_edges_, allowed_folds_, c);
-    };
-    if(candidate_.finite && AFI::edges_folded(accepted_, input_folds_, candidate_, why, known)) verdict = AFI::Step_verdict::UNSOUND;
-    else
-    {
-      op_.save();
-      saved = true;
-      if(candidate_.finite)
-      {
-        try { candidate_.statistics = op_.assemble(Zc_, in_.metric_columns, tensor_, !last_step); }
-        catch(const std::exception& e)
-        {
-          AFI::fail(report_, AF::Fairing_status::SOLVER_FAILED, "after step " + std::to_string(step) + ": " + e.what(), total_);
-          return Outcome::FAILED;
-        }
-        candidate_.finite = finite_everywhere(comm_, d_, s_.measure_limit_surface ? Y_ : Zc_);
-      }
-      verdict = AFI::judge_step(initial_, accepted_, input_folds_, *lowest_H_, candidate_, why, known);
-    }
-    pending_assemble_seconds_ = clock.time();
-    timing_.judge_seconds += clock.time();
-    if(verdict == AFI::Step_verdict::COLLAPSED)
-    {
-      AFI::fail(report_, AF::Fairing_status::COLLAPSED, "step " + std::to_string(step) + ": " + why +
-                ": mean-curvature flow shrinks closed surfaces to points; use fewer steps or a larger fidelity weight", total_);
-      return Outcome::FAILED;
-    }
-    if(verdict != AFI::Step_verdict::UNSOUND) return Outcome::NEXT;
-    if(saved) op_.restore();
-    return rejected(step, why);
+    limit_points(X, Y_);
+    count_distributed_folds(comm_, in_.layer, d_, in_.components.of_face, in_.component_edge, Y_, s);
+    if(stepping_) timing_.judge_seconds += clock.time();
   }
-
-  // a rejected candidate: retried shorter, or the run ends on the last sound surface (or fails before any)
-  Outcome rejected(std::size_t step, const std::string& why)
+  /// the folds of the mesh of X itself (the input's control mesh)
+  void input_folds(const Control_matrix& X, AFI::Surface_soundness& s)
   {
-    ++report_.rejected_steps;
-    last_why_ = why;
-    if(control_.reject(s_.maximum_rejections)) return Outcome::RETRY;
-    const std::string what = "step " + std::to_string(step) + ": " + why + " even with 1/" +
-                             std::to_string(1 << (2 * s_.maximum_rejections)) + " of the time step";
-    if(report_.steps.empty())
-    {
-      AFI::fail(report_, !candidate_.finite ? AF::Fairing_status::NON_FINITE_VALUE : AF::Fairing_status::FOLDED, what, total_);
-      return Outcome::FAILED;
-    }
-    report_.stop_reason = AF::Stop_reason::STEP_REJECTED;
-    report_.message = what + "; the run ends on the last sound surface (step " + std::to_string(step - 1) + ")";
-    return Outcome::ENDED;
+    count_distributed_folds(comm_, in_.layer, d_, in_.components.of_face, in_.component_edge, X, s);
   }
+  bool all_finite(const Control_matrix& X) const { return finite_everywhere(comm_, d_, X); }
+  /// this process's free rows
+  const std::vector<int>& free_rows() const { return free_rows_; }
 
-  // the candidate becomes the surface; its step recorded, then the stop rules asked (Flow_run::accept)
-  Outcome accept(Control_matrix& Z, AF::Fairing_step& st)
-  {
-    control_.accept();
-    Z.swap(Zc_);
-    accepted_ = candidate_;
-    if(candidate_.folded_edges <= allowed_folds_)
-    {
-      Z_unfolded_ = Z;
-      unfolded_steps_ = report_.steps.size() + 1;
-    }
-    lowest_H_->add(candidate_.statistics);
-    time_ += st.time_step;
-    st.time = time_;
-    st.area = accepted_.statistics.area;
-    st.energy = accepted_.statistics.energy;
-    st.H_integral = accepted_.statistics.H_integral;
-    if(st.step == s_.maximum_steps) st.assemble_seconds += pending_assemble_seconds_;
-    report_.steps.push_back(st);
-    if(progress_) progress_(st);
-    if(control_.cramped())
-    {
-      report_.stop_reason = AF::Stop_reason::STEP_REJECTED;
-      report_.message = "steps " + std::to_string(st.step - 3) + " to " + std::to_string(st.step) + " went on only with 1/16 of the time "
-                        "step or less (" + last_why_ + " otherwise); the run ends on the last sound surface (step " +
-                        std::to_string(st.step) + ")";
-      return Outcome::ENDED;
-    }
-    const bool stop = monitor_->should_stop(st.step, st.time_step / time_unit_, st.H_integral, max_relative_, moved_relative_,
-                                            report_.stop_reason);
-    return stop ? Outcome::ENDED : Outcome::NEXT;
-  }
-
-  // the end: never a surface with more folded edges than the input (Flow_run::finish)
-  void finish(Control_matrix& Z)
-  {
-    AFI::Surface_soundness last;
-    count_folds(Z, last);
-    const std::size_t folds = last.folded_edges;
-    if(folds > allowed_folds_ && report_.succeeded())
-    {
-      if(unfolded_steps_ == 0)
-      {
-        AFI::fail(report_, AF::Fairing_status::FOLDED, "the surface folded at " + std::to_string(folds) + " edges (the input at " +
-                  std::to_string(allowed_folds_) + ") from the first step on, even with smaller time steps", total_);
-        return;
-      }
-      Z = Z_unfolded_;
-      report_.steps.resize(unfolded_steps_);
-      report_.stop_reason = AF::Stop_reason::STEP_REJECTED;
-      report_.message = "the surface folded at " + std::to_string(folds) + " edges (the input at " + std::to_string(allowed_folds_) +
-                        "); the run ends on the last surface without new folds (step " + std::to_string(unfolded_steps_) + ")";
-    }
-    report_.total_seconds = total_.time();
-  }
-
+private:
   MPI_Comm comm_;
   const Distributed_layout& d_;
   Ghosted_rows& rows_;
   Distributed_operator& op_;
   const Flow_input& in_;
-  const AFI::Stepper_settings& s_;
-  Tensor tensor_;
+  const AFI::Flow_mesh mesh_;
   const AFI::Tangential_motion_filter filter_;
   Distributed_solver solver_;
-  AFI::Assembly_context context_;
   std::vector<double> curvature_bound_;
+  AFI::Assembly_context context_;
   std::vector<std::size_t> free_;   // positions in d_.owned_vertices of the free ones
-  std::size_t nfree_ = 0;
+  std::vector<int> free_rows_;      // ... and their rows
+  const AFI::Stepper_settings* settings_ = nullptr;
   AFI::Step_units units_;
-  AF::Fairing_report report_;
-  CGAL::Real_timer total_;
-  std::function<void(const AF::Fairing_step&)> progress_;
-  Control_matrix Z0_, Zc_, Y_, Z_unfolded_, dZ_;
-  double time_unit_ = 1, time_ = 0, moved_relative_ = 0, max_relative_ = 0, pending_assemble_seconds_ = 0;
-  std::optional<AFI::Stopping_monitor> monitor_;
-  std::optional<AFI::Lowest_curvature> lowest_H_;
-  AFI::Surface_soundness initial_, accepted_, candidate_;
-  std::size_t input_folds_ = 0, allowed_folds_ = 0, unfolded_steps_ = 0;
-  std::vector<int> input_fold_edges_;   // the input mesh's folded edges (a halfedge of each)
-  AFI::Step_controller control_;
-  std::string last_why_;
+  Control_matrix dZ_, Y_;
+  std::string error_;
+  bool stepping_ = false;   // the first step was solved: assemblies from now on judge candidates
+  double solve_seconds_ = 0;
   Flow_timing timing_;
 };
+
+/// The run from Z (owned and overlap rows) on this process's part; on success Z's owned and overlap rows hold
+/// the result. `progress` is told of every accepted step; `timing` gets the run's.
+template <typename Tensor>
+AF::Fairing_report run_distributed_flow(MPI_Comm comm, const Distributed_layout& d, Ghosted_rows& rows, Distributed_operator& op,
+                                        const Flow_input& in, const AFI::Stepper_settings& s, const Tensor& tensor,
+                                        Control_matrix& Z, const std::function<void(const AF::Fairing_step&)>& progress,
+                                        Flow_timing& timing)
+{
+  Distributed_flow_operator flow(comm, d, rows, op, in, s);
+  const auto told = [&](const AF::Fairing_step& st) { if(progress) progress(st); return true; };
+  AF::Fairing_report report =
+    AFI::Flow_loop<Distributed_flow_operator, Tensor, decltype(told)>(flow, Z, Z, in.metric_columns, tensor, s, told, false).run().report;
+  timing = flow.timing();
+  return report;
+}
 
 } // namespace af_distributed
 

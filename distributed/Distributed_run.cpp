@@ -153,13 +153,12 @@ AF::Fairing_report fair(MPI_Comm comm, const af_tool::Options& o, const Replicat
                        mode == AF::Attribute_mode::COUPLED ? int(X.cols()) : 3, AFI::wants_normal_motion(tensor) };
   AFI::Stepper_settings s = setup.given.settings;
   s.limit_written = s.measure_limit_surface = setup.given.output == AF::Output_positions::LIMIT_SURFACE;
+  s.verbose = false;   // the program prints its own line per step, on process 0
   if(s.stopping.noise_discrepancy > 0) throw std::runtime_error("the noise criterion is not supported by the distributed program");
-  Distributed_flow<Tensor> flow(comm, d, rows, op, in, s, tensor);
   const unsigned int max_steps = unsigned(s.maximum_steps);
   const bool print = d.rank == 0 && !o.quiet;
-  AF::Fairing_report report = flow.run(X, [&](const AF::Fairing_step& st) { if(print) print_step(st, max_steps); });
-  timing = flow.timing();
-  return report;
+  return run_distributed_flow(comm, d, rows, op, in, s, tensor, X,
+                              [&](const AF::Fairing_step& st) { if(print) print_step(st, max_steps); }, timing);
 }
 
 } // namespace

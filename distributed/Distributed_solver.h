@@ -97,7 +97,30 @@ public:
     return result;
   }
 
+  /// The sum over the columns c of X_c^T L X_c (X's owned rows), every process's: the Dirichlet energy.
+  double quadratic_form(Mat L, const Control_matrix& X)
+  {
+    make_vectors(L);
+    double sum = 0;
+    for(Eigen::Index c = 0; c < X.cols(); ++c)
+    {
+      set_owned(x_, [&](std::size_t k) { return X(d_.owned_vertices[k], c); });
+      petsc_check(MatMult(L, x_, lx_), "MatMult");
+      PetscScalar value = 0;
+      petsc_check(VecDot(x_, lx_, &value), "VecDot");
+      sum += double(value);
+    }
+    return sum;
+  }
+
 private:
+  void make_vectors(Mat A)
+  {
+    if(x_) return;
+    petsc_check(MatCreateVecs(A, &x_, &b_), "MatCreateVecs");
+    for(Vec* v : { &u_, &mu_, &lx_, &a_, &t_ }) petsc_check(VecDuplicate(b_, v), "VecDuplicate");
+  }
+
   template <typename F>
   void set_owned(Vec v, const F& value)
   {
@@ -110,11 +133,7 @@ private:
   // A = diag(1 + t w) M + diag(t) L, the held rows and columns replaced by the identity's
   void form(Mat M, Mat L, const std::vector<double>& t, const std::vector<double>& w)
   {
-    if(!x_)
-    {
-      petsc_check(MatCreateVecs(M, &x_, &b_), "MatCreateVecs");
-      for(Vec* v : { &u_, &mu_, &lx_, &a_, &t_ }) petsc_check(VecDuplicate(b_, v), "VecDuplicate");
-    }
+    make_vectors(M);
     const std::vector<int>& own = d_.owned_vertices;
     set_owned(a_, [&](std::size_t k) { return 1 + t[std::size_t(own[k])] * w[std::size_t(own[k])]; });
     set_owned(t_, [&](std::size_t k) { return t[std::size_t(own[k])]; });

@@ -6,15 +6,16 @@ import os, re, sys
 STAGES = ['types', 'mesh', 'loop', 'element', 'assembly', 'solve', 'flow', 'surface', 'run']
 root = os.path.join(sys.argv[1] if len(sys.argv) > 1 else os.path.join(os.path.dirname(__file__), '..'),
                     'include', 'CGAL', 'Anisotropic_fairing', 'internal')
-include = re.compile(r'#include <CGAL/Anisotropic_fairing/internal/(\w+)/\w+\.h>')
+include = re.compile(r'#include <CGAL/Anisotropic_fairing/internal/(\w+)/[\w/]+\.h>')
 bad = []
 for stage in sorted(os.listdir(root)):
     folder = os.path.join(root, stage)
     if not os.path.isdir(folder): continue
     if stage not in STAGES: bad.append('%s: a folder that is not a stage of the pipeline' % stage); continue
     if not os.path.isfile(os.path.join(folder, 'README.md')): bad.append('%s: no README.md' % stage)
-    for name in sorted(os.listdir(folder)):
-        if not name.endswith('.h'): continue
+    # a stage's subfolders (flow/stop/) belong to it
+    headers = sorted(os.path.relpath(os.path.join(d, f), folder) for d, _, files in os.walk(folder) for f in files if f.endswith('.h'))
+    for name in headers:
         for line, text in enumerate(open(os.path.join(folder, name)), 1):
             m = include.search(text)
             if m and (m.group(1) not in STAGES or STAGES.index(m.group(1)) > STAGES.index(stage)):

@@ -11,7 +11,6 @@
 #ifndef CGAL_ANISOTROPIC_FAIRING_INTERNAL_FLOW_RIDE_ALONG_PROBE_H
 #define CGAL_ANISOTROPIC_FAIRING_INTERNAL_FLOW_RIDE_ALONG_PROBE_H
 
-#include <CGAL/Anisotropic_fairing/internal/flow/Normal_motion.h>
 #include <CGAL/Anisotropic_fairing/internal/types/Control_matrix.h>
 
 #include <vector>
@@ -38,16 +37,14 @@ public:
     ZZ0 << Z0, Z0_;
   }
 
-  /// The probe's candidate from a solve of [Z | probe]: dAll's right half on the free rows, less its
-  /// tangential part in `surface`'s tangent planes when the run removes its own (filter not null).
-  void make_candidate(const Control_matrix& dAll, const std::vector<int>& free, const Tangential_motion_filter* filter,
-                      const Control_matrix& surface, int metric_columns)
+  /// The probe's candidate: its place moved by `add`, which adds the probe's columns of a solve of
+  /// [Z | probe] (less their tangential part where the run removes its own).
+  template <typename Add>
+  void make_candidate(const Add& add)
   {
     if(!active()) return;
-    Control_matrix d = dAll.rightCols(Z_.cols());
-    if(filter) filter->remove(surface, metric_columns, free, d);
     candidate_ = Z_;
-    for(Eigen::Index i = 0; i < d.rows(); ++i) candidate_.row(Eigen::Index(free[std::size_t(i)])) += d.row(i);
+    add(candidate_);
   }
   // What the run does, the probe does (nothing without a probe):
   /// the run's candidate ends theta of the way into its step;

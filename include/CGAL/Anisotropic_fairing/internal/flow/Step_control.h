@@ -3,8 +3,7 @@
 //
 // The step control of a run, as an ODE integrator has one: the fraction of the time step the next step
 // takes, shrunk when a step is rejected, grown back after one is accepted, and shortened by secants to
-// end a run where the noise level is reached; and the stop rules that are not the paper's criteria.
-// Every constant of the control is here, with why it has its value.
+// end a run where the noise level is reached. Every constant of the control is here, with why it has its value.
 
 #ifndef CGAL_ANISOTROPIC_FAIRING_INTERNAL_FLOW_STEP_CONTROL_H
 #define CGAL_ANISOTROPIC_FAIRING_INTERNAL_FLOW_STEP_CONTROL_H
@@ -33,9 +32,6 @@ constexpr double shortest_secant = 0.05;
 /// a step that carried a written position past the deviation bound is taken again this many times at most,
 /// the vertices past it held harder each time
 constexpr int maximum_bound_retakes = 4;
-/// under a deviation bound short of the noise, the displacement has levelled off when a step adds less
-/// than this share of it
-constexpr double levelled_off = 0.01;
 } // namespace step_control
 
 /// The fraction of the time step the run's next step takes, and the counts that decide it.
@@ -87,31 +83,6 @@ private:
 inline double fraction_reaching(double before, double after, double target)
 {
   return std::min(1.0, std::max(0.0, (target - before) / (after - before)));
-}
-
-/// The fourth-order flow at a strength S > 1 (the named parameter) is read at the scale S h: its levelling
-/// off on waves S times as long, and with automatic parameters its time step 0.1 (S h)^4, so that it reaches
-/// S times the noise in about as many steps as it reaches the noise. Its displacement grows ever more slowly:
-/// with the waves alone scaled it levelled off at 0.35 h of the 0.40 h asked for after 148 steps of 0.1 h^4
-/// (Nicolo0.2 at S = 2), and ran out of the 200 steps on Julius0.2; at 0.1 (2h)^4 it reached the target in
-/// 17 and 24 steps, within 0.04 degrees of steps of 0.4 h^4 (64 and 93 of them). Below 1 nothing changes:
-/// the target comes sooner.
-inline double fourth_order_scale(double strength) { return strength > 1 ? strength : 1.0; }
-
-/// Fourth-order flow: the flow barely shrinks, so once the noise is gone its displacement levels off,
-/// maybe short of the noise level, and what still moves is shape. The noise is removed when the
-/// displacement grows more slowly than a wave of 4 pi h decays, |u'/u| = (2 pi / 4 pi h)^4 = 1 / (16 h^4).
-/// With a `strength` S > 1 (the named parameter) the wave is S times as long, 4 pi S h: a run asked to go
-/// S times as far counts S times longer waves as noise (fourth_order_scale).
-inline bool noise_removed(double before, double after, double time_step, double h, double strength = 1)
-{
-  return before > 0 && (after - before) / after < time_step / (16 * std::pow(h * fourth_order_scale(strength), 4));
-}
-
-/// Under a deviation bound short of the noise, the displacement levels off where the bound holds it.
-inline bool held_by_bound(double before, double after)
-{
-  return before > 0 && after - before < step_control::levelled_off * after;
 }
 
 } // namespace internal
