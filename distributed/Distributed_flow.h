@@ -137,10 +137,11 @@ public:
   double dirichlet_energy(const Control_matrix& Z) { return solver_.quadratic_form(op_.L(), Z); }
 
   // --- the step (the solver was made with the run's settings)
-  void start_solver(const AFI::Stepper_settings&, Eigen::Index, bool, const AFI::Output_fidelity*, const Control_matrix*,
-                    const Control_matrix&) {}
-  AFI::Solve_statistics solve(double factor, const Control_matrix& Z, const Control_matrix& Z0, const std::vector<double>&,
-                              bool& direct)
+  void start_solver(const AFI::Stepper_settings&, Eigen::Index, bool, const AFI::Output_fidelity*,
+                    const Control_matrix*, const Control_matrix&)
+  {}
+  AFI::Solve_statistics solve(double factor, const Control_matrix& Z, const Control_matrix& Z0,
+                              const std::vector<double>&, bool& direct)
   {
     stepping_ = true;
     CGAL::Real_timer clock;
@@ -172,7 +173,8 @@ public:
   AFI::Step_motion move(Control_matrix& Zc, const Control_matrix& dZ, const Control_matrix& Z0, int columns,
                         const std::vector<double>& row_unit)
   {
-    double local[4] = { 0, 0, 0, 0 }, all[4];   // the step's largest, its largest relative, the total's relative, the total's
+    double local[4] = { 0, 0, 0, 0 },
+           all[4]; // the step's largest, its largest relative, the total's relative, the total's
     for(std::size_t k : free_)
     {
       const int row = d_.owned_vertices[k];
@@ -213,7 +215,10 @@ public:
     if(settings_->measure_limit_surface) limit_points(X, Y);
     else Y = X;
   }
-  void limit_points(const Control_matrix& X, Control_matrix& Y) { distributed_limit_points(in_.layer, d_, rows_, X, Y); }
+  void limit_points(const Control_matrix& X, Control_matrix& Y)
+  {
+    distributed_limit_points(in_.layer, d_, rows_, X, Y);
+  }
   /// the folds of the mesh of X's limit points
   void count_folds(const Control_matrix& X, AFI::Surface_soundness& s)
   {
@@ -257,15 +262,18 @@ private:
 /// The run from Z (owned and overlap rows) on this process's part; on success Z's owned and overlap rows hold
 /// the result. `progress` is told of every accepted step; `timing` gets the run's.
 template <typename Tensor>
-AF::Fairing_report run_distributed_flow(MPI_Comm comm, const Distributed_layout& d, Ghosted_rows& rows, Distributed_operator& op,
-                                        const Flow_input& in, const AFI::Stepper_settings& s, const Tensor& tensor,
-                                        Control_matrix& Z, const std::function<void(const AF::Fairing_step&)>& progress,
+AF::Fairing_report run_distributed_flow(MPI_Comm comm, const Distributed_layout& d, Ghosted_rows& rows,
+                                        Distributed_operator& op, const Flow_input& in, const AFI::Stepper_settings& s,
+                                        const Tensor& tensor, Control_matrix& Z,
+                                        const std::function<void(const AF::Fairing_step&)>& progress,
                                         Flow_timing& timing)
 {
   Distributed_flow_operator flow(comm, d, rows, op, in, s);
   const auto told = [&](const AF::Fairing_step& st) { if(progress) progress(st); return true; };
-  AF::Fairing_report report =
-    AFI::Flow_loop<Distributed_flow_operator, Tensor, decltype(told)>(flow, Z, Z, in.metric_columns, tensor, s, told, false).run().report;
+  AF::Fairing_report report = AFI::Flow_loop<Distributed_flow_operator, Tensor, decltype(told)>(
+                                flow, Z, Z, in.metric_columns, tensor, s, told, false)
+                                .run()
+                                .report;
   timing = flow.timing();
   return report;
 }

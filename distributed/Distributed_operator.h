@@ -48,7 +48,8 @@ inline AFI::Assembly_statistics reduce_statistics(MPI_Comm comm, const AFI::Asse
   r.component_area.assign(t.begin() + 7, t.end());
   r.reversed_face_list = gather_everywhere(comm, a.reversed_face_list);
   // the degenerate face named: the lowest-numbered of those found
-  unsigned long long face = a.degenerate ? a.degenerate_face : std::numeric_limits<unsigned long long>::max(), lowest = face;
+  unsigned long long face = a.degenerate ? a.degenerate_face : std::numeric_limits<unsigned long long>::max(),
+                     lowest = face;
   MPI_Allreduce(&face, &lowest, 1, MPI_UNSIGNED_LONG_LONG, MPI_MIN, comm);
   r.degenerate = lowest != std::numeric_limits<unsigned long long>::max();
   r.degenerate_face = r.degenerate ? std::size_t(lowest) : 0;
@@ -58,13 +59,15 @@ inline AFI::Assembly_statistics reduce_statistics(MPI_Comm comm, const AFI::Asse
 class Distributed_operator
 {
 public:
-  Distributed_operator(MPI_Comm comm, const AFI::Ghosted_patch_cache& cache, const Distributed_layout& d, Ghosted_rows& rows,
-                       const std::vector<bool>& held, double prefilter_tolerance, int maximum_iterations)
+  Distributed_operator(MPI_Comm comm, const AFI::Ghosted_patch_cache& cache, const Distributed_layout& d,
+                       Ghosted_rows& rows, const std::vector<bool>& held, double prefilter_tolerance,
+                       int maximum_iterations)
     : comm_(comm), d_(d), rows_(rows), assembler_(cache, d.vertex_owner.size(), true, &d.owned_faces),
       prefilter_solver_(comm, d, held, "prefilter_", prefilter_tolerance, maximum_iterations)
   {
     const auto& p = assembler_.pattern();
-    for(Eigen::Index k = 0; k < p.nonZeros(); ++k) petsc_inner_.push_back(d.petsc_row[std::size_t(p.innerIndexPtr()[k])]);
+    for(Eigen::Index k = 0; k < p.nonZeros(); ++k)
+      petsc_inner_.push_back(d.petsc_row[std::size_t(p.innerIndexPtr()[k])]);
     preallocate();
   }
   ~Distributed_operator()
@@ -105,7 +108,8 @@ public:
   /// M and L(D) at X (owned and overlap rows read), `with_matrices` false: the statistics only. The statistics
   /// are every process's; a failed prefilter throws (the same on every process: the solve is collective).
   template <typename Tensor>
-  AFI::Assembly_statistics assemble(const Control_matrix& X, int metric_columns, const Tensor& tensor, bool with_matrices)
+  AFI::Assembly_statistics assemble(const Control_matrix& X, int metric_columns, const Tensor& tensor,
+                                    bool with_matrices)
   {
     assembler_.set_prefiltered(nullptr);
     prefiltered_valid_ = false;
@@ -160,7 +164,8 @@ private:
       const int count = outer[j + 1] - outer[j];
       if(count == 0) continue;
       const PetscInt row = d_.petsc_row[std::size_t(j)];
-      petsc_check(MatSetValues(A, 1, &row, count, petsc_inner_.data() + outer[j], values.data() + outer[j], ADD_VALUES), "MatSetValues");
+      petsc_check(MatSetValues(A, 1, &row, count, petsc_inner_.data() + outer[j], values.data() + outer[j], ADD_VALUES),
+                  "MatSetValues");
     }
     // every owned row has its diagonal, even a vertex on no face (held: an identity row of the step)
     for(int v : d_.owned_vertices)
@@ -188,7 +193,8 @@ private:
     fill(Mi_, m);
     fill(Li_, l);
     const std::vector<double> no_fidelity(eps_.size(), 0.0);
-    const Distributed_solve s = prefilter_solver_.solve(Mi_, Li_, eps_, no_fidelity, X, X, metric_columns, prefilter_dX_);
+    const Distributed_solve s =
+      prefilter_solver_.solve(Mi_, Li_, eps_, no_fidelity, X, X, metric_columns, prefilter_dX_);
     prefilter_iterations_ += std::size_t(s.iterations);
     MatDestroy(&Mi_);   // needed again only at the next assembly
     MatDestroy(&Li_);
@@ -197,7 +203,8 @@ private:
     for(std::size_t k = 0; k < d_.owned_vertices.size(); ++k)
       prefiltered_X_.row(d_.owned_vertices[k]).head(metric_columns) += prefilter_dX_.row(Eigen::Index(k));
     rows_.refresh(prefiltered_X_);
-    std::string bad = prefilter_dX_.allFinite() ? std::string() : "the prefiltered surface M_eps could not be computed: not finite";
+    std::string bad =
+      prefilter_dX_.allFinite() ? std::string() : "the prefiltered surface M_eps could not be computed: not finite";
     agree(comm_, bad, "solver_failed");
     assembler_.set_prefiltered(&prefiltered_X_);
     prefiltered_valid_ = true;
@@ -209,7 +216,8 @@ private:
   AFI::Fem_assembler<AFI::Ghosted_patch_cache> assembler_;
   Distributed_solver prefilter_solver_;
   std::vector<PetscInt> petsc_inner_;   // the pattern's row indices in PETSc's numbering
-  Mat pattern_ = nullptr, M_ = nullptr, L_ = nullptr, saved_M_ = nullptr, saved_L_ = nullptr, Mi_ = nullptr, Li_ = nullptr;
+  Mat pattern_ = nullptr, M_ = nullptr, L_ = nullptr, saved_M_ = nullptr, saved_L_ = nullptr, Mi_ = nullptr,
+      Li_ = nullptr;
   std::vector<double> eps_;
   bool prefilter_ = false, prefiltered_valid_ = false, saved_prefiltered_valid_ = false;
   Control_matrix prefiltered_X_, saved_prefiltered_X_, prefilter_dX_;

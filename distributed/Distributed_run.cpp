@@ -68,8 +68,9 @@ void read(const af_tool::Options& o, Input& in)
   in.fair_attributes = !in.columns.empty() && in.mode != AF::Attribute_mode::GEOMETRY_ONLY;
   if(in.fair_attributes) af_tool::gather(in.mesh, in.columns, in.values);
   if(in.info.has_normals)
-    af_tool::fail("input_error", o.input + " has vertex normals, which the distributed program does not recompute on the faired "
-                  "surface (not supported: remove them, or use anisotropic_fairing)");
+    af_tool::fail("input_error",
+                  o.input + " has vertex normals, which the distributed program does not recompute on the faired "
+                            "surface (not supported: remove them, or use anisotropic_fairing)");
 }
 
 double peak_memory_mb()
@@ -92,9 +93,11 @@ std::vector<T> gathered(MPI_Comm comm, T mine, MPI_Datatype type)
 // the step's line, as anisotropic_fairing prints it
 void print_step(const AF::Fairing_step& s, unsigned int max_steps)
 {
-  std::fprintf(stderr, "anisotropic_fairing_mpi: step %zu/%u  t=%.6g  area=%.6g  int|H|^2=%.6g  max disp=%.6g  %d its  %.3fs+%.3fs\n",
-               s.step, max_steps, s.time, s.area, s.H_integral, s.max_displacement, s.solver_iterations, s.assemble_seconds,
-               s.solve_seconds);
+  std::fprintf(
+    stderr,
+    "anisotropic_fairing_mpi: step %zu/%u  t=%.6g  area=%.6g  int|H|^2=%.6g  max disp=%.6g  %d its  %.3fs+%.3fs\n",
+    s.step, max_steps, s.time, s.area, s.H_integral, s.max_displacement, s.solver_iterations, s.assemble_seconds,
+    s.solve_seconds);
 }
 
 // process 0: the result into the mesh (the library's write-back) and the file, through a temporary file
@@ -106,7 +109,8 @@ void write_result(const af_tool::Options& o, Input& in, const Replicated_setup& 
   const af_tool::Attribute_vectors attribute_map{ &faired };
   const AF::Attribute_mode mode = in.fair_attributes ? in.mode : AF::Attribute_mode::GEOMETRY_ONLY;
   AFI::write_back(setup.im, values, mode, kept, in.mesh.points(), attribute_map);
-  af_tool::merge_copies(in.mesh, in.info.split);   // a split vertex at the mean of its copies, as anisotropic_fairing writes it
+  af_tool::merge_copies(in.mesh,
+                        in.info.split); // a split vertex at the mean of its copies, as anisotropic_fairing writes it
   af_tool::merge_copies(faired, in.info.split);
   if(in.fair_attributes) af_tool::scatter(in.mesh, in.columns, faired);
   af_tool::Format format;
@@ -134,27 +138,37 @@ void write_result(const af_tool::Options& o, Input& in, const Replicated_setup& 
   std::string dropped;
   for(const std::string& p : af_tool::dropped_properties(in.mesh, format)) dropped += (dropped.empty() ? "" : ", ") + p;
   if(!dropped.empty())
-    std::fprintf(stderr, "anisotropic_fairing_mpi: warning: %s cannot hold the input's %s: not written\n", o.output.c_str(), dropped.c_str());
-  for(const std::string& w : in.info.warnings)   // what reading changed for the run (split vertices, triangulated polygons)
+    std::fprintf(stderr, "anisotropic_fairing_mpi: warning: %s cannot hold the input's %s: not written\n",
+                 o.output.c_str(), dropped.c_str());
+  for(const std::string& w :
+      in.info.warnings) // what reading changed for the run (split vertices, triangulated polygons)
     std::fprintf(stderr, "anisotropic_fairing_mpi: warning: %s\n", af_tool::one_line(w).c_str());
 }
 
 // the flow with one tensor type, on this process's part
 template <typename Tensor>
-AF::Fairing_report fair(MPI_Comm comm, const af_tool::Options& o, const Replicated_setup& setup, const Distributed_layout& d,
-                        Ghosted_rows& rows, Distributed_operator& op, const Tensor& tensor, Control_matrix& X, Flow_timing& timing)
+AF::Fairing_report fair(MPI_Comm comm, const af_tool::Options& o, const Replicated_setup& setup,
+                        const Distributed_layout& d, Ghosted_rows& rows, Distributed_operator& op, const Tensor& tensor,
+                        Control_matrix& X, Flow_timing& timing)
 {
   const AF::Attribute_mode mode = setup.given.mode;
   AFI::Assembly_context numbering;
   numbering.original_vertex = &setup.ordering.old_of_new_vertex;
   numbering.original_face = &setup.ordering.old_of_new_face;
   numbering.border = &setup.border;
-  const Flow_input in{ setup.layer(), setup.components, setup.component_edge, setup.mean_edge, setup.constrained, numbering,
-                       mode == AF::Attribute_mode::COUPLED ? int(X.cols()) : 3, AFI::wants_normal_motion(tensor) };
+  const Flow_input in{ setup.layer(),
+                       setup.components,
+                       setup.component_edge,
+                       setup.mean_edge,
+                       setup.constrained,
+                       numbering,
+                       mode == AF::Attribute_mode::COUPLED ? int(X.cols()) : 3,
+                       AFI::wants_normal_motion(tensor) };
   AFI::Stepper_settings s = setup.given.settings;
   s.limit_written = s.measure_limit_surface = setup.given.output == AF::Output_positions::LIMIT_SURFACE;
   s.verbose = false;   // the program prints its own line per step, on process 0
-  if(s.stopping.noise_discrepancy > 0) throw std::runtime_error("the noise criterion is not supported by the distributed program");
+  if(s.stopping.noise_discrepancy > 0)
+    throw std::runtime_error("the noise criterion is not supported by the distributed program");
   const unsigned int max_steps = unsigned(s.maximum_steps);
   const bool print = d.rank == 0 && !o.quiet;
   return run_distributed_flow(comm, d, rows, op, in, s, tensor, X,
@@ -182,13 +196,16 @@ int run_distributed(const af_tool::Options& o, MPI_Comm comm, Run_summary& summa
   AF::Fairing_options options = o.fairing;
   options.attribute_mode = in.fair_attributes ? in.mode : AF::Attribute_mode::GEOMETRY_ONLY;
   const af_tool::Attribute_vectors attribute_map{ &in.values };
-  collectively(comm, o.input, [&] { setup.reset(new Replicated_setup(in.mesh, options, in.fair_attributes ? &attribute_map : nullptr)); });
+  collectively(comm, o.input, [&] {
+    setup.reset(new Replicated_setup(in.mesh, options, in.fair_attributes ? &attribute_map : nullptr));
+  });
   summary.setup_seconds = clock.time();
   clock.reset();
   const AFI::Ghost_layer& layer = setup->layer();
   Distributed_layout d;
   collectively(comm, o.input, [&] {
-    d = make_distributed_layout(layer, *setup->cache, partition_faces(comm, *layer.topology, layer.real_faces), rank, size);
+    d = make_distributed_layout(layer, *setup->cache, partition_faces(comm, *layer.topology, layer.real_faces), rank,
+                                size);
   });
   summary.faces_per_process = gathered<std::size_t>(comm, d.owned_faces.size(), MPI_UNSIGNED_LONG);
   summary.owned_vertices_per_process = gathered<std::size_t>(comm, d.owned_vertices.size(), MPI_UNSIGNED_LONG);
@@ -197,7 +214,8 @@ int run_distributed(const af_tool::Options& o, MPI_Comm comm, Run_summary& summa
   Control_matrix X = setup->X;
   rows.forget_others(X);
   const AFI::Stepper_settings& s = setup->given.settings;
-  Distributed_operator op(comm, *setup->cache, d, rows, setup->constrained, s.solver_tolerance / 100, s.solver_maximum_iterations);
+  Distributed_operator op(comm, *setup->cache, d, rows, setup->constrained, s.solver_tolerance / 100,
+                          s.solver_maximum_iterations);
   summary.off_process_columns = gathered<std::size_t>(comm, op.off_process_columns(), MPI_UNSIGNED_LONG);
   summary.partition_seconds = clock.time();
   clock.reset();
@@ -209,7 +227,9 @@ int run_distributed(const af_tool::Options& o, MPI_Comm comm, Run_summary& summa
   summary.prefilter_iterations = op.prefilter_iterations();
   const AF::Fairing_report& r = summary.report;
   if(!r.succeeded())
-    agree(comm, "fairing " + o.input + " failed (" + AF::to_string(r.status) + "): " + (r.message.empty() ? std::string("no detail") : r.message),
+    agree(comm,
+          "fairing " + o.input + " failed (" + AF::to_string(r.status) +
+            "): " + (r.message.empty() ? std::string("no detail") : r.message),
           AF::to_string(r.status));
   clock.reset();
   Control_matrix Y;

@@ -44,7 +44,8 @@ struct Run_summary
 int run_distributed(const af_tool::Options& o, MPI_Comm comm, Run_summary& summary);
 
 /// The JSON text of the report of a run (`ok` false: `status` and `message` say why it failed).
-std::string summary_json(const af_tool::Options& o, const Run_summary& s, bool ok, const std::string& status, const std::string& message);
+std::string summary_json(const af_tool::Options& o, const Run_summary& s, bool ok, const std::string& status,
+                         const std::string& message);
 
 } // namespace af_distributed
 

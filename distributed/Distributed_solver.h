@@ -33,8 +33,8 @@ class Distributed_solver
 {
 public:
   /// `held`: per real vertex of the run; `prefix`: of PETSc's options for this solver.
-  Distributed_solver(MPI_Comm comm, const Distributed_layout& d, const std::vector<bool>& held, const char* prefix, double tolerance,
-                     int maximum_iterations)
+  Distributed_solver(MPI_Comm comm, const Distributed_layout& d, const std::vector<bool>& held, const char* prefix,
+                     double tolerance, int maximum_iterations)
     : d_(d)
   {
     for(int v : d.owned_vertices)
@@ -63,8 +63,8 @@ public:
 
   /// Solves for the owned rows' displacement dX (owned rows x `columns`, in the order of the owned vertices;
   /// its value on entry is the first guess) from the first `columns` columns of X and X0. t, w: per real vertex.
-  Distributed_solve solve(Mat M, Mat L, const std::vector<double>& t, const std::vector<double>& w, const Control_matrix& X,
-                          const Control_matrix& X0, int columns, Control_matrix& dX)
+  Distributed_solve solve(Mat M, Mat L, const std::vector<double>& t, const std::vector<double>& w,
+                          const Control_matrix& X, const Control_matrix& X0, int columns, Control_matrix& dX)
   {
     form(M, L, t, w);
     if(dX.rows() != Eigen::Index(d_.owned_vertices.size()) || dX.cols() != columns)
@@ -145,13 +145,14 @@ private:
     petsc_check(MatDiagonalScale(T, t_, nullptr), "MatDiagonalScale");
     petsc_check(MatAXPY(A_, 1.0, T, SAME_NONZERO_PATTERN), "MatAXPY");
     MatDestroy(&T);
-    petsc_check(MatZeroRowsColumns(A_, PetscInt(held_rows_.size()), held_rows_.data(), 1.0, nullptr, nullptr), "MatZeroRowsColumns");
+    petsc_check(MatZeroRowsColumns(A_, PetscInt(held_rows_.size()), held_rows_.data(), 1.0, nullptr, nullptr),
+                "MatZeroRowsColumns");
     petsc_check(KSPSetOperators(ksp_, A_, A_), "KSPSetOperators");
   }
 
   // b = t (w M (X0 - X) - L X) in column c; zero on held rows
-  void right_hand_side(Mat M, Mat L, const std::vector<double>& t, const std::vector<double>& w, const Control_matrix& X,
-                       const Control_matrix& X0, int c)
+  void right_hand_side(Mat M, Mat L, const std::vector<double>& t, const std::vector<double>& w,
+                       const Control_matrix& X, const Control_matrix& X0, int c)
   {
     const std::vector<int>& own = d_.owned_vertices;
     set_owned(u_, [&](std::size_t k) { return X0(own[k], c) - X(own[k], c); });

@@ -23,11 +23,13 @@ namespace af_distributed {
 /// Throws std::runtime_error naming the PETSc call when `code` is an error.
 inline void petsc_check(PetscErrorCode code, const char* call)
 {
-  if(code != 0) throw std::runtime_error(std::string("PETSc ") + call + " failed (error " + std::to_string(int(code)) + ")");
+  if(code != 0)
+    throw std::runtime_error(std::string("PETSc ") + call + " failed (error " + std::to_string(int(code)) + ")");
 }
 
 /// The part (process) of each of the first `real_faces` faces of `topo`, the same on every process.
-inline std::vector<int> partition_faces(MPI_Comm comm, const CGAL::Anisotropic_fairing::internal::Triangle_topology& topo,
+inline std::vector<int> partition_faces(MPI_Comm comm,
+                                        const CGAL::Anisotropic_fairing::internal::Triangle_topology& topo,
                                         std::size_t real_faces)
 {
   int rank = 0, size = 1;

@@ -81,7 +81,8 @@ public:
     std::vector<double> mine;
     for(int r : d_.owned_vertices)
       for(int c = 0; c < bs; ++c) mine.push_back(X(r, c));
-    std::vector<int> rows_of(std::size_t(d_.size), 0), counts(std::size_t(d_.size), 0), offsets(std::size_t(d_.size), 0);
+    std::vector<int> rows_of(std::size_t(d_.size), 0), counts(std::size_t(d_.size), 0),
+      offsets(std::size_t(d_.size), 0);
     const int n_mine = int(mine.size());
     MPI_Gather(&n_mine, 1, MPI_INT, counts.data(), 1, MPI_INT, 0, comm_);
     for(int p = 1; p < d_.size; ++p) offsets[std::size_t(p)] = offsets[std::size_t(p - 1)] + counts[std::size_t(p - 1)];
@@ -90,7 +91,8 @@ public:
     if(d_.rank != 0) return;
     // a process's rows come in its vertices' increasing order, which is also their PETSc order
     for(std::size_t v = 0; v < d_.vertex_owner.size(); ++v)
-      for(int c = 0; c < bs; ++c) X(Eigen::Index(v), c) = all[std::size_t(d_.petsc_row[v]) * std::size_t(bs) + std::size_t(c)];
+      for(int c = 0; c < bs; ++c)
+        X(Eigen::Index(v), c) = all[std::size_t(d_.petsc_row[v]) * std::size_t(bs) + std::size_t(c)];
   }
 
   /// doubles received into overlap rows so far, and the refreshes that moved them (communication volume)
@@ -103,8 +105,9 @@ private:
     auto it = vectors_.find(bs);
     if(it != vectors_.end()) return it->second;
     Vec v;
-    petsc_check(VecCreateGhostBlock(comm_, bs, PetscInt(d_.owned_vertices.size()) * bs, PETSC_DECIDE, PetscInt(ghost_blocks_.size()),
-                                    ghost_blocks_.data(), &v), "VecCreateGhostBlock");
+    petsc_check(VecCreateGhostBlock(comm_, bs, PetscInt(d_.owned_vertices.size()) * bs, PETSC_DECIDE,
+                                    PetscInt(ghost_blocks_.size()), ghost_blocks_.data(), &v),
+                "VecCreateGhostBlock");
     vectors_[bs] = v;
     return v;
   }

@@ -49,17 +49,20 @@ struct Replicated_setup
   std::unique_ptr<AFI::Ghosted_patch_cache> cache;
 
   /// `options`: the run's (its attribute mode resolved); `attributes`: the attribute map (null: none faired).
-  Replicated_setup(const af_tool::Mesh& mesh, const AF::Fairing_options& options, const af_tool::Attribute_vectors* attributes)
+  Replicated_setup(const af_tool::Mesh& mesh, const AF::Fairing_options& options,
+                   const af_tool::Attribute_vectors* attributes)
     : given(AFI::resolve_fairing_parameters(options, attributes != nullptr)), im(mesh, AFI::Borders::GHOSTED, true),
       ordering(AFI::make_locality_ordering(im.ghost_layer())), n(im.number_of_vertices())
   {
     const AFI::Control_matrix P = im.read_points(mesh.points());
-    const AFI::Control_matrix A = attributes && given.mode != AF::Attribute_mode::GEOMETRY_ONLY ? im.read_attributes(*attributes)
-                                                                                                 : AFI::Control_matrix();
+    const AFI::Control_matrix A = attributes && given.mode != AF::Attribute_mode::GEOMETRY_ONLY
+                                    ? im.read_attributes(*attributes)
+                                    : AFI::Control_matrix();
     const double largest = A.size() > 0 ? A.cwiseAbs().maxCoeff() : 0.0;
     if(coupled() && given.attribute_weight * largest > AFI::Indexed_mesh<af_tool::Mesh>::coordinate_limit)
-      throw AF::Input_error(AF::Input_error::INVALID_PARAMETER, AF::Input_error::no_element,
-                            "the attribute weight times the largest attribute value is a coordinate beyond 1e70 in the coupled manifold");
+      throw AF::Input_error(
+        AF::Input_error::INVALID_PARAMETER, AF::Input_error::no_element,
+        "the attribute weight times the largest attribute value is a coordinate beyond 1e70 in the coupled manifold");
     input.resize(P.rows(), P.cols() + A.cols());
     input.leftCols(3) = P;
     if(A.cols() > 0) input.rightCols(A.cols()) = A;

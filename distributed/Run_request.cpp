@@ -50,7 +50,8 @@ std::string unsupported(const af_tool::Options& o)
   if(f.flow_order != 2) return "--order 4" + no;
   if(f.finite_element != AF::Finite_element::LOOP) return "--element linear" + no;
   if(o.stop == "noise")
-    return "--stop " + o.stop + " (the noise level, estimated from the whole mesh)" + no + "; give --stop paper or --stop off";
+    return "--stop " + o.stop + " (the noise level, estimated from the whole mesh)" + no +
+           "; give --stop paper or --stop off";
   if(f.relative_maximum_deviation || f.absolute_maximum_deviation || f.attribute_maximum_deviation > 0)
     return "a deviation bound (--maximum-deviation, --relative-maximum-deviation, --attribute-maximum-deviation)" + no;
   if(f.attribute_mode && *f.attribute_mode == AF::Attribute_mode::ATTRIBUTES_ONLY) return "--mode attributes" + no;

@@ -27,16 +27,23 @@ nlohmann::json steps_json(const CGAL::Anisotropic_fairing::Fairing_report& r)
 {
   nlohmann::json steps = nlohmann::json::array();
   for(const auto& s : r.steps)
-    steps.push_back({ { "step", s.step }, { "time", s.time }, { "time_step", s.time_step }, { "area", s.area }, { "energy", s.energy },
-                      { "H_integral", s.H_integral }, { "max_displacement", s.max_displacement },
-                      { "cg_iterations", s.solver_iterations }, { "assemble_seconds", s.assemble_seconds },
+    steps.push_back({ { "step", s.step },
+                      { "time", s.time },
+                      { "time_step", s.time_step },
+                      { "area", s.area },
+                      { "energy", s.energy },
+                      { "H_integral", s.H_integral },
+                      { "max_displacement", s.max_displacement },
+                      { "cg_iterations", s.solver_iterations },
+                      { "assemble_seconds", s.assemble_seconds },
                       { "solve_seconds", s.solve_seconds } });
   return steps;
 }
 
 } // namespace
 
-std::string summary_json(const af_tool::Options& o, const Run_summary& s, bool ok, const std::string& status, const std::string& message)
+std::string summary_json(const af_tool::Options& o, const Run_summary& s, bool ok, const std::string& status,
+                         const std::string& message)
 {
   namespace AF = CGAL::Anisotropic_fairing;
   nlohmann::json j;

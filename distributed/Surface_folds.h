@@ -68,9 +68,10 @@ inline void count_distributed_folds(MPI_Comm comm, const AFI::Ghost_layer& layer
                                     const Control_matrix& P, AFI::Surface_soundness& s)
 {
   std::vector<int> where;
-  unsigned long long mine[2] = {
-    AFI::count_folded_edges(*layer.topology, layer.real_faces, P, face_component, edge, AFI::turn_120, &d.owned_faces, &where),
-    AFI::count_folded_edges(*layer.topology, layer.real_faces, P, face_component, edge, AFI::turn_110, &d.owned_faces) };
+  unsigned long long mine[2] = { AFI::count_folded_edges(*layer.topology, layer.real_faces, P, face_component, edge,
+                                                         AFI::turn_120, &d.owned_faces, &where),
+                                 AFI::count_folded_edges(*layer.topology, layer.real_faces, P, face_component, edge,
+                                                         AFI::turn_110, &d.owned_faces) };
   unsigned long long all[2] = { 0, 0 };
   MPI_Allreduce(mine, all, 2, MPI_UNSIGNED_LONG_LONG, MPI_SUM, comm);
   s.folded_edges = std::size_t(all[0]);

@@ -86,9 +86,11 @@ int run_program(const std::vector<std::string>& arguments, MPI_Comm comm, int ra
       if(ok) code = 1;
     }
     if(ok && !o.quiet)
-      std::fprintf(stderr, "anisotropic_fairing_mpi: wrote %s (%zu vertices, %zu steps, stopped: %s, %d processes, %.3f s)\n",
-                   o.output.c_str(), summary.vertices, summary.report.steps.size(), CGAL::Anisotropic_fairing::to_string(summary.report.stop_reason),
-                   summary.processes, af_tool::elapsed_seconds());
+      std::fprintf(stderr,
+                   "anisotropic_fairing_mpi: wrote %s (%zu vertices, %zu steps, stopped: %s, %d processes, %.3f s)\n",
+                   o.output.c_str(), summary.vertices, summary.report.steps.size(),
+                   CGAL::Anisotropic_fairing::to_string(summary.report.stop_reason), summary.processes,
+                   af_tool::elapsed_seconds());
   }
   MPI_Bcast(&code, 1, MPI_INT, 0, comm);
   return code;

@@ -6,6 +6,7 @@
 // program's.
 #include "fairing_call.h"
 #include "json_report.h"
+#include "keyword_arguments.h"
 #include "mesh_arrays.h"
 #include "mesh_file_check.h"
 #include "mesh_repair.h"
@@ -52,107 +53,109 @@ struct Run_abandoned
 
 // ---- fair() ----------------------------------------------------------------------------------------
 
-// The keyword arguments of fair(): the library's named parameters, and the anisotropic tensor's settings,
-// read straight into the program's Options (its Fairing_options and the words its report names); the
-// library checks the values' ranges and names the parameter when it refuses one.
-
-double number_argument(const std::string& name, py::handle value)
+// The keyword arguments of fair(): the rows of the parameter table that have one (the library's named
+// parameters and the anisotropic tensor's settings), read straight into the program's Options (its
+// Fairing_options and the words its report names); the library checks the values' ranges and names the
+// parameter when it refuses one.
+struct Keyword
 {
-  if(py::isinstance<py::bool_>(value) || py::isinstance<py::str>(value)) throw py::type_error(name + " expects a number");
-  double x = 0;
-  try
-  {
-    x = value.cast<double>();
-  }
-  catch(const py::cast_error&)
-  {
-    throw py::type_error(name + " expects a number, not " + py::str(py::type::of(value)).cast<std::string>());
-  }
-  if(!std::isfinite(x)) throw py::value_error(name + " must be a finite number");
-  return x;
+  const char* name;
+  void (*take)(Options& o, const std::string& name, py::handle value);
+  std::vector<const char*> words;   // the words it takes (none: a number)
+};
+
+template <typename Kind> bool has_keyword(const Kind& kind) { return kind.keyword; }
+template <typename Kind> std::vector<const char*> words_of_kind(const Kind& kind) { return kind.words(); }
+
+// A spelling kept working: the keyword it reads as, the warning it gives, and the keyword it is listed after.
+struct Deprecated_keyword
+{
+  const char* name;
+  const char* now;
+  const char* warning;
+  const char* after;
+};
+const Deprecated_keyword deprecated_keywords[] = {
+  {"maximum_deviation", "relative_maximum_deviation",
+   "maximum_deviation is relative (units of l); write relative_maximum_deviation, or absolute_maximum_deviation "
+   "for model units",
+   "absolute_maximum_deviation"},
+};
+
+// fair()'s keywords in the table's order, each deprecated spelling after the keyword it is listed after
+const std::vector<Keyword>& keywords()
+{
+  static const std::vector<Keyword> table = [] {
+    std::vector<Keyword> all, listed;
+#define AF_PARAMETER(name, type, default_value, named, setting, check, flag, value, program, python, help) \
+  if(has_keyword(python))                                                                                   \
+    all.push_back({#name,                                                                                   \
+                   [](Options& o, const std::string& k, py::handle v) {                                     \
+                     const auto take = python;                                                              \
+                     take(o, o.fairing.name, k, v);                                                         \
+                   },                                                                                       \
+                   words_of_kind(python)});
+#define AF_TENSOR_SETTING(name, flag, value, program, python, help) \
+  all.push_back({#name,                                             \
+                 [](Options& o, const std::string& k, py::handle v) { \
+                   const auto take = python;                        \
+                   take(o, k, v);                                   \
+                 },                                                 \
+                 words_of_kind(python)});
+#include <CGAL/Anisotropic_fairing/internal/parameter_table.h>
+#undef AF_PARAMETER
+#undef AF_TENSOR_SETTING
+    for(const Keyword& k : all)
+    {
+      listed.push_back(k);
+      for(const Deprecated_keyword& d : deprecated_keywords)
+        if(std::string(k.name) == d.after)
+          for(const Keyword& now : all)
+            if(std::string(now.name) == d.now) listed.push_back({d.name, now.take, now.words});
+    }
+    return listed;
+  }();
+  return table;
 }
 
-long long integer_argument(const std::string& name, py::handle value)
+const Keyword& keyword_named(const std::string& name)
 {
-  if(py::isinstance<py::bool_>(value) || !py::isinstance(value, py::module_::import("numbers").attr("Integral")))
-    throw py::type_error(name + " expects an integer");
-  return value.cast<long long>();
+  for(const Keyword& k : keywords())
+    if(name == k.name) return k;
+  std::string list;
+  for(const Keyword& k : keywords()) list += std::string(", ") + k.name;
+  throw py::type_error("fair() got an unexpected keyword argument '" + name +
+                       "' (it takes: attributes, vertex_is_constrained, callback, quiet" + list + ")");
 }
 
-std::string word_argument(const std::string& name, py::handle value, const std::vector<const char*>& words)
+// One keyword argument into `o`: a deprecated spelling warns, and gives the relative bound once at most.
+void take_keyword(Options& o, const std::string& name, py::handle value, bool& relative_bound)
 {
-  if(!py::isinstance<py::str>(value)) throw py::type_error(name + " expects " + word_list(words));
-  const std::string word = value.cast<std::string>();
-  for(const char* w : words)
-    if(word == w) return word;
-  throw py::value_error(name + " expects " + word_list(words) + ", not '" + word + "'");
+  const Keyword& k = keyword_named(name);
+  if(value.is_none()) return;   // None: the default
+  for(const Deprecated_keyword& d : deprecated_keywords)
+    if(name == d.name && PyErr_WarnEx(PyExc_DeprecationWarning, d.warning, 2) != 0) throw py::error_already_set();
+  if((name == "maximum_deviation" || name == "relative_maximum_deviation") && std::exchange(relative_bound, true))
+    throw py::value_error("give one of relative_maximum_deviation and absolute_maximum_deviation "
+                          "(maximum_deviation: the relative one's deprecated spelling), not more");
+  k.take(o, name, value);
 }
 
-template <typename T>
-T word_argument(const std::string& name, py::handle value, const Word_table<T>& table)
+// The checks between the keywords, then the tensor they make (as the program's parse_arguments does).
+void check_keywords(Options& o, py::ssize_t attribute_columns)
 {
-  const std::string word = word_argument(name, value, words_of(table));
-  for(const auto& w : table)
-    if(word == w.first) return w.second;
-  return table.front().second;
+  const bool asked_anisotropic = o.tensor == "anisotropic";   // the tensor's settings need it said
+  for(const auto& setting : {std::make_pair(o.has_lambda, "lambda_"), std::make_pair(o.has_epsilon, "epsilon"),
+                             std::make_pair(o.has_tangential_motion, "tangential_motion")})
+    if(setting.first && !asked_anisotropic)
+      throw py::value_error(std::string(setting.second) + " needs tensor anisotropic");
+  const AF::Attribute_mode mode = effective_mode(o);
+  if(attribute_columns == 0 && (mode == AF::Attribute_mode::COUPLED || mode == AF::Attribute_mode::ATTRIBUTES_ONLY))
+    throw py::value_error(std::string("attribute_mode ") + mode_name(mode) + " needs attributes");
+  const bool settings = o.has_lambda || o.has_epsilon || o.has_tangential_motion;
+  o.fairing.diffusion_tensor = package_tensor(o.tensor, o.fairing.automatic_parameters(), settings, o.lambda, o.epsilon,
+                                              o.normal_motion_only);
 }
-
-// One keyword argument (one of `keywords`) into `o`.
-void take_keyword(Options& o, const std::string& name, py::handle v)
-{
-  AF::Fairing_options& f = o.fairing;
-  if(name == "time_step") f.time_step = number_argument(name, v);
-  else if(name == "relative_time_step") f.relative_time_step = number_argument(name, v);
-  else if(name == "flow_order") f.flow_order = int(integer_argument(name, v));
-  else if(name == "number_of_iterations")
-  {
-    const long long n = integer_argument(name, v);
-    if(n < 0 || n > (long long)(std::numeric_limits<unsigned int>::max)()) throw py::value_error(name + " must be a non-negative integer");
-    f.number_of_iterations = unsigned(n);
-  }
-  else if(name == "stopping_criteria") f.stopping_criteria = stopping_rule(o.stop = word_argument(name, v, stop_words));
-  else if(name == "strength") f.strength = number_argument(name, v);   // (> 0 and the noise stop: checked by the library)
-  else if(name == "fidelity_weight") f.fidelity_weight = number_argument(name, v);
-  else if(name == "relative_fidelity_weight") f.relative_fidelity_weight = number_argument(name, v);
-  else if(name == "relative_maximum_deviation" || name == "maximum_deviation") f.relative_maximum_deviation = number_argument(name, v);
-  else if(name == "absolute_maximum_deviation") f.absolute_maximum_deviation = number_argument(name, v);
-  else if(name == "attribute_maximum_deviation") f.attribute_maximum_deviation = number_argument(name, v);
-  else if(name == "finite_element") f.finite_element = word_argument(name, v, element_words);
-  else if(name == "output_positions") f.output_positions = word_argument(name, v, output_words);
-  else if(name == "tensor") o.tensor = word_argument(name, v, tensor_words);
-  else if(name == "lambda_")
-  {
-    o.lambda = number_argument(name, v);
-    o.has_lambda = true;
-    if(!(o.lambda > 0)) throw py::value_error(name + " must be positive");
-  }
-  else if(name == "epsilon")
-  {
-    o.epsilon = number_argument(name, v);
-    o.has_epsilon = true;
-    if(!(o.epsilon >= 0)) throw py::value_error(name + " must be >= 0");
-  }
-  else if(name == "tangential_motion")
-  {
-    o.normal_motion_only = word_argument(name, v, tangential_words);
-    o.has_tangential_motion = true;
-  }
-  else if(name == "linear_solver") f.linear_solver = word_argument(name, v, solver_words);
-  else if(name == "boundary_handling") f.boundary_handling = word_argument(name, v, boundary_words);
-  else if(name == "quadrature_degree") f.quadrature_degree = int(integer_argument(name, v));
-  else if(name == "attribute_mode") f.attribute_mode = word_argument(name, v, mode_words);
-  else if(name == "attribute_weight")
-  {
-    f.attribute_weight = number_argument(name, v);
-    o.has_attribute_weight = true;
-  }
-}
-
-const std::vector<const char*> keywords = {
-  "time_step", "relative_time_step", "flow_order", "number_of_iterations", "stopping_criteria", "strength", "fidelity_weight",
-  "relative_fidelity_weight", "relative_maximum_deviation", "absolute_maximum_deviation", "maximum_deviation",
-  "attribute_maximum_deviation", "finite_element", "output_positions", "tensor", "lambda_", "epsilon", "tangential_motion",
-  "linear_solver", "boundary_handling", "quadrature_degree", "attribute_mode", "attribute_weight"};
 
 // The program's options for these keyword arguments (`attribute_columns`: of the attributes given).
 Options options_of(const py::kwargs& kwargs, py::ssize_t attribute_columns)
@@ -161,36 +164,8 @@ Options options_of(const py::kwargs& kwargs, py::ssize_t attribute_columns)
   o.quiet = true;
   for(py::ssize_t c = 0; c < attribute_columns; ++c) o.attributes.push_back(std::to_string(c));
   bool relative_bound = false;
-  for(const auto& item : kwargs)
-  {
-    const std::string name = py::str(item.first).cast<std::string>();
-    if(std::find_if(keywords.begin(), keywords.end(), [&](const char* k) { return name == k; }) == keywords.end())
-    {
-      std::string list;
-      for(const char* k : keywords) list += std::string(", ") + k;
-      throw py::type_error("fair() got an unexpected keyword argument '" + name + "' (it takes: attributes, vertex_is_constrained, "
-                           "callback, quiet" + list + ")");
-    }
-    if(item.second.is_none()) continue;   // None: the default
-    if(name == "maximum_deviation" &&
-       PyErr_WarnEx(PyExc_DeprecationWarning, "maximum_deviation is relative (units of l); write relative_maximum_deviation, or "
-                    "absolute_maximum_deviation for model units", 2) != 0)
-      throw py::error_already_set();
-    if((name == "maximum_deviation" || name == "relative_maximum_deviation") && std::exchange(relative_bound, true))
-      throw py::value_error("give one of relative_maximum_deviation and absolute_maximum_deviation (maximum_deviation: the "
-                            "relative one's deprecated spelling), not more");
-    take_keyword(o, name, item.second);
-  }
-  const bool asked_anisotropic = o.tensor == "anisotropic";   // the tensor's settings need it said
-  for(const auto& setting : {std::make_pair(o.has_lambda, "lambda_"), std::make_pair(o.has_epsilon, "epsilon"),
-                             std::make_pair(o.has_tangential_motion, "tangential_motion")})
-    if(setting.first && !asked_anisotropic) throw py::value_error(std::string(setting.second) + " needs tensor anisotropic");
-  const AF::Attribute_mode mode = effective_mode(o);
-  if(attribute_columns == 0 && (mode == AF::Attribute_mode::COUPLED || mode == AF::Attribute_mode::ATTRIBUTES_ONLY))
-    throw py::value_error(std::string("attribute_mode ") + mode_name(mode) + " needs attributes");
-  o.fairing.diffusion_tensor = package_tensor(o.tensor, o.fairing.automatic_parameters(),
-                                              o.has_lambda || o.has_epsilon || o.has_tangential_motion, o.lambda, o.epsilon,
-                                              o.normal_motion_only);
+  for(const auto& item : kwargs) take_keyword(o, py::str(item.first).cast<std::string>(), item.second, relative_bound);
+  check_keywords(o, attribute_columns);
   return o;
 }
 
@@ -200,12 +175,13 @@ py::object json_loads(const std::string& text) { return py::module_::import("jso
 // normals of the Loop limit surface of the faired control points where the limit surface is written,
 // else (control points, linear element) CGAL's compute_vertex_normals of the mesh written; None when the
 // geometry was not faired (attribute_mode 'attributes': the input's normals are still right).
-py::object written_normals(const Mesh& written, const std::vector<Point>& control_points, const Options& o, AF::Attribute_mode mode,
-                           const Vertex_split& split)
+py::object written_normals(const Mesh& written, const std::vector<Point>& control_points, const Options& o,
+                           AF::Attribute_mode mode, const Vertex_split& split)
 {
   if(mode == AF::Attribute_mode::ATTRIBUTES_ONLY) return py::none();
   std::vector<Vector> normals(written.number_of_vertices(), Vector(0, 0, 0));
-  if(o.fairing.finite_element == AF::Finite_element::LOOP && o.fairing.output_positions == AF::Output_positions::LIMIT_SURFACE)
+  if(o.fairing.finite_element == AF::Finite_element::LOOP &&
+     o.fairing.output_positions == AF::Output_positions::LIMIT_SURFACE)
   {
     Mesh control = written;
     for(Vertex_index v : control.vertices()) control.point(v) = control_points[std::size_t(v)];
@@ -230,86 +206,94 @@ py::object written_normals(const Mesh& written, const std::vector<Point>& contro
   return vectors_array(normals);
 }
 
-py::tuple fair(py::handle V, py::handle F, py::handle attributes, py::handle vertex_is_constrained, py::handle callback,
-               bool vertex_normals, const py::kwargs& kwargs)
+// The arrays given to fair(): the mesh, with its non-manifold vertices split for the run (n rows in and
+// out, run_n vertices faired), and the attributes (d columns; one_column: given as one value per vertex).
+struct Fair_input
 {
-  CGAL::Real_timer wall;
-  wall.start();
-  Vertex_split split;   // non-manifold vertices split for the run: n rows in and out, run_n vertices faired
+  Mesh mesh;
+  Vertex_split split;
   std::vector<std::string> changes;
-  Mesh mesh = mesh_from_arrays(V, F, &split, &changes);
-  const std::size_t run_n = mesh.number_of_vertices(), n = split.empty() ? run_n : split.file_vertices;
-  py::array_t<double, py::array::c_style> A;
+  std::size_t run_n = 0, n = 0;
+  py::array_t<double, py::array::c_style> attributes;
   bool one_column = false;
-  if(!attributes.is_none())
-  {
-    A = real_matrix(attributes, "attributes", py::ssize_t(n), -1);
-    one_column = A.ndim() == 1;
-    if(A.ndim() == 2 && A.shape(1) == 0) throw py::value_error("attributes has no column");
-  }
-  const py::ssize_t d = attributes.is_none() ? 0 : one_column ? 1 : A.shape(1);
-  const Options o = options_of(kwargs, d);
+  py::ssize_t d = 0;
+};
 
-  std::vector<std::vector<double>> values(run_n, std::vector<double>(std::size_t(d)));
-  if(d > 0)
-  {
-    const double* a = A.data();
-    for(std::size_t i = 0; i < n; ++i)
-      for(py::ssize_t c = 0; c < d; ++c)
-      {
-        values[i][std::size_t(c)] = a[i * std::size_t(d) + std::size_t(c)];
-        if(!std::isfinite(values[i][std::size_t(c)])) throw py::value_error("attributes row " + std::to_string(i) + " is not finite");
-      }
-  }
-  std::vector<unsigned char> held(run_n, 0);
-  Run_record r;
+Fair_input read_arrays(py::handle V, py::handle F, py::handle attributes)
+{
+  Fair_input in;
+  in.mesh = mesh_from_arrays(V, F, &in.split, &in.changes);
+  in.run_n = in.mesh.number_of_vertices();
+  in.n = in.split.empty() ? in.run_n : in.split.file_vertices;
+  if(attributes.is_none()) return in;
+  in.attributes = real_matrix(attributes, "attributes", py::ssize_t(in.n), -1);
+  in.one_column = in.attributes.ndim() == 1;
+  if(in.attributes.ndim() == 2 && in.attributes.shape(1) == 0) throw py::value_error("attributes has no column");
+  in.d = in.one_column ? 1 : in.attributes.shape(1);
+  return in;
+}
+
+// The attributes' values per vertex of the run, each finite (a copy of a split vertex has its vertex's).
+std::vector<std::vector<double>> attribute_values(const Fair_input& in)
+{
+  const std::size_t d = std::size_t(in.d);
+  std::vector<std::vector<double>> values(in.run_n, std::vector<double>(d));
+  for(std::size_t i = 0; d > 0 && i < in.n; ++i)
+    for(std::size_t c = 0; c < d; ++c)
+    {
+      values[i][c] = in.attributes.data()[i * d + c];
+      if(!std::isfinite(values[i][c])) throw py::value_error("attributes row " + std::to_string(i) + " is not finite");
+    }
+  for(std::size_t i = 0; i < in.split.copy_of.size(); ++i) values[in.n + i] = values[in.split.copy_of[i]];
+  return values;
+}
+
+// Whether each vertex of the run is held (a copy of a split vertex as its vertex), `count` of those given.
+std::vector<unsigned char> held_vertices(py::handle vertex_is_constrained, const Fair_input& in, std::size_t& count)
+{
+  std::vector<unsigned char> held(in.run_n, 0);
   if(!vertex_is_constrained.is_none())
   {
-    const auto h = real_matrix(vertex_is_constrained, "vertex_is_constrained", py::ssize_t(n), -1, true);
-    if(h.ndim() != 1) throw py::value_error("vertex_is_constrained must be one value per vertex, not an array of " + describe(h));
-    for(std::size_t i = 0; i < n; ++i) r.held_vertices += (held[i] = h.data()[i] != 0);
+    const auto h = real_matrix(vertex_is_constrained, "vertex_is_constrained", py::ssize_t(in.n), -1, true);
+    if(h.ndim() != 1)
+      throw py::value_error("vertex_is_constrained must be one value per vertex, not an array of " + describe(h));
+    for(std::size_t i = 0; i < in.n; ++i) count += (held[i] = h.data()[i] != 0);
   }
+  for(std::size_t i = 0; i < in.split.copy_of.size(); ++i) held[in.n + i] = held[in.split.copy_of[i]];
+  return held;
+}
 
-  for(std::size_t i = 0; i < split.copy_of.size(); ++i)   // a copy has its vertex's values and hold
-  {
-    values[n + i] = values[split.copy_of[i]];
-    held[n + i] = held[split.copy_of[i]];
-  }
+// What the Python callback is given after a step.
+py::dict step_info(const AF::Fairing_step& s)
+{
+  py::dict info;
+  info["step"] = s.step;
+  info["time"] = s.time;
+  info["time_step"] = s.time_step;
+  info["area"] = s.area;
+  info["energy"] = s.energy;
+  info["H_integral"] = s.H_integral;
+  info["max_displacement"] = s.max_displacement;
+  info["solver_iterations"] = s.solver_iterations;
+  info["run"] = s.run;
+  info["runs"] = s.runs;
+  info["run_name"] = s.run_name;
+  return info;
+}
 
-  const AF::Attribute_mode mode = effective_mode(o);
-  const AF::Attribute_mode library_mode = d > 0 ? mode : AF::Attribute_mode::GEOMETRY_ONLY;
-  std::vector<std::vector<double>> controls = values;
-  std::vector<Point> control_points(run_n);
-  r.mesh_read = true;
-  r.vertices = n;
-  r.faces = mesh.number_of_faces();
-  r.input_changes = changes;
-  r.split_vertices = split.split_vertices;
-
-  // The run without the GIL. After every step the callback takes it: Python's signal handlers run there
-  // (Ctrl-C: KeyboardInterrupt), then the Python callback, if any. An exception either raises ends the
-  // library's call at once (Run_abandoned) and is raised again afterwards.
-  std::exception_ptr raised;
+// The step callback of a run without the GIL. After every step it takes it: Python's signal handlers run
+// there (Ctrl-C: KeyboardInterrupt), then the Python callback, if any. An exception either raises ends
+// the library's call at once (Run_abandoned), kept in `raised` to be raised again afterwards.
+Step_callback python_step(py::handle callback, std::exception_ptr& raised)
+{
   const bool python_callback = !callback.is_none();
-  const Step_callback step = [&callback, &raised, python_callback](const AF::Fairing_step& s) {
+  return [callback, &raised, python_callback](const AF::Fairing_step& s) {
     py::gil_scoped_acquire gil;
     try
     {
       if(PyErr_CheckSignals() != 0) throw py::error_already_set();
       if(!python_callback) return true;
-      py::dict info;
-      info["step"] = s.step;
-      info["time"] = s.time;
-      info["time_step"] = s.time_step;
-      info["area"] = s.area;
-      info["energy"] = s.energy;
-      info["H_integral"] = s.H_integral;
-      info["max_displacement"] = s.max_displacement;
-      info["solver_iterations"] = s.solver_iterations;
-      info["run"] = s.run;
-      info["runs"] = s.runs;
-      info["run_name"] = s.run_name;
-      const py::object go_on = callback(info);
+      const py::object go_on = callback(step_info(s));
       return go_on.is_none() || bool(py::bool_(go_on));   // None (a progress printer) goes on
     }
     catch(...)
@@ -318,15 +302,25 @@ py::tuple fair(py::handle V, py::handle F, py::handle attributes, py::handle ver
     }
     throw Run_abandoned();
   };
+}
+
+// The library's call without the GIL; an exception of the callback is raised again, nothing of the run
+// kept (the input arrays were only read).
+void run_fairing(Fair_input& in, const Options& o, AF::Attribute_mode mode, std::vector<std::vector<double>>& values,
+                 std::vector<Point>& control_points, std::vector<unsigned char>& held, py::handle callback,
+                 Run_record& r)
+{
+  std::exception_ptr raised;
+  const Step_callback step = python_step(callback, raised);
+  std::vector<std::vector<double>> controls = values;
   {
     py::gil_scoped_release no_gil;
     try
     {
-      r.report = fair_with_options(mesh, o, library_mode, Attribute_vectors{&values}, controls, control_points, held, step);
+      r.report = fair_with_options(in.mesh, o, mode, Attribute_vectors{&values}, controls, control_points, held, step);
     }
     catch(const Run_abandoned&)
     {
-      // `raised` holds the exception; nothing of the run is kept (the input arrays were only read)
     }
     catch(const AF::Input_error& e)
     {
@@ -341,38 +335,72 @@ py::tuple fair(py::handle V, py::handle F, py::handle attributes, py::handle ver
     r.status = AF::to_string(r.report.status);
     r.message = r.report.message;
   }
-  merge_copies(mesh, split);
-  merge_copies(values, split);
+}
+
+// A failed run: FairingError, with the report attached.
+[[noreturn]] void raise_failure(const Run_record& r, const py::object& report)
+{
+  py::object error = py::module_::import("anisotropic_fairing._core").attr("FairingError")(
+      "fairing failed (" + r.status + "): " + (r.message.empty() ? std::string("no detail") : r.message));
+  error.attr("report") = report;
+  PyErr_SetObject(error.get_type().ptr(), error.ptr());
+  throw py::error_already_set();
+}
+
+// The faired attributes in the shape given (None without).
+py::object attributes_array(const Fair_input& in, const std::vector<std::vector<double>>& values)
+{
+  if(in.d == 0) return py::none();
+  py::array_t<double> a = in.one_column ? py::array_t<double>({ py::ssize_t(in.n) })
+                                        : py::array_t<double>({ py::ssize_t(in.n), in.d });
+  double* p = a.mutable_data();
+  for(std::size_t i = 0; i < in.n; ++i)
+    for(py::ssize_t c = 0; c < in.d; ++c) p[i * std::size_t(in.d) + std::size_t(c)] = values[i][std::size_t(c)];
+  return py::object(std::move(a));
+}
+
+// The report's name of the normals written
+const char* normals_name(const Options& o, AF::Attribute_mode mode)
+{
+  if(mode == AF::Attribute_mode::ATTRIBUTES_ONLY) return "input";
+  const AF::Fairing_options& f = o.fairing;
+  const bool limit =
+    f.finite_element == AF::Finite_element::LOOP && f.output_positions == AF::Output_positions::LIMIT_SURFACE;
+  return limit ? "limit_surface" : "vertex_normals";
+}
+
+py::tuple fair(py::handle V, py::handle F, py::handle attributes, py::handle vertex_is_constrained, py::handle callback,
+               bool vertex_normals, const py::kwargs& kwargs)
+{
+  CGAL::Real_timer wall;
+  wall.start();
+  Fair_input in = read_arrays(V, F, attributes);
+  const Options o = options_of(kwargs, in.d);
+  std::vector<std::vector<double>> values = attribute_values(in);
+  Run_record r;
+  std::vector<unsigned char> held = held_vertices(vertex_is_constrained, in, r.held_vertices);
+  r.mesh_read = true;
+  r.vertices = in.n;
+  r.faces = in.mesh.number_of_faces();
+  r.input_changes = in.changes;
+  r.split_vertices = in.split.split_vertices;
+
+  const AF::Attribute_mode mode = effective_mode(o);
+  std::vector<Point> control_points(in.run_n);
+  run_fairing(in, o, in.d > 0 ? mode : AF::Attribute_mode::GEOMETRY_ONLY, values, control_points, held, callback, r);
+  merge_copies(in.mesh, in.split);
+  merge_copies(values, in.split);
   py::object normals = py::none();
   if(vertex_normals && r.report.succeeded())
   {
-    normals = written_normals(mesh, control_points, o, mode, split);
-    r.normals = mode == AF::Attribute_mode::ATTRIBUTES_ONLY ? "input"
-                : o.fairing.finite_element == AF::Finite_element::LOOP &&
-                      o.fairing.output_positions == AF::Output_positions::LIMIT_SURFACE
-                  ? "limit_surface"
-                  : "vertex_normals";
+    normals = written_normals(in.mesh, control_points, o, mode, in.split);
+    r.normals = normals_name(o, mode);
   }
-  py::object report = json_loads(report_json(o, r, wall.time()));
-  if(!r.report.succeeded())
-  {
-    py::object error = py::module_::import("anisotropic_fairing._core").attr("FairingError")(
-        "fairing failed (" + r.status + "): " + (r.message.empty() ? std::string("no detail") : r.message));
-    error.attr("report") = report;
-    PyErr_SetObject(error.get_type().ptr(), error.ptr());
-    throw py::error_already_set();
-  }
-  py::object out_attributes = py::none();
-  if(d > 0)
-  {
-    py::array_t<double> a = one_column ? py::array_t<double>({ py::ssize_t(n) }) : py::array_t<double>({ py::ssize_t(n), d });
-    double* p = a.mutable_data();
-    for(std::size_t i = 0; i < n; ++i)
-      for(py::ssize_t c = 0; c < d; ++c) p[i * std::size_t(d) + std::size_t(c)] = values[i][std::size_t(c)];
-    out_attributes = a;
-  }
-  if(vertex_normals) return py::make_tuple(points_array(mesh, n), out_attributes, report, normals);
-  return py::make_tuple(points_array(mesh, n), out_attributes, report);
+  const py::object report = json_loads(report_json(o, r, wall.time()));
+  if(!r.report.succeeded()) raise_failure(r, report);
+  const py::object out_attributes = attributes_array(in, values);
+  if(vertex_normals) return py::make_tuple(points_array(in.mesh, in.n), out_attributes, report, normals);
+  return py::make_tuple(points_array(in.mesh, in.n), out_attributes, report);
 }
 
 // ---- limit_surface() -------------------------------------------------------------------------------
@@ -464,7 +492,8 @@ public:
     for(Face_index face : fine.faces())
     {
       int c = 0;
-      for(Vertex_index v : CGAL::vertices_around_face(fine.halfedge(face), fine)) f(py::ssize_t(face), c++) = (long long)v;
+      for(Vertex_index v : CGAL::vertices_around_face(fine.halfedge(face), fine))
+        f(py::ssize_t(face), c++) = (long long)v;
     }
     if(d == 0) return py::make_tuple(points_array(fine), faces);
     const py::ssize_t nv = py::ssize_t(fine.number_of_vertices());
@@ -490,25 +519,39 @@ PYBIND11_MODULE(_core, m)
   // raised with the report attached (fair()); the C++ type only names it
   static py::exception<Fairing_failed> fairing_error(m, "FairingError", PyExc_RuntimeError);
   m.def("fair", &fair, py::arg("V"), py::arg("F"), py::kw_only(), py::arg("attributes") = py::none(),
-        py::arg("vertex_is_constrained") = py::none(), py::arg("callback") = py::none(), py::arg("vertex_normals") = false,
-        "fair(V, F, *, attributes=None, vertex_is_constrained=None, callback=None, vertex_normals=False, **parameters) -> "
-        "(V2, attributes2, report), and with vertex_normals the normals the program writes (N x 3; None if the geometry was "
-        "not faired) fourth: anisotropic_fairing.fair's run; its parameters (parameter_names) are checked here, as the program "
-        "checks its options; Ctrl-C raises KeyboardInterrupt after the step it arrives in");
-  py::tuple names(keywords.size());
-  for(std::size_t k = 0; k < keywords.size(); ++k) names[k] = py::str(keywords[k]);
-  m.attr("parameter_names") = names;   // the package's fair() passes these on
+        py::arg("vertex_is_constrained") = py::none(), py::arg("callback") = py::none(),
+        py::arg("vertex_normals") = false,
+        "fair(V, F, *, attributes=None, vertex_is_constrained=None, callback=None, vertex_normals=False, "
+        "**parameters) -> (V2, attributes2, report), and with vertex_normals the normals the program writes "
+        "(N x 3; None if the geometry was not faired) fourth: anisotropic_fairing.fair's run; its parameters "
+        "(parameter_names) are checked here, as the program checks its options; Ctrl-C raises KeyboardInterrupt "
+        "after the step it arrives in");
+  py::tuple names(keywords().size());
+  py::dict words;
+  for(std::size_t k = 0; k < keywords().size(); ++k)
+  {
+    names[k] = py::str(keywords()[k].name);
+    py::list taken;
+    for(const char* w : keywords()[k].words) taken.append(py::str(w));
+    if(!keywords()[k].words.empty()) words[names[k]] = py::tuple(taken);
+  }
+  m.attr("parameter_names") = names;   // the package's fair() takes these and passes them on
+  m.attr("parameter_words") = words;   // the words of those that take words (the stubs' test)
   py::class_<Limit_surface>(m, "LimitSurface", "The Loop limit surface of a triangle mesh (see limit_surface()).")
       .def_property_readonly("positions", &Limit_surface::positions, "the limit points of the vertices (N x 3)")
-      .def_property_readonly("normals", &Limit_surface::normals, "the unit normals of the limit surface at the vertices (N x 3)")
+      .def_property_readonly("normals", &Limit_surface::normals,
+                             "the unit normals of the limit surface at the vertices (N x 3)")
       .def_property_readonly("area", &Limit_surface::area, "the area of the limit surface")
       .def("curvatures", &Limit_surface::curvatures,
-           "dict: k1, k2 (principal curvatures, k1 <= k2, negative on a convex surface oriented outward), mean_curvature, "
-           "d1, d2 (unit principal directions, N x 3), averaged over each vertex's faces (Loop_limit_surface::vertex_curvatures)")
+           "dict: k1, k2 (principal curvatures, k1 <= k2, negative on a convex surface oriented outward), "
+           "mean_curvature, d1, d2 (unit principal directions, N x 3), averaged over each vertex's faces "
+           "(Loop_limit_surface::vertex_curvatures)")
       .def("resample", &Limit_surface::resample, py::arg("levels"), py::arg("attributes") = py::none(),
            "resample(levels, attributes=None) -> (V, F) or (V, F, attributes): the limit surface at 2^levels times the "
-           "resolution (levels <= 10), every vertex on it, the mesh's vertices first; with attributes (N x d), their limit values");
-  m.def("limit_surface", [](py::handle V, py::handle F, int quadrature_degree) { return Limit_surface(V, F, quadrature_degree); },
+           "resolution (levels <= 10), every vertex on it, the mesh's vertices first; with attributes (N x d), "
+           "their limit values");
+  m.def("limit_surface",
+        [](py::handle V, py::handle F, int quadrature_degree) { return Limit_surface(V, F, quadrature_degree); },
         py::arg("V"), py::arg("F"), py::kw_only(), py::arg("quadrature_degree") = 8,
         "limit_surface(V, F, *, quadrature_degree=8) -> LimitSurface: the Loop limit surface of the mesh, with limit "
         "positions, normals, curvatures and resample(levels)");

@@ -17,7 +17,8 @@ import anisotropic_fairing as af
 
 # %% A mesh as numpy arrays: V (N x 3 float64 positions), F (M x 3 integer vertex indices), read by meshio
 here = os.path.dirname(os.path.abspath(__file__))
-path = sys.argv[1] if len(sys.argv) > 1 else os.path.join(here, '..', 'examples', 'Anisotropic_fairing', 'data', 'fandisk_noisy.obj')
+bundled = os.path.join(here, '..', 'examples', 'Anisotropic_fairing', 'data', 'fandisk_noisy.obj')
+path = sys.argv[1] if len(sys.argv) > 1 else bundled
 mesh = meshio.read(path)
 V, F = mesh.points, mesh.get_cells_type('triangle')
 print('%s: %d vertices, %d faces' % (os.path.basename(path), len(V), len(F)))
@@ -38,7 +39,8 @@ print('scalar field: roughness %.3g -> %.3g (mean |f_i - f_j| over the edges)' %
 
 # %% A guaranteed bound: no vertex farther than 0.5% of the model's scale l from where it was
 V4, _, report = af.fair(V, F, relative_maximum_deviation=0.005)
-print('bounded: largest deviation %.4g <= %.4g' % (np.linalg.norm(V4 - V, axis=1).max(), report['maximum_deviation'] or 0.0))
+largest = np.linalg.norm(V4 - V, axis=1).max()
+print('bounded: largest deviation %.4g <= %.4g' % (largest, report['maximum_deviation'] or 0.0))
 
 # %% Progress, and stopping early, with a callback (the GIL is released while the run computes). Every run
 # longer than about a second shows its progress on stderr (tqdm's bar if it is installed); quiet=True: not,

@@ -20,21 +20,23 @@ std::string describe(const py::array& a)
   return shape + (a.ndim() == 1 ? ",)" : ")") + " and dtype " + py::str(a.dtype()).cast<std::string>();
 }
 
-py::array_t<double, py::array::c_style> real_matrix(py::handle a, const std::string& name, py::ssize_t rows, py::ssize_t cols,
-                                                    bool booleans)
+py::array_t<double, py::array::c_style> real_matrix(py::handle a, const std::string& name, py::ssize_t rows,
+                                                    py::ssize_t cols, bool booleans)
 {
   py::array arr = py::array::ensure(a);
   if(!arr) throw py::type_error(name + " must be a numpy array (or a nested list) of real numbers");
   const char kind = arr.dtype().kind();
   if(kind != 'f' && kind != 'i' && kind != 'u' && !(booleans && kind == 'b'))
-    throw py::type_error(name + (booleans ? " must hold booleans or numbers" : " must hold real numbers (float64)") + ", not an array of " +
-                         describe(arr));
+    throw py::type_error(name + (booleans ? " must hold booleans or numbers" : " must hold real numbers (float64)") +
+                         ", not an array of " + describe(arr));
   const bool column = cols < 0 && arr.ndim() == 1;
   if(!(arr.ndim() == 2 || column) || (cols > 0 && arr.shape(1) != cols))
-    throw py::value_error(name + " must be an " + (cols > 0 ? "N x " + std::to_string(cols) : std::string("N x d (or N)")) +
+    throw py::value_error(name + " must be an " +
+                          (cols > 0 ? "N x " + std::to_string(cols) : std::string("N x d (or N)")) +
                           " array, not one of " + describe(arr));
   if(rows >= 0 && arr.shape(0) != rows)
-    throw py::value_error(name + " must have one row per vertex (" + std::to_string(rows) + "), not an array of " + describe(arr));
+    throw py::value_error(name + " must have one row per vertex (" + std::to_string(rows) + "), not an array of " +
+                          describe(arr));
   return py::array_t<double, py::array::c_style | py::array::forcecast>::ensure(arr);
 }
 
@@ -44,8 +46,10 @@ Mesh mesh_from_arrays(py::handle V, py::handle F, Vertex_split* split, std::vect
   py::array faces_in = py::array::ensure(F);
   if(!faces_in) throw py::type_error("F must be a numpy array (or a nested list) of vertex indices");
   const char kind = faces_in.dtype().kind();
-  if(kind != 'i' && kind != 'u') throw py::type_error("F must hold integer vertex indices, not an array of " + describe(faces_in));
-  if(faces_in.ndim() != 2 || faces_in.shape(1) != 3) throw py::value_error("F must be an M x 3 array of triangles, not one of " + describe(faces_in));
+  if(kind != 'i' && kind != 'u')
+    throw py::type_error("F must hold integer vertex indices, not an array of " + describe(faces_in));
+  if(faces_in.ndim() != 2 || faces_in.shape(1) != 3)
+    throw py::value_error("F must be an M x 3 array of triangles, not one of " + describe(faces_in));
   const auto faces = py::array_t<long long, py::array::c_style | py::array::forcecast>::ensure(faces_in);
   const py::ssize_t n = points.shape(0), m = faces.shape(0);
   if(m == 0) throw py::value_error("F has no face: nothing to fair");
@@ -66,8 +70,8 @@ Mesh mesh_from_arrays(py::handle V, py::handle F, Vertex_split* split, std::vect
     for(int c = 0; c < 3; ++c)
     {
       if(f(k, c) < 0 || f(k, c) >= n)
-        throw py::value_error("F row " + std::to_string(k) + " refers to vertex " + std::to_string(f(k, c)) + ", but V has " +
-                              std::to_string(n) + " vertices (0.." + std::to_string(n - 1) + ")");
+        throw py::value_error("F row " + std::to_string(k) + " refers to vertex " + std::to_string(f(k, c)) +
+                              ", but V has " + std::to_string(n) + " vertices (0.." + std::to_string(n - 1) + ")");
       face.push_back(std::size_t(f(k, c)));
     }
     soup.faces.push_back(face);
@@ -89,8 +93,9 @@ Mesh mesh_from_arrays(py::handle V, py::handle F, Vertex_split* split, std::vect
     std::string said;
     for(const std::string& c : fixed.changes) said += (said.empty() ? "" : "; ") + c;
     *changes = fixed.changes;
-    const std::string warning = std::string(e.what()) + ": for the run, " + said +
-                                (fixed.copy_of.empty() ? "" : "; each split vertex is returned once, at the mean of its copies");
+    const std::string warning =
+      std::string(e.what()) + ": for the run, " + said +
+      (fixed.copy_of.empty() ? "" : "; each split vertex is returned once, at the mean of its copies");
     if(PyErr_WarnEx(PyExc_UserWarning, warning.c_str(), 2) != 0) throw py::error_already_set();
   }
   Mesh mesh;

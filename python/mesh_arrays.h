@@ -24,14 +24,15 @@ std::string describe(const py::array& a);
 /// `a` as a C-contiguous float64 array of `rows` x `cols` (rows < 0: any; cols < 0: any, and a 1-D array is
 /// one column); integers (and with `booleans`, booleans) are converted, anything else is refused with a
 /// message that names `name`.
-py::array_t<double, py::array::c_style> real_matrix(py::handle a, const std::string& name, py::ssize_t rows, py::ssize_t cols,
-                                                    bool booleans = false);
+py::array_t<double, py::array::c_style> real_matrix(py::handle a, const std::string& name, py::ssize_t rows,
+                                                    py::ssize_t cols, bool booleans = false);
 
 /// The mesh of V (N x 3 float64) and F (M x 3 integers), checked as the program checks a file: every index,
 /// every coordinate, and that the faces form an oriented 2-manifold (the message names the row of F). With
 /// `split`, faces that do not are made one as the program makes them (vertex_split.h: the copies of split
 /// vertices after V's), with a warning and the lines of `changes` saying what was done; without, refused.
-Mesh mesh_from_arrays(py::handle V, py::handle F, af_tool::Vertex_split* split = nullptr, std::vector<std::string>* changes = nullptr);
+Mesh mesh_from_arrays(py::handle V, py::handle F, af_tool::Vertex_split* split = nullptr,
+                      std::vector<std::string>* changes = nullptr);
 
 /// The first `count` points of the mesh (all of them by default), N x 3.
 py::array_t<double> points_array(const Mesh& mesh, std::size_t count = std::size_t(-1));

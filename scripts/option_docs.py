@@ -1,6 +1,8 @@
 #!/usr/bin/env python3
-"""The options of the program anisotropic_fairing are described once, in its option table (the text of
---help); the option list of the manual's page on the program is made from it (the README points there).
+"""The options of the program anisotropic_fairing are described once: those of the library's parameters in the
+parameter table (include/CGAL/Anisotropic_fairing/internal/parameter_table.h), the program's own in its option
+table (tools/anisotropic_fairing/options.cpp); --help prints both, and the option list of the manual's page on
+the program is made from it (the README points there).
 
     python3 scripts/option_docs.py TOOL            rewrite the page's list from TOOL --help
     python3 scripts/option_docs.py TOOL --check    exit 1 if it differs from TOOL --help (the test cli_option_docs)

@@ -31,20 +31,25 @@ def main():
     env.setdefault('CMAKE_BUILD_PARALLEL_LEVEL', '2')
     offline = ['--no-build-isolation', '--no-index', '--disable-pip-version-check']
     with tempfile.TemporaryDirectory() as elsewhere:
-        run([python, '-m', 'pip', 'wheel', *offline, '--no-deps', '-w', os.path.join(elsewhere, 'wheels'), source], env=env)
+        run([python, '-m', 'pip', 'wheel', *offline, '--no-deps', '-w', os.path.join(elsewhere, 'wheels'), source],
+            env=env)
         wheels = os.listdir(os.path.join(elsewhere, 'wheels'))
         assert len(wheels) == 1 and wheels[0].startswith('anisotropic_fairing-'), wheels
         run([python, '-m', 'pip', 'install', *offline, source], env=env)
-        found = subprocess.run([python, '-c', 'import anisotropic_fairing as af; print(af.__file__); print(af.__version__)'],
+        show = 'import anisotropic_fairing as af; print(af.__file__); print(af.__version__)'
+        found = subprocess.run([python, '-c', show],
                                cwd=elsewhere, env=env, check=True, capture_output=True, text=True).stdout.split()
         assert found[0].startswith(venv + os.sep), 'imported %s, not the package installed in %s' % (found[0], venv)
         print('installed:', found[0], found[1])
         config = os.path.join(source, 'python', 'tests', 'mypy.ini')
         run([python, '-m', 'mypy.stubtest', '--mypy-config-file', config, '--allowlist',
-             os.path.join(source, 'python', 'tests', 'stubtest_allowlist.txt'), 'anisotropic_fairing'], cwd=elsewhere, env=env)
-        run([python, '-m', 'mypy', '--config-file', config, '--no-incremental', os.path.join(source, 'python', 'example.py')],
+             os.path.join(source, 'python', 'tests', 'stubtest_allowlist.txt'), 'anisotropic_fairing'],
             cwd=elsewhere, env=env)
-        run([python, '-m', 'pytest', '-q', '-p', 'no:cacheprovider', os.path.join(source, 'python', 'tests')], cwd=elsewhere, env=env)
+        run([python, '-m', 'mypy', '--config-file', config, '--no-incremental',
+             os.path.join(source, 'python', 'example.py')],
+            cwd=elsewhere, env=env)
+        run([python, '-m', 'pytest', '-q', '-p', 'no:cacheprovider', os.path.join(source, 'python', 'tests')],
+            cwd=elsewhere, env=env)
 
 
 if __name__ == '__main__':

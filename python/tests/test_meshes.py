@@ -32,7 +32,8 @@ def test_fair_meshio(fandisk, tmp_path):
     q = np.sin(V[:, 0]) + 0.1 * rng.standard_normal(len(V))
     uv = np.column_stack([V[:, 0], V[:, 2]]) + 0.01 * rng.standard_normal((len(V), 2))
     keep = np.arange(len(V), dtype=float)
-    mesh = meshio.Mesh(V.copy(), [('triangle', F.copy())], point_data={'q': q.copy(), 'uv': uv.copy(), 'id': keep.copy()})
+    mesh = meshio.Mesh(V.copy(), [('triangle', F.copy())],
+                       point_data={'q': q.copy(), 'uv': uv.copy(), 'id': keep.copy()})
     faired, report = af.fair_meshio(mesh, attributes=['q', 'uv'], **SETTINGS)
     V2, A2, expected_report = af.fair(V, F, attributes=np.column_stack([q, uv]), **SETTINGS)
     assert np.array_equal(faired.points, V2) and np.array_equal(faired.point_data['q'], A2[:, 0])
@@ -65,7 +66,8 @@ def test_fair_open3d(fandisk):
     rng = np.random.default_rng(7)
     colours = np.clip(0.5 + 0.5 * np.column_stack([np.sin(V[:, 0]), np.cos(V[:, 1]), V[:, 2] / np.abs(V[:, 2]).max()])
                       + 0.1 * rng.standard_normal((len(V), 3)), 0, 1)
-    mesh = open3d.geometry.TriangleMesh(open3d.utility.Vector3dVector(V), open3d.utility.Vector3iVector(F.astype(np.int32)))
+    mesh = open3d.geometry.TriangleMesh(open3d.utility.Vector3dVector(V),
+                                        open3d.utility.Vector3iVector(F.astype(np.int32)))
     mesh.vertex_colors = open3d.utility.Vector3dVector(colours)
     mesh.compute_vertex_normals()
     before = np.asarray(mesh.vertices).copy(), np.asarray(mesh.vertex_colors).copy()
@@ -77,10 +79,12 @@ def test_fair_open3d(fandisk):
     assert np.array_equal(np.asarray(faired.triangles), F) and report['attribute_dimension'] == 3
     normals = np.asarray(faired.vertex_normals)
     assert normals.shape == V.shape and np.allclose(np.linalg.norm(normals, axis=1), 1), 'normals of the faired surface'
-    assert np.array_equal(np.asarray(mesh.vertices), before[0]) and np.array_equal(np.asarray(mesh.vertex_colors), before[1])
+    assert (np.array_equal(np.asarray(mesh.vertices), before[0])
+            and np.array_equal(np.asarray(mesh.vertex_colors), before[1]))
     # without colours, or with colours left as they are
     plain, report = af.fair_open3d(mesh, colours=False, **SETTINGS)
-    assert np.array_equal(np.asarray(plain.vertices), af.fair(V, F, **SETTINGS)[0]) and report['attribute_dimension'] == 0
+    assert (np.array_equal(np.asarray(plain.vertices), af.fair(V, F, **SETTINGS)[0])
+            and report['attribute_dimension'] == 0)
     assert np.array_equal(np.asarray(plain.vertex_colors), colours)
 
 
@@ -94,11 +98,12 @@ def test_fair_meshio_gives_the_normals_of_the_faired_surface(fandisk, tmp_path):
     faired surface, never stale; STL's facet normals too; normals that are not one per point are dropped"""
     V, F = fandisk
     stale = np.tile([0.0, 0.0, 1.0], (len(V), 1))
-    meshio.Mesh(V, [('triangle', F.astype(np.int32))], point_data={'nx': stale[:, 0], 'ny': stale[:, 1], 'nz': stale[:, 2]}
+    meshio.Mesh(V, [('triangle', F.astype(np.int32))],
+                point_data={'nx': stale[:, 0], 'ny': stale[:, 1], 'nz': stale[:, 2]}
                 ).write(tmp_path / 'in.ply', binary=True)
     for output, normals in (('limit', 'limit_surface'), ('control', 'vertex_normals')):
-        p = subprocess.run([TOOL, 'in.ply', 'out.ply', '--output', output] + PROGRAM_SETTINGS, cwd=tmp_path, capture_output=True,
-                           text=True)
+        p = subprocess.run([TOOL, 'in.ply', 'out.ply', '--output', output] + PROGRAM_SETTINGS, cwd=tmp_path,
+                           capture_output=True, text=True)
         assert p.returncode == 0, p.stderr
         expected = meshio.read(tmp_path / 'out.ply')
         mesh = meshio.read(tmp_path / 'in.ply')
@@ -111,8 +116,8 @@ def test_fair_meshio_gives_the_normals_of_the_faired_surface(fandisk, tmp_path):
         assert np.array_equal(mesh.point_data['nx'], stale[:, 0]), 'the input mesh is not modified'
         # the same normals under the other names meshio gives them
         for name in ('obj:vn', 'Normals', 'normals'):
-            other, _ = af.fair_meshio(meshio.Mesh(V, [('triangle', F)], point_data={name: stale}), output_positions=output,
-                                      **SETTINGS)
+            other, _ = af.fair_meshio(meshio.Mesh(V, [('triangle', F)], point_data={name: stale}),
+                                      output_positions=output, **SETTINGS)
             assert np.array_equal(other.point_data[name], N.astype(float)), name
     # STL: one normal per facet (cell data), recomputed
     meshio.Mesh(V, [('triangle', F)]).write(tmp_path / 'in.stl')
@@ -136,7 +141,8 @@ def test_fair_open3d_keeps_textures(fandisk):
     V, F = fandisk
     rng = np.random.default_rng(11)
     uvs = rng.random((3 * len(F), 2))
-    mesh = open3d.geometry.TriangleMesh(open3d.utility.Vector3dVector(V), open3d.utility.Vector3iVector(F.astype(np.int32)))
+    mesh = open3d.geometry.TriangleMesh(open3d.utility.Vector3dVector(V),
+                                        open3d.utility.Vector3iVector(F.astype(np.int32)))
     mesh.triangle_uvs = open3d.utility.Vector2dVector(uvs)
     mesh.textures = [open3d.geometry.Image(np.full((8, 8, 3), 200, dtype=np.uint8))]
     mesh.triangle_material_ids = open3d.utility.IntVector(np.arange(len(F), dtype=np.int32) % 2)
@@ -149,9 +155,11 @@ def test_fair_open3d_keeps_textures(fandisk):
     assert len(faired.textures) == 1 and np.array_equal(np.asarray(faired.textures[0]), np.asarray(mesh.textures[0]))
     assert np.array_equal(np.asarray(faired.triangle_material_ids), np.arange(len(F)) % 2)
     with_normals, _ = af.fair_meshio(meshio.Mesh(V, [('triangle', F)], point_data={'Normals': before[1]}), **SETTINGS)
-    assert np.array_equal(np.asarray(faired.vertex_normals), with_normals.point_data['Normals']) and report['normals'] == 'limit_surface'
+    assert (np.array_equal(np.asarray(faired.vertex_normals), with_normals.point_data['Normals'])
+            and report['normals'] == 'limit_surface')
     assert np.abs(np.asarray(faired.triangle_normals) - unit_face_normals(np.asarray(faired.vertices), F)).max() < 1e-12
-    assert np.array_equal(np.asarray(mesh.vertices), before[0]) and np.array_equal(np.asarray(mesh.vertex_normals), before[1])
+    assert (np.array_equal(np.asarray(mesh.vertices), before[0])
+            and np.array_equal(np.asarray(mesh.vertex_normals), before[1]))
     assert np.array_equal(np.asarray(mesh.triangle_uvs), uvs), 'the input mesh is not modified'
     with pytest.raises(TypeError, match='open3d.geometry.TriangleMesh'):
         af.fair_open3d(meshio.Mesh(V, [('triangle', F)]))
@@ -196,8 +204,8 @@ def test_fair_vtk(fandisk):
     V, F = fandisk
     rng = np.random.default_rng(13)
     q = np.sin(V[:, 0]) + 0.1 * rng.standard_normal(len(V))
-    colour = np.clip(128 + 60 * np.column_stack([np.sin(V[:, 0]), np.cos(V[:, 1]), V[:, 2]]) + 20 * rng.standard_normal((len(V), 3)),
-                     0, 255).astype(np.uint8)
+    colour = np.clip(128 + 60 * np.column_stack([np.sin(V[:, 0]), np.cos(V[:, 1]), V[:, 2]])
+                     + 20 * rng.standard_normal((len(V), 3)), 0, 255).astype(np.uint8)
     mesh = polydata(V, F, lines=[[0, 1, 2]], verts=[[5]])
     pd = mesh.GetPointData()
     add_array(pd, 'q', q)
@@ -220,8 +228,10 @@ def test_fair_vtk(fandisk):
     assert np.array_equal(out['q'], A2[:, 0]) and out['colour'].dtype == np.uint8
     assert np.array_equal(out['colour'], np.clip(np.rint(A2[:, 1:]), 0, 255).astype(np.uint8)), 'rounded, clamped'
     assert np.array_equal(out['id'], np.arange(len(V))) and np.array_equal(out['uv'], before[0]['uv'])
-    assert faired.GetPointData().GetTCoords().GetName() == 'uv' and faired.GetPointData().GetNormals().GetName() == 'Normals'
-    with_normals, _ = af.fair_meshio(meshio.Mesh(V, [('triangle', F)], point_data={'Normals': before[0]['Normals']}), **SETTINGS)
+    assert (faired.GetPointData().GetTCoords().GetName() == 'uv'
+            and faired.GetPointData().GetNormals().GetName() == 'Normals')
+    with_normals, _ = af.fair_meshio(meshio.Mesh(V, [('triangle', F)], point_data={'Normals': before[0]['Normals']}),
+                                     **SETTINGS)
     assert out['Normals'].dtype == np.float32 and np.array_equal(out['Normals'], with_normals.point_data['Normals'])
     assert report['normals'] == 'limit_surface'
     assert np.array_equal(vtk_to_numpy(faired.GetCellData().GetArray('cell_id')), np.arange(len(F) + 2))
@@ -257,8 +267,10 @@ def test_fair_vtk_keeps_the_class_and_the_precision(fandisk):
 
 def grid_of_quads(n=8):
     """a bumpy (n+1) x (n+1) grid of points and its n x n quads, counter-clockwise"""
-    V = np.array([[i / n, j / n, 0.05 * np.sin(6 * i / n) * np.cos(5 * j / n)] for j in range(n + 1) for i in range(n + 1)])
-    quads = [[j * (n + 1) + i, j * (n + 1) + i + 1, (j + 1) * (n + 1) + i + 1, (j + 1) * (n + 1) + i] for j in range(n) for i in range(n)]
+    V = np.array([[i / n, j / n, 0.05 * np.sin(6 * i / n) * np.cos(5 * j / n)]
+                  for j in range(n + 1) for i in range(n + 1)])
+    quads = [[j * (n + 1) + i, j * (n + 1) + i + 1, (j + 1) * (n + 1) + i + 1, (j + 1) * (n + 1) + i]
+             for j in range(n) for i in range(n)]
     return V, quads
 
 
@@ -302,9 +314,11 @@ def test_the_adapters_show_progress_unless_quiet(fandisk, capsys, monkeypatch):
     from anisotropic_fairing import _progress
     V, F = fandisk
     monkeypatch.setattr(_progress, 'DELAY', 0.0)   # as if the run lasted longer than a second
-    for call in (lambda **k: af.fair_meshio(meshio.Mesh(V, [('triangle', F)]), **k), lambda **k: af.fair_vtk(polydata(V, F), **k),
+    F_int32 = F.astype(np.int32)
+    for call in (lambda **k: af.fair_meshio(meshio.Mesh(V, [('triangle', F)]), **k),
+                 lambda **k: af.fair_vtk(polydata(V, F), **k),
                  lambda **k: af.fair_open3d(open3d.geometry.TriangleMesh(open3d.utility.Vector3dVector(V),
-                                                                         open3d.utility.Vector3iVector(F.astype(np.int32))), **k)):
+                                                                         open3d.utility.Vector3iVector(F_int32)), **k)):
         capsys.readouterr()
         call(**SETTINGS)
         assert 'anisotropic_fairing' in capsys.readouterr().err

@@ -2,10 +2,10 @@
 python_package against the package pip installed).
 
 The environment gives the package (PYTHONPATH, or none: the installed one), the command-line program
-(AF_TOOL) and the data (AF_DATA: examples/Anisotropic_fairing/data); meshes are read and written by meshio. The module must give the program's results (to 1e-12) and
-the program's report keys; bad input raises, never crashes; the GIL is released during a run; a run
-shows its progress on stderr (through tqdm: Debian python3-tqdm, and without it) unless quiet, and Ctrl-C
-ends it.
+(AF_TOOL) and the data (AF_DATA: examples/Anisotropic_fairing/data); meshes are read and written by
+meshio. The module must give the program's results (to 1e-12) and the program's report keys; bad input
+raises, never crashes; the GIL is released during a run; a run shows its progress on stderr (through
+tqdm: Debian python3-tqdm, and without it) unless quiet, and Ctrl-C ends it.
 """
 import io
 import json
@@ -80,7 +80,8 @@ def test_default_run_equals_the_program(fandisk, tmp_path):
     assert np.abs(V2 - expected).max() <= 1e-12 * scale
     assert np.array_equal(V, V0) and np.array_equal(F, F0), 'the input arrays are not modified'
     assert set(report) == set(program_report), 'the report has the keys of the program\'s JSON report'
-    for key in ('status', 'stop_reason', 'tensor', 'automatic_parameters', 'vertices', 'faces', 'noise_level', 'choices'):
+    for key in ('status', 'stop_reason', 'tensor', 'automatic_parameters', 'vertices', 'faces', 'noise_level',
+                'choices'):
         assert report[key] == program_report[key], key
     assert len(report['steps']) == len(program_report['steps']) > 0
     assert report['status'] == 'success' and report['stop_reason'] == 'noise_level'
@@ -95,8 +96,8 @@ def test_attributes_coupled_equal_the_program(fandisk, tmp_path):
                 '--steps', '3', '--stop', 'off']
     run_tool(['in.ply', 'out.ply'] + settings, tmp_path)
     expected_V, expected_q = read_ply_xyzq(tmp_path / 'out.ply')
-    V2, q2, report = af.fair(V, F, attributes=q, attribute_mode='coupled', attribute_weight=0.5, relative_time_step=1e-3,
-                             number_of_iterations=3, stopping_criteria='off')
+    V2, q2, report = af.fair(V, F, attributes=q, attribute_mode='coupled', attribute_weight=0.5,
+                             relative_time_step=1e-3, number_of_iterations=3, stopping_criteria='off')
     assert q2.shape == q.shape, 'a 1-D attribute comes back 1-D'
     assert np.abs(V2 - expected_V).max() <= 1e-12 * np.ptp(V, axis=0).max()
     assert np.abs(q2 - expected_q).max() <= 1e-12 * np.ptp(q)
@@ -108,14 +109,16 @@ def test_every_mode_and_setting_runs(fandisk):
     V, F = grid(10, lambda x, y: 0.05 * np.sin(6 * x) * np.cos(5 * y))
     C = np.column_stack([V[:, 0], V[:, 1] ** 2])
     for mode in ('separate', 'coupled', 'attributes', 'geometry'):
-        V2, C2, report = af.fair(V, F, attributes=C, attribute_mode=mode, relative_time_step=1e-3, number_of_iterations=2)
+        V2, C2, report = af.fair(V, F, attributes=C, attribute_mode=mode, relative_time_step=1e-3,
+                                 number_of_iterations=2)
         assert report['status'] == 'success' and C2.shape == C.shape
         if mode == 'attributes':
             assert np.array_equal(V2, V), 'attributes only: the geometry is not written'
         if mode == 'geometry':
             assert np.array_equal(C2, C), 'geometry only: the attributes are not written'
-    for extra in (dict(tensor='anisotropic'), dict(flow_order=4, relative_time_step=1e-4), dict(finite_element='linear'),
-                  dict(relative_maximum_deviation=0.001), dict(boundary_handling='vertices'), dict(output_positions='control'),
+    for extra in (dict(tensor='anisotropic'), dict(flow_order=4, relative_time_step=1e-4),
+                  dict(finite_element='linear'), dict(relative_maximum_deviation=0.001),
+                  dict(boundary_handling='vertices'), dict(output_positions='control'),
                   dict(tensor='uniform'), dict(linear_solver='cholesky')):
         settings = dict(relative_time_step=1e-3, number_of_iterations=2)
         settings.update(extra)
@@ -178,9 +181,12 @@ def test_bad_input_raises():
         (lambda: af.fair(V, np.vstack([F, [[0, 1, 99]]])), ValueError, 'refers to vertex 99, but V has 16 vertices'),
         (lambda: af.fair(V, np.vstack([F, [[0, -1, 2]]])), ValueError, 'refers to vertex -1'),
         (lambda: af.fair(V, F[:0]), ValueError, 'no face'),
-        (lambda: af.fair(np.where(np.arange(48).reshape(16, 3) == 7, np.nan, V), F), ValueError, 'V row 2 is not finite'),
-        (lambda: af.fair(V, F, attributes=np.zeros((5, 2))), ValueError, 'attributes must have one row per vertex (16)'),
-        (lambda: af.fair(V, F, time_step=1e-3, relative_time_step=1e-3), ValueError, 'give either time_step or relative_time_step'),
+        (lambda: af.fair(np.where(np.arange(48).reshape(16, 3) == 7, np.nan, V), F), ValueError,
+         'V row 2 is not finite'),
+        (lambda: af.fair(V, F, attributes=np.zeros((5, 2))), ValueError,
+         'attributes must have one row per vertex (16)'),
+        (lambda: af.fair(V, F, time_step=1e-3, relative_time_step=1e-3), ValueError,
+         'give either time_step or relative_time_step'),
         (lambda: af.fair(V, F, tensor='bilateral'), ValueError, 'tensor expects isotropic, anisotropic or uniform'),
         (lambda: af.fair(V, F, relative_time_step=-1), ValueError, 'relative_time_step must be positive'),
         (lambda: af.fair(V, F, lambda_=2), ValueError, 'lambda_ needs tensor anisotropic'),
@@ -199,7 +205,8 @@ def icosphere(level):
     V = [[-1, t, 0], [1, t, 0], [-1, -t, 0], [1, -t, 0], [0, -1, t], [0, 1, t], [0, -1, -t], [0, 1, -t],
          [t, 0, -1], [t, 0, 1], [-t, 0, -1], [-t, 0, 1]]
     F = [[0, 11, 5], [0, 5, 1], [0, 1, 7], [0, 7, 10], [0, 10, 11], [1, 5, 9], [5, 11, 4], [11, 10, 2], [10, 7, 6],
-         [7, 1, 8], [3, 9, 4], [3, 4, 2], [3, 2, 6], [3, 6, 8], [3, 8, 9], [4, 9, 5], [2, 4, 11], [6, 2, 10], [8, 6, 7], [9, 8, 1]]
+         [7, 1, 8], [3, 9, 4], [3, 4, 2], [3, 2, 6], [3, 6, 8], [3, 8, 9], [4, 9, 5], [2, 4, 11], [6, 2, 10],
+         [8, 6, 7], [9, 8, 1]]
     for _ in range(level):
         middle, G = {}, []
         def mid(a, b):
@@ -208,7 +215,8 @@ def icosphere(level):
                 V.append([(V[a][k] + V[b][k]) / 2 for k in range(3)])
             return middle[(min(a, b), max(a, b))]
         for a, b, c in F:
-            G += [[a, mid(a, b), mid(c, a)], [b, mid(b, c), mid(a, b)], [c, mid(c, a), mid(b, c)], [mid(a, b), mid(b, c), mid(c, a)]]
+            G += [[a, mid(a, b), mid(c, a)], [b, mid(b, c), mid(a, b)], [c, mid(c, a), mid(b, c)],
+                  [mid(a, b), mid(b, c), mid(c, a)]]
         F = G
     V = np.array(V)
     return V / np.linalg.norm(V, axis=1)[:, None], np.array(F)
@@ -295,7 +303,8 @@ def test_callback_and_gil(fandisk):
         running[0] = False
         t.join()
     assert seconds > 0.2, 'the run takes long enough to tell (%.3f s)' % seconds
-    assert during > 0.25 * rate * seconds, 'the other thread ran %d times in %.2f s (%.0f per s alone)' % (during, seconds, rate)
+    assert during > 0.25 * rate * seconds, ('the other thread ran %d times in %.2f s (%.0f per s alone)'
+                                            % (during, seconds, rate))
 
 
 def test_limit_surface():
@@ -374,7 +383,8 @@ def test_the_report_is_a_fairing_report(fandisk, tmp_path):
     assert conforms(default, af.FairingReport) and len(default['steps']) > 0
     assert seen and all(conforms(s, af.StepInfo) for s in seen)
     # the default run compares flows: each step says which run it belongs to
-    assert {s['run_name'] for s in seen} >= {'anisotropic flow', 'isotropic flow'} and seen[-1]['runs'] >= seen[-1]['run'] > 1
+    assert ({s['run_name'] for s in seen} >= {'anisotropic flow', 'isotropic flow'}
+            and seen[-1]['runs'] >= seen[-1]['run'] > 1)
     _, _, bounded = af.fair(V, F, attributes=np.column_stack([V[:, 0], V[:, 1]]), attribute_mode='coupled',
                             relative_maximum_deviation=0.002, number_of_iterations=2)
     assert conforms(bounded, af.FairingReport)

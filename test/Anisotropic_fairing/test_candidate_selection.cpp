@@ -1,4 +1,4 @@
-// The default run's choice among its candidates (internal/run/Fairing_driver.h, select_smoother) cannot be
+// The default run's choice among its candidates (internal/run/Smoother_selection.h, select_smoother) cannot be
 // fooled by a candidate that stops early: every candidate is judged by the same risk estimate, at a state
 // its own estimate can be compared at, and one that ended short of the noise level is judged, not preferred.
 //
@@ -51,24 +51,26 @@ struct Stand_in_flows
   AF::Stop_reason others_stop = AF::Stop_reason::NOISE_LEVEL;   // how the isotropic and the uniform stand-in end
   bool all_ride = false;   // every stand-in carries its probe along (else only the uniform one)
 
-  template <typename Tensor>
-  AF::Fairing_report operator()(const char* name, const Tensor&, AFI::Control_matrix& Y, int, const AFI::Control_matrix& start,
-                                AFI::Control_matrix* control, std::size_t fixed_steps = 0, AFI::Control_matrix* probe = nullptr)
+  std::size_t steps_left() const { return 100; }
+
+  AFI::Flow_outcome run(const AFI::Flow_request& request)
   {
-    calls.push_back(std::string(name) + (fixed_steps > 0 ? " (fixed)" : "") + (probe ? " (probe along)" : ""));
-    AF::Fairing_report r;
+    const bool probe = request.probe_start != nullptr || request.make_probe;
+    calls.push_back(request.name + (request.fixed_steps > 0 ? " (fixed)" : "") + (probe ? " (probe along)" : ""));
+    const bool isotropic = request.flow.tensor == AFI::Candidate_tensor::ISOTROPIC;
+    const bool uniform = request.flow.tensor == AFI::Candidate_tensor::UNIFORM;
+    AFI::Flow_outcome out;
+    AF::Fairing_report& r = out.report;
     r.steps.resize(3);
-    if(std::is_same<Tensor, AF::Isotropic_diffusion_tensor>::value) { Y = toward_sphere(start, isotropic_weight); r.stop_reason = others_stop; }
-    else if(std::is_same<Tensor, AF::Uniform_diffusion_tensor>::value) { Y = start; r.stop_reason = others_stop; }   // the probe stays
-    else { Y = toward_sphere(start, anisotropic_weight); r.stop_reason = anisotropic_stop; }
-    if(probe && !std::is_same<Tensor, AF::Uniform_diffusion_tensor>::value)
-    {
-      const bool isotropic = std::is_same<Tensor, AF::Isotropic_diffusion_tensor>::value;
-      if(all_ride) *probe = toward_sphere(*probe, isotropic ? isotropic_weight : anisotropic_weight);
-      else probe->resize(0, 0);   // only the uniform flow's rides along
-    }
-    if(control) *control = Y;
-    return r;
+    if(isotropic) { out.Y = toward_sphere(request.start, isotropic_weight); r.stop_reason = others_stop; }
+    else if(uniform) { out.Y = request.start; r.stop_reason = others_stop; }   // the probe stays
+    else { out.Y = toward_sphere(request.start, anisotropic_weight); r.stop_reason = anisotropic_stop; }
+    if(request.probe_start && uniform) out.probe = *request.probe_start;
+    else if(request.probe_start && all_ride)
+      out.probe = toward_sphere(*request.probe_start, isotropic ? isotropic_weight : anisotropic_weight);
+    // else only the uniform flow's rides along
+    if(request.may_be_kept) out.Z = out.Y;
+    return out;
   }
 };
 
@@ -81,16 +83,23 @@ struct Selection
 };
 
 // `normals` not empty: known before the first run, which carries its probe along them
-Selection select(Stand_in_flows& flows, const AFI::Ghost_layer& layer, const AFI::Control_matrix& input, const std::vector<double>& sigmas,
-                 const AFI::Control_matrix& normals = AFI::Control_matrix())
+Selection select(Stand_in_flows& flows, const AFI::Ghost_layer& layer, const AFI::Control_matrix& input,
+                 const std::vector<double>& sigmas, const AFI::Control_matrix& normals = AFI::Control_matrix())
 {
-  const AF::Anisotropic_diffusion_tensor tensor = AF::Anisotropic_diffusion_tensor::automatic();
-  Selection s;
+  AFI::Candidate_list candidates = AFI::default_candidates(2);
   AFI::Control_matrix probe;
   if(normals.size() > 0) probe = AFI::probed_input(input, normals, sigmas, AFI::risk_probe_values(std::size_t(input.rows())));
-  s.report = flows("", tensor, s.X, 2, input, &s.control, 0, normals.size() > 0 ? &probe : nullptr);
-  const std::size_t steps_left = 100;
-  AFI::select_smoother(flows, tensor, layer, input, sigmas, s.X, &s.control, s.report, s.choices, steps_left, normals, probe);
+  AFI::Flow_request first{ candidates[0].settings, "", input };
+  first.probe_start = normals.size() > 0 ? &probe : nullptr;
+  candidates[0].result = flows.run(first);
+  candidates[0].made = true;
+  AFI::Smoother_choice choice =
+    AFI::select_smoother(std::move(candidates), AFI::Selection_context{ layer, input, sigmas, normals }, flows);
+  Selection s;
+  s.report = choice.kept.result.report;
+  s.X = choice.kept.result.Y;
+  s.control = choice.kept.result.Z;
+  s.choices = choice.choices;
   return s;
 }
 

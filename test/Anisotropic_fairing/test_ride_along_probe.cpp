@@ -61,13 +61,17 @@ Result run(const Setup& m, const AFI::Ghosted_patch_cache& cache, const AFI::Noi
   s.maximum_deviation = deviation;
   const std::size_t n = std::size_t(m.X.rows());
   const std::vector<bool> constrained(n, false), border(n, false);
-  Result r;
-  r.Y = m.X;
-  double setup_seconds = 0, limit_weight = 1;
   const auto callback = [](const AF::Fairing_step&) { return true; };
   auto cb = callback;
-  r.report = AFI::run_stepper(cache, m.ordering, m.components, m.component_edge, m.mean_edge, r.Y, AF::Attribute_mode::GEOMETRY_ONLY,
-                              constrained, border, tensor, s, cb, setup_seconds, limit_weight, probe, probe ? &r.probe : nullptr);
+  const AFI::Flow_context<AFI::Ghosted_patch_cache> context{ cache, m.ordering, m.components, m.component_edge, m.mean_edge,
+                                                            AF::Attribute_mode::GEOMETRY_ONLY, constrained, border };
+  AFI::Probe_plan plan;
+  plan.start = probe;
+  AFI::Stepper_outcome o = AFI::run_stepper(context, tensor, s, m.X, plan, cb);
+  Result r;
+  r.report = o.report;
+  r.Y = o.Y;
+  r.probe = o.probe;
   return r;
 }
 

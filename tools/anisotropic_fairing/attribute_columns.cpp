@@ -23,14 +23,16 @@ bool add_numeric_column(Mesh& mesh, const std::string& name, std::vector<Attribu
     bool found = false;
     std::tie(map, found) = mesh.property_map<Vertex_index, T>("v:" + name);
     if(!found) return false;
-    columns.push_back({name, [map](Vertex_index v) { return double(get(map, v)); },
-                       [map](Vertex_index v, double x) { put(map, v, AF::Vector_attribute_traits<T>::make(get(map, v), &x)); }});
+    columns.push_back(
+      { name, [map](Vertex_index v) { return double(get(map, v)); },
+        [map](Vertex_index v, double x) { put(map, v, AF::Vector_attribute_traits<T>::make(get(map, v), &x)); } });
     return true;
   });
 }
 
 // Channel c (0 red .. 3 alpha) of v:color; the others are kept.
-Attribute_column color_column(Mesh::Property_map<Vertex_index, CGAL::IO::Color> map, const std::string& name, std::size_t c)
+Attribute_column color_column(Mesh::Property_map<Vertex_index, CGAL::IO::Color> map, const std::string& name,
+                              std::size_t c)
 {
   return {name, [map, c](Vertex_index v) { return double(get(map, v)[c]); },
           [map, c](Vertex_index v, double x) {
@@ -83,11 +85,13 @@ std::vector<Attribute_column> resolve_attributes(Mesh& mesh, const Input_info& i
   {
     const std::string what = "--attributes " + name + ": ";
     if(name == "x" || name == "y" || name == "z")
-      fail("attribute_error", what + "a vertex coordinate, not an attribute (--mode says whether the geometry is faired)");
+      fail("attribute_error",
+           what + "a vertex coordinate, not an attribute (--mode says whether the geometry is faired)");
     if(name == "nx" || name == "ny" || name == "nz" || name == "normal")
       fail("attribute_error", what + "vertex normals are not faired: the normals of the faired surface are written");
     if(add_numeric_column(mesh, name, columns)) continue;
-    if(has_color && (name == "red" || name == "green" || name == "blue" || name == "color" || (name == "alpha" && info.vertex_alpha)))
+    if(has_color && (name == "red" || name == "green" || name == "blue" || name == "color" ||
+                     (name == "alpha" && info.vertex_alpha)))
     {
       if(name == "red" || name == "color") columns.push_back(color_column(color, "red", 0));
       if(name == "green" || name == "color") columns.push_back(color_column(color, "green", 1));
@@ -114,7 +118,8 @@ std::vector<Attribute_column> resolve_attributes(Mesh& mesh, const Input_info& i
   return columns;
 }
 
-void gather(const Mesh& mesh, const std::vector<Attribute_column>& columns, std::vector<std::vector<double>>& values, bool faired)
+void gather(const Mesh& mesh, const std::vector<Attribute_column>& columns, std::vector<std::vector<double>>& values,
+            bool faired)
 {
   values.assign(mesh.num_vertices(), std::vector<double>(columns.size()));
   for(Vertex_index v : mesh.vertices())
@@ -123,13 +128,15 @@ void gather(const Mesh& mesh, const std::vector<Attribute_column>& columns, std:
       const double x = columns[c].get(v);
       // a property that is not faired may hold anything (it is written as it was); a faired one may not
       if(faired && !std::isfinite(x))
-        fail("attribute_error", "--attributes " + columns[c].name + ": vertex " + std::to_string(std::size_t(v)) + " holds " +
-                                (std::isnan(x) ? "NaN" : "an infinite value") + ", which cannot be faired");
+        fail("attribute_error", "--attributes " + columns[c].name + ": vertex " + std::to_string(std::size_t(v)) +
+                                  " holds " + (std::isnan(x) ? "NaN" : "an infinite value") +
+                                  ", which cannot be faired");
       values[std::size_t(v)][c] = x;
     }
 }
 
-void scatter(const Mesh& mesh, const std::vector<Attribute_column>& columns, const std::vector<std::vector<double>>& values)
+void scatter(const Mesh& mesh, const std::vector<Attribute_column>& columns,
+             const std::vector<std::vector<double>>& values)
 {
   for(Vertex_index v : mesh.vertices())
     for(std::size_t c = 0; c < columns.size(); ++c) columns[c].set(v, values[std::size_t(v)][c]);

@@ -47,7 +47,8 @@ struct Attribute_vectors
 // (attribute_error, naming the attribute and the vertex); otherwise they are read as they are.
 void gather(const Mesh& mesh, const std::vector<Attribute_column>& columns, std::vector<std::vector<double>>& values,
             bool faired = true);
-void scatter(const Mesh& mesh, const std::vector<Attribute_column>& columns, const std::vector<std::vector<double>>& values);
+void scatter(const Mesh& mesh, const std::vector<Attribute_column>& columns,
+             const std::vector<std::vector<double>>& values);
 
 } // namespace af_tool
 

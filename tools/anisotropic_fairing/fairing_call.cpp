@@ -5,9 +5,11 @@
 
 namespace af_tool {
 
-AF::Fairing_report fair_with_options(Mesh& mesh, const Options& o, AF::Attribute_mode mode, const Attribute_vectors& attributes,
-                                     std::vector<std::vector<double>>& attribute_controls, std::vector<Point>& control_points,
-                                     std::vector<unsigned char>& held, const Step_callback& callback)
+AF::Fairing_report fair_with_options(Mesh& mesh, const Options& o, AF::Attribute_mode mode,
+                                     const Attribute_vectors& attributes,
+                                     std::vector<std::vector<double>>& attribute_controls,
+                                     std::vector<Point>& control_points, std::vector<unsigned char>& held,
+                                     const Step_callback& callback)
 {
   AF::Fairing_options options = o.fairing;
   options.attribute_mode = mode;

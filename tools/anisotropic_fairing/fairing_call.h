@@ -21,9 +21,11 @@ typedef std::function<bool(const AF::Fairing_step&)> Step_callback;
 // faired). Gives back the faired control points and the attributes' control values (one entry per vertex;
 // `attribute_controls` sized like the attribute vectors); `held[v]` != 0 holds vertex v. Throws
 // AF::Input_error as the library does.
-AF::Fairing_report fair_with_options(Mesh& mesh, const Options& o, AF::Attribute_mode mode, const Attribute_vectors& attributes,
-                                     std::vector<std::vector<double>>& attribute_controls, std::vector<Point>& control_points,
-                                     std::vector<unsigned char>& held, const Step_callback& callback);
+AF::Fairing_report fair_with_options(Mesh& mesh, const Options& o, AF::Attribute_mode mode,
+                                     const Attribute_vectors& attributes,
+                                     std::vector<std::vector<double>>& attribute_controls,
+                                     std::vector<Point>& control_points, std::vector<unsigned char>& held,
+                                     const Step_callback& callback);
 
 } // namespace af_tool
 

@@ -33,7 +33,8 @@ std::size_t read_held_vertices(const Mesh& mesh, const std::string& spec, std::v
   {
     std::ifstream in(spec);
     if(!in)
-      fail("input_error", "--hold " + spec + ": neither a numeric vertex property of the input nor a readable file of vertex indices");
+      fail("input_error",
+           "--hold " + spec + ": neither a numeric vertex property of the input nor a readable file of vertex indices");
     std::string line;
     for(std::size_t number = 1; std::getline(in, line); ++number)
     {
@@ -44,10 +45,12 @@ std::size_t read_held_vertices(const Mesh& mesh, const std::string& spec, std::v
       long long index = -1;
       try { index = std::stoll(word, &used); } catch(...) { used = 0; }
       if(used != word.size() || (words >> extra))
-        fail("input_error", "--hold " + spec + ", line " + std::to_string(number) + ": '" + line + "' is not one vertex index");
+        fail("input_error",
+             "--hold " + spec + ", line " + std::to_string(number) + ": '" + line + "' is not one vertex index");
       if(index < 0 || std::size_t(index) >= held.size())
-        fail("input_error", "--hold " + spec + ", line " + std::to_string(number) + ": vertex " + word + " does not exist (the input has " +
-                            std::to_string(held.size()) + " vertices, numbered from 0)");
+        fail("input_error", "--hold " + spec + ", line " + std::to_string(number) + ": vertex " + word +
+                              " does not exist (the input has " + std::to_string(held.size()) +
+                              " vertices, numbered from 0)");
       held[std::size_t(index)] = 1;
     }
   }

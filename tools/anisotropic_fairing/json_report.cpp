@@ -23,20 +23,18 @@ Json known(bool is_known, const T& value) { return is_known ? Json(value) : Json
 Json number(double x) { return std::isfinite(x) ? Json(x) : Json(nullptr); }
 
 const char* element_name(AF::Finite_element e) { return e == AF::Finite_element::LOOP ? "loop" : "linear"; }
-const char* output_name(AF::Output_positions p) { return p == AF::Output_positions::LIMIT_SURFACE ? "limit" : "control"; }
+const char* output_name(AF::Output_positions p)
+{
+  return p == AF::Output_positions::LIMIT_SURFACE ? "limit" : "control";
+}
 const char* solver_name(AF::Linear_solver s)
 {
   return s == AF::Linear_solver::AUTOMATIC ? "auto" : s == AF::Linear_solver::CHOLESKY ? "cholesky" : "cg";
 }
 
-} // namespace
-
-std::string report_json(const Options& o, const Run_record& r, double wall_seconds)
+// what was read, and what was changed in it for the run
+void add_input(Json& j, const Options& o, const Run_record& r)
 {
-  const AF::Fairing_report& f = r.report;
-  const bool ran = r.fairing_ran;
-  const double scale2 = f.scale * f.scale;
-  Json j;
   j["status"] = r.status;
   j["message"] = r.message;
   j["input"] = known(!o.input.empty(), o.input);
@@ -46,23 +44,40 @@ std::string report_json(const Options& o, const Run_record& r, double wall_secon
   j["input_changes"] = r.input_changes;
   j["split_vertices"] = known(r.mesh_read, r.split_vertices);
   j["triangulated_faces"] = known(r.mesh_read, r.triangulated_faces);
+}
+
+// The tensor the run used: with automatic parameters the package keeps the anisotropic, the isotropic or
+// the uniform result (selected_tensor). Its values as the run used them (chosen from the mesh when
+// automatic), in units of l, l^2 and 1/length.
+void add_tensor(Json& j, const Options& o, const Run_record& r)
+{
+  const AF::Fairing_report& f = r.report;
+  const bool ran = r.fairing_ran;
   const AF::Fairing_options& given = o.fairing;
   j["element"] = element_name(given.finite_element);
   j["output_positions"] = output_name(given.output_positions);
-  // the tensor the run used: with automatic parameters the package keeps the anisotropic, the
-  // isotropic or the uniform result (selected_tensor)
   const AF::Package_diffusion_tensor start = given.diffusion_tensor_or_default();
   const auto* anisotropic = std::get_if<AF::Anisotropic_diffusion_tensor>(&start);
   const bool isotropic_kept = ran && (f.selected_tensor == "isotropic" || f.selected_tensor == "uniform");
-  j["tensor"] = std::holds_alternative<AF::Uniform_diffusion_tensor>(start) || (ran && f.selected_tensor == "uniform") ? "uniform"
+  j["tensor"] = std::holds_alternative<AF::Uniform_diffusion_tensor>(start) || (ran && f.selected_tensor == "uniform")
+                  ? "uniform"
                 : anisotropic && !isotropic_kept ? "anisotropic" : "isotropic";
-  // the values the run used (chosen from the mesh when automatic), in units of l, l^2 and 1/length
   const bool chosen = automatic_tensor(given);
   const bool lambda_known = anisotropic && !isotropic_kept && (!chosen || ran);
   j["lambda"] = lambda_known ? number(chosen ? f.feature_threshold * f.scale : anisotropic->lambda()) : Json(nullptr);
   j["lambda_model_units"] = lambda_known && ran && f.scale > 0 ? number(f.feature_threshold) : Json(nullptr);
-  j["epsilon"] = lambda_known ? number(chosen ? f.prefilter_time / scale2 : anisotropic->epsilon()) : Json(nullptr);
+  j["epsilon"] = lambda_known ? number(chosen ? f.prefilter_time / (f.scale * f.scale) : anisotropic->epsilon())
+                              : Json(nullptr);
   j["tangential_motion"] = anisotropic && !isotropic_kept && anisotropic->normal_motion_only() ? "removed" : "kept";
+}
+
+// the solver, the stop and the time step, as the run used them or else as given
+void add_stepping(Json& j, const Options& o, const Run_record& r)
+{
+  const AF::Fairing_report& f = r.report;
+  const bool ran = r.fairing_ran;
+  const double scale2 = f.scale * f.scale;
+  const AF::Fairing_options& given = o.fairing;
   j["solver"] = ran ? Json(f.used_cholesky ? "cholesky" : "cg") : Json(nullptr);
   j["requested_solver"] = solver_name(given.linear_solver);
   j["stop"] = o.stop;
@@ -74,10 +89,20 @@ std::string report_json(const Options& o, const Run_record& r, double wall_secon
   j["relative_time_step"] = ran && scale2 > 0 ? number(f.time_step / std::pow(scale2, f.flow_order / 2))
                             : given.relative_time_step ? number(*given.relative_time_step) : Json(nullptr);
   j["scale"] = ran ? number(f.scale) : Json(nullptr);
-  j["fidelity_weight"] = ran ? number(f.fidelity_weight) : given.fidelity_weight ? number(*given.fidelity_weight) : Json(nullptr);
+  j["fidelity_weight"] = ran ? number(f.fidelity_weight)
+                         : given.fidelity_weight ? number(*given.fidelity_weight) : Json(nullptr);
   j["relative_fidelity_weight"] = ran ? number(f.fidelity_weight * scale2)
-                                  : given.relative_fidelity_weight ? number(*given.relative_fidelity_weight) : Json(nullptr);
+                                  : given.relative_fidelity_weight ? number(*given.relative_fidelity_weight)
+                                                                   : Json(nullptr);
   j["mean_edge_length"] = ran ? number(f.mean_edge_length) : Json(nullptr);
+}
+
+// what was written besides the positions, the attributes, and the vertices held
+void add_written(Json& j, const Options& o, const Run_record& r)
+{
+  const AF::Fairing_report& f = r.report;
+  const bool ran = r.fairing_ran;
+  const AF::Fairing_options& given = o.fairing;
   j["normals"] = r.normals;
   j["curvature"] = r.curvature;
   j["hold"] = o.hold.empty() ? Json(nullptr) : Json(o.hold);
@@ -90,14 +115,22 @@ std::string report_json(const Options& o, const Run_record& r, double wall_secon
   j["attributes"] = o.attributes;
   j["attribute_dimension"] = known(ran, f.attribute_dimension);
   j["attribute_weight"] = number(given.attribute_weight);
-  j["boundary_handling"] = given.boundary_handling == AF::Boundary_handling::HOLD_BOUNDARY_CURVE ? "curve" : "vertices";
+  j["boundary_handling"] =
+      given.boundary_handling == AF::Boundary_handling::HOLD_BOUNDARY_CURVE ? "curve" : "vertices";
   j["boundary_vertices"] = known(ran, f.boundary_vertices);
   j["boundary_held_vertices"] = known(ran, f.boundary_held_vertices);
   j["boundary_loops"] = known(ran, f.boundary_loops);
   j["isolated_vertices"] = known(ran, f.isolated_vertices);
   j["constrained_vertices"] = known(ran, f.constrained_vertices);
+}
+
+// why the run stopped, and what it chose and estimated on the way
+void add_outcome(Json& j, const Options& o, const Run_record& r)
+{
+  const AF::Fairing_report& f = r.report;
+  const bool ran = r.fairing_ran;
   j["stop_reason"] = ran ? Json(AF::to_string(f.stop_reason)) : Json(nullptr);
-  j["automatic_parameters"] = given.automatic_parameters();
+  j["automatic_parameters"] = o.fairing.automatic_parameters();
   j["choices"] = known(ran, f.choices);
   j["noise_level"] = ran ? number(f.noise_level) : Json(nullptr);
   j["noise_deviation"] = ran ? number(f.noise_deviation) : Json(nullptr);
@@ -106,32 +139,57 @@ std::string report_json(const Options& o, const Run_record& r, double wall_secon
   j["limit_weight"] = ran ? number(f.limit_weight) : Json(nullptr);
   j["components"] = known(ran, f.components);
   j["rejected_steps"] = known(ran, f.rejected_steps);
-  // the bounds the run used, model units (and in units of l), and the largest deviations written
-  j["absolute_maximum_deviation"] = ran ? (f.absolute_maximum_deviation > 0 ? number(f.absolute_maximum_deviation) : Json(nullptr))
-                                    : given.absolute_maximum_deviation ? number(*given.absolute_maximum_deviation) : Json(nullptr);
-  j["maximum_deviation"] = j["absolute_maximum_deviation"];   // deprecated: the library's maximum_deviation is the relative bound
-  j["relative_maximum_deviation"] = given.relative_maximum_deviation.value_or(0) > 0 ? number(*given.relative_maximum_deviation)
-                                    : ran && f.absolute_maximum_deviation > 0 && f.scale > 0 ? number(f.absolute_maximum_deviation / f.scale) : Json(nullptr);
+}
+
+// the bounds the run used, model units (and in units of l), and the largest deviations written
+void add_deviations(Json& j, const Options& o, const Run_record& r)
+{
+  const AF::Fairing_report& f = r.report;
+  const bool ran = r.fairing_ran;
+  const AF::Fairing_options& given = o.fairing;
+  j["absolute_maximum_deviation"] =
+      ran ? (f.absolute_maximum_deviation > 0 ? number(f.absolute_maximum_deviation) : Json(nullptr))
+          : given.absolute_maximum_deviation ? number(*given.absolute_maximum_deviation) : Json(nullptr);
+  // deprecated: the library's maximum_deviation is the relative bound
+  j["maximum_deviation"] = j["absolute_maximum_deviation"];
+  j["relative_maximum_deviation"] =
+      given.relative_maximum_deviation.value_or(0) > 0 ? number(*given.relative_maximum_deviation)
+      : ran && f.absolute_maximum_deviation > 0 && f.scale > 0 ? number(f.absolute_maximum_deviation / f.scale)
+                                                               : Json(nullptr);
   j["largest_deviation"] = ran ? number(f.largest_deviation) : Json(nullptr);
-  j["attribute_maximum_deviation"] = given.attribute_maximum_deviation > 0 ? number(given.attribute_maximum_deviation) : Json(nullptr);
-  j["largest_attribute_deviation"] = ran && f.attribute_dimension > 0 ? number(f.largest_attribute_deviation) : Json(nullptr);
+  j["attribute_maximum_deviation"] =
+      given.attribute_maximum_deviation > 0 ? number(given.attribute_maximum_deviation) : Json(nullptr);
+  j["largest_attribute_deviation"] = ran && f.attribute_dimension > 0 ? number(f.largest_attribute_deviation)
+                                                                      : Json(nullptr);
   j["bound_fidelity_weight"] = ran ? number(f.bound_fidelity_weight) : Json(nullptr);
   j["bound_held_vertices"] = known(ran, f.bound_held_vertices);
   j["bound_uniform_weight"] = ran ? number(f.bound_uniform_weight) : Json(nullptr);
   j["bound_retaken_steps"] = known(ran, f.bound_retaken_steps);
   j["clamped_vertices"] = known(ran, f.clamped_vertices);
-  j["initial"] = ran ? Json{ { "area", number(f.initial.area) }, { "energy", number(f.initial.energy) },
-                             { "H_integral", number(f.initial.H_integral) } }
-                     : Json(nullptr);
+}
+
+void add_steps(Json& j, const Run_record& r)
+{
+  const AF::Fairing_report& f = r.report;
+  j["initial"] = r.fairing_ran ? Json{ { "area", number(f.initial.area) }, { "energy", number(f.initial.energy) },
+                                       { "H_integral", number(f.initial.H_integral) } }
+                               : Json(nullptr);
   Json steps = Json::array();
   for(const AF::Fairing_step& s : f.steps)
     steps.push_back({ { "step", s.step }, { "time", number(s.time) }, { "solver_iterations", s.solver_iterations },
                       { "residual", number(s.residual) }, { "area", number(s.area) }, { "energy", number(s.energy) },
                       { "H_integral", number(s.H_integral) }, { "max_displacement", number(s.max_displacement) },
-                      { "step_displacement", number(s.step_displacement) }, { "assemble_seconds", number(s.assemble_seconds) },
+                      { "step_displacement", number(s.step_displacement) },
+                      { "assemble_seconds", number(s.assemble_seconds) },
                       { "solve_seconds", number(s.solve_seconds) }, { "direct_solve", s.direct_solve },
                       { "time_step", number(s.time_step) }, { "noise_displacement", number(s.noise_displacement) } });
   j["steps"] = std::move(steps);
+}
+
+void add_times(Json& j, const Run_record& r, double wall_seconds)
+{
+  const AF::Fairing_report& f = r.report;
+  const bool ran = r.fairing_ran;
   j["read_seconds"] = r.mesh_read ? number(r.read_seconds) : Json(nullptr);
   j["input_seconds"] = ran ? number(f.input_seconds) : Json(nullptr);
   j["setup_seconds"] = ran ? number(f.setup_seconds) : Json(nullptr);
@@ -139,6 +197,21 @@ std::string report_json(const Options& o, const Run_record& r, double wall_secon
   j["total_seconds"] = ran ? number(f.total_seconds) : Json(nullptr);
   j["write_seconds"] = r.output_written ? number(r.write_seconds) : Json(nullptr);
   j["wall_seconds"] = number(wall_seconds);
+}
+
+} // namespace
+
+std::string report_json(const Options& o, const Run_record& r, double wall_seconds)
+{
+  Json j;   // the keys in the order of the calls: the order --help lists and the manual documents
+  add_input(j, o, r);
+  add_tensor(j, o, r);
+  add_stepping(j, o, r);
+  add_written(j, o, r);
+  add_outcome(j, o, r);
+  add_deviations(j, o, r);
+  add_steps(j, r);
+  add_times(j, r, wall_seconds);
   // bytes that are not UTF-8 (a path, a message quoting the input) are replaced rather than refused
   return j.dump(2, ' ', false, Json::error_handler_t::replace) + "\n";
 }

@@ -26,22 +26,24 @@ void check_count(const std::string& path, const std::string& what, unsigned long
                  std::size_t bytes, std::size_t each)
 {
   if(each > 0 && count > bytes / each)
-    throw File_problem(path + ": " + what + " " + std::to_string(count) + " " + unit + ", more than the " + std::to_string(bytes) +
-                       " bytes left in the file can hold (at least " + std::to_string(each) + " each)");
+    throw File_problem(path + ": " + what + " " + std::to_string(count) + " " + unit + ", more than the " +
+                       std::to_string(bytes) + " bytes left in the file can hold (at least " + std::to_string(each) +
+                       " each)");
 }
 
 void add_face(Polygon_soup& soup, const std::vector<long long>& index, std::size_t vertices, const std::string& place,
               const std::string& path)
 {
   if(index.size() < 3)
-    throw File_problem(path + " " + place + ": a face of " + std::to_string(index.size()) + " vertices (at least 3 are needed)");
+    throw File_problem(path + " " + place + ": a face of " + std::to_string(index.size()) +
+                       " vertices (at least 3 are needed)");
   std::vector<std::size_t> face;
   face.reserve(index.size());
   for(long long i : index)
   {
     if(i < 0 || static_cast<unsigned long long>(i) >= vertices)
-      throw File_problem(path + " " + place + ": the face refers to vertex " + std::to_string(i) + ", but the file has " +
-                         std::to_string(vertices) + " vertices" +
+      throw File_problem(path + " " + place + ": the face refers to vertex " + std::to_string(i) +
+                         ", but the file has " + std::to_string(vertices) + " vertices" +
                          (vertices > 0 ? " (0.." + std::to_string(vertices - 1) + ")" : std::string()));
     face.push_back(std::size_t(i));
   }
@@ -64,9 +66,15 @@ Polygon_soup read_binary_off(const std::string& path, const std::string& text, s
   Polygon_soup soup;
   std::size_t at = start;
   auto need = [&](std::size_t bytes, const std::string& what) {
-    if(bytes > text.size() - at) throw File_problem(path + ": the file ends inside " + what + " (byte " + std::to_string(at) + ")");
+    if(bytes > text.size() - at)
+      throw File_problem(path + ": the file ends inside " + what + " (byte " + std::to_string(at) + ")");
   };
-  auto u32 = [&](const std::string& what) { need(4, what); const std::uint32_t v = big_endian_u32(text, at); at += 4; return v; };
+  auto u32 = [&](const std::string& what) {
+    need(4, what);
+    const std::uint32_t v = big_endian_u32(text, at);
+    at += 4;
+    return v;
+  };
   auto f32 = [&](const std::string& what) {
     const std::uint32_t bits = u32(what);
     float f;
@@ -74,7 +82,8 @@ Polygon_soup read_binary_off(const std::string& path, const std::string& text, s
     return double(f);
   };
   const std::uint32_t nv = u32("the counts"), nf = u32("the counts");
-  if(u32("the counts") > 1073741823u) throw File_problem(path + ": the edge count is out of range (0..2^30-1)");   // CGAL doubles it in an int
+  if(u32("the counts") > 1073741823u)
+    throw File_problem(path + ": the edge count is out of range (0..2^30-1)"); // CGAL doubles it in an int
   const std::size_t per_vertex = std::size_t(dim) + (normals ? 3 : 0) + (colors ? 4 : 0) + (texcoords ? 2 : 0);
   check_count(path, "the header declares", nv, "vertices", text.size() - at, 4 * per_vertex);
   check_count(path, "the header declares", nf, "faces", text.size() - at, 8);
@@ -88,7 +97,8 @@ Polygon_soup read_binary_off(const std::string& path, const std::string& text, s
     for(int k = 0; k < 3; ++k)
     {
       const double x = dim == 4 ? c[k] / c[3] : c[k];
-      if(!std::isfinite(x)) throw File_problem(path + ": vertex " + std::to_string(v) + " has a coordinate that is not a finite number");
+      if(!std::isfinite(x))
+        throw File_problem(path + ": vertex " + std::to_string(v) + " has a coordinate that is not a finite number");
       soup.points[v][std::size_t(k)] = x;
     }
   }
@@ -100,7 +110,8 @@ Polygon_soup read_binary_off(const std::string& path, const std::string& text, s
     need(std::size_t(k) * 4, what);
     index.resize(k);
     for(std::uint32_t i = 0; i < k; ++i) index[i] = static_cast<std::int32_t>(u32(what));
-    if(u32(what) != 0) throw File_problem(path + ": " + what + " has a colour: binary OFF with colours is not supported");
+    if(u32(what) != 0)
+      throw File_problem(path + ": " + what + " has a colour: binary OFF with colours is not supported");
     add_face(soup, index, nv, what, path);
   }
   return soup;
@@ -109,13 +120,16 @@ Polygon_soup read_binary_off(const std::string& path, const std::string& text, s
 // An OFF colour: one colour-map index, or red, green, blue (and alpha) either as integers 0..255 or, if
 // one of them is written with a point or an exponent, as numbers in [0, 1]. CGAL 5.5 casts them to bytes
 // unchecked (510 or a negative index is undefined behaviour there), so anything else is refused.
-void check_off_color(const Text_lines& lines, const std::vector<std::string_view>& t, std::size_t first, const std::string& what)
+void check_off_color(const Text_lines& lines, const std::vector<std::string_view>& t, std::size_t first,
+                     const std::string& what)
 {
   const std::size_t n = t.size() - first;
   if(n == 0) return;
-  if(n != 1 && n != 3 && n != 4) lines.fail(what + " has a colour of " + std::to_string(n) + " numbers (1, 3 or 4 expected)");
+  if(n != 1 && n != 3 && n != 4)
+    lines.fail(what + " has a colour of " + std::to_string(n) + " numbers (1, 3 or 4 expected)");
   bool fractions = false;
-  for(std::size_t k = first; k < t.size(); ++k) fractions = fractions || t[k].find_first_of(".eE") != std::string_view::npos;
+  for(std::size_t k = first; k < t.size(); ++k)
+    fractions = fractions || t[k].find_first_of(".eE") != std::string_view::npos;
   for(std::size_t k = first; k < t.size(); ++k)
   {
     if(n > 1 && fractions)
@@ -131,34 +145,55 @@ void check_off_color(const Text_lines& lines, const std::vector<std::string_view
   }
 }
 
-} // namespace
-
-Polygon_soup read_checked_off(const std::string& path, const std::string& text)
+// What the header line of an OFF file declares.
+struct Off_header
 {
-  Text_lines lines(text, path);
-  std::vector<std::string_view> t;
-  if(!lines.next(t)) throw File_problem(path + ": the file is empty");
-  // CGAL 5.5 reads a '#' on the header line neither as a comment nor as an error (it may then take
-  // binary counts from the text): the header line holds the keyword and the counts or BINARY only
-  {
-    std::size_t begin = 0;
-    for(std::size_t k = 1; k < lines.line(); ++k) begin = text.find('\n', begin) + 1;
-    const std::size_t end = text.find('\n', begin);
-    if(text.substr(begin, end == std::string::npos ? std::string::npos : end - begin).find('#') != std::string::npos)
-      lines.fail("a '#' on the header line (write comments on lines of their own)");
-  }
-  // [ST][C][N][4][n]OFF: texture coordinates, colours, normals, homogeneous coordinates, dimension
-  const std::string t0(t[0]);
+  std::string keyword;   // as written, for the messages
+  bool texcoords = false, colors = false, normals = false, homogeneous = false, any_dim = false;
+  bool binary = false;   // the counts and the rest follow in binary
+  int dim = 3;
+  long long vertices = 0, faces = 0;
+
+  // the numbers of a vertex line that are not colours
+  std::size_t texcoord_numbers() const { return texcoords ? (homogeneous ? 3 : 2) : 0; }
+};
+
+// CGAL 5.5 reads a '#' on the header line neither as a comment nor as an error (it may then take binary
+// counts from the text): the header line holds the keyword and the counts or BINARY only.
+void check_header_line_has_no_comment(const Text_lines& lines, const std::string& text)
+{
+  std::size_t begin = 0;
+  for(std::size_t k = 1; k < lines.line(); ++k) begin = text.find('\n', begin) + 1;
+  const std::size_t end = text.find('\n', begin);
+  if(text.substr(begin, end == std::string::npos ? std::string::npos : end - begin).find('#') != std::string::npos)
+    lines.fail("a '#' on the header line (write comments on lines of their own)");
+}
+
+// [ST][C][N][4][n]OFF: texture coordinates, colours, normals, homogeneous coordinates, dimension
+void read_off_keyword(const Text_lines& lines, const std::vector<std::string_view>& t, Off_header& h)
+{
+  h.keyword = std::string(t[0]);
   std::string_view key = t[0];
   const auto flag = [&](std::string_view prefix) {
     if(key.substr(0, prefix.size()) != prefix) return false;
     key.remove_prefix(prefix.size());
     return true;
   };
-  const bool texcoords = flag("ST"), colors = flag("C"), normals = flag("N"), homogeneous = flag("4"), any_dim = flag("n");
+  h.texcoords = flag("ST");
+  h.colors = flag("C");
+  h.normals = flag("N");
+  h.homogeneous = flag("4");
+  h.any_dim = flag("n");
   if(key != "OFF") lines.fail("the header " + quoted_excerpt(t[0]) + " is not an OFF keyword ([ST][C][N][4][n]OFF)");
+  h.dim = h.homogeneous ? 4 : 3;
+  h.binary = t.size() > 1 && t[1] == "BINARY";
+}
+
+// The dimension (nOFF) and the counts, on the header line or the lines after it.
+void read_off_counts(Text_lines& lines, std::vector<std::string_view>& t, const std::string& path,
+                     const std::string& text, Off_header& h)
+{
   std::size_t used = 1;
-  int dim = homogeneous ? 4 : 3;
   const auto next_number = [&](const char* what) {
     if(used >= t.size())
     {
@@ -167,88 +202,133 @@ Polygon_soup read_checked_off(const std::string& path, const std::string& text)
     }
     return lines.integer(t[used++], what);
   };
-  if(t.size() > 1 && t[1] == "BINARY")
-  {
-    // CGAL 5.5 casts binary colours to bytes unchecked and its count of their floats is not Geomview's
-    if(any_dim || colors) lines.fail("binary " + std::string(t[0]) + " is not supported (only binary OFF without colours)");
-    const std::size_t start = text.find('\n') + 1;
-    return read_binary_off(path, text, start, dim, normals, colors, texcoords);
-  }
-  if(any_dim)
+  if(h.any_dim)
   {
     const long long n = next_number("the dimension");
     if(n != 3) lines.fail("an nOFF file of dimension " + std::to_string(n) + " (only 3 is a surface in space)");
   }
-  const long long nv = next_number("the vertex count"), nf = next_number("the face count");
+  h.vertices = next_number("the vertex count");
+  h.faces = next_number("the face count");
   // the edge count means nothing to a reader, but CGAL 5.5 reads it wherever it is (on the next line if
   // need be, taking a coordinate for it) and doubles it in an int
   const long long ne = next_number("the edge count");
   if(ne < 0 || ne > 1073741823) lines.fail("the edge count " + std::to_string(ne) + " is out of range (0..2^30-1)");
   if(used < t.size()) lines.fail("unexpected " + quoted_excerpt(t[used]) + " after the counts");
-  if(nv < 0 || nf < 0) lines.fail("negative counts");
-  check_count(path, "the header declares", static_cast<unsigned long long>(nv), "vertices", text.size(), 2 * std::size_t(dim));
-  check_count(path, "the header declares", static_cast<unsigned long long>(nf), "faces", text.size(), 8);
+  if(h.vertices < 0 || h.faces < 0) lines.fail("negative counts");
+  check_count(path, "the header declares", static_cast<unsigned long long>(h.vertices), "vertices", text.size(),
+              2 * std::size_t(h.dim));
+  check_count(path, "the header declares", static_cast<unsigned long long>(h.faces), "faces", text.size(), 8);
+}
 
-  Polygon_soup soup;
+// The colour of vertex `v`, between its normal and its texture coordinates; returns its count of numbers.
+std::size_t check_vertex_color(const Text_lines& lines, const std::vector<std::string_view>& t, const Off_header& h,
+                               long long v, std::size_t color_begin, std::size_t color_end)
+{
+  if(color_end < color_begin)
+    lines.fail("vertex " + std::to_string(v) + " has too few numbers for its header's keyword");
+  // CGAL 5.5 reads three colour numbers of a COFF vertex that has none (beyond its line)
+  if(color_end == color_begin)
+    lines.fail("vertex " + std::to_string(v) + " has no colour, though the header's " + h.keyword +
+               " says every vertex has one");
+  const std::vector<std::string_view> color(t.begin() + std::ptrdiff_t(color_begin),
+                                            t.begin() + std::ptrdiff_t(color_end));
+  check_off_color(lines, color, 0, "vertex " + std::to_string(v));
+  return color_end - color_begin;
+}
+
+void read_off_vertices(Text_lines& lines, std::vector<std::string_view>& t, const std::string& path,
+                       const Off_header& h, Polygon_soup& soup)
+{
+  const long long nv = h.vertices;
   soup.points.resize(std::size_t(nv));
-  const std::size_t fixed = std::size_t(dim) * (normals ? 2 : 1) + (texcoords ? (homogeneous ? 3 : 2) : 0);
+  const std::size_t fixed = std::size_t(h.dim) * (h.normals ? 2 : 1) + h.texcoord_numbers();
   bool alpha = false;
   for(long long v = 0; v < nv; ++v)
   {
-    if(!lines.next(t)) lines.fail("the file ends after " + std::to_string(v) + " of the " + std::to_string(nv) + " vertices it declares");
-    if(t.size() < fixed) lines.fail("vertex " + std::to_string(v) + " has " + std::to_string(t.size()) + " numbers, fewer than the " +
-                                    std::to_string(fixed) + " its header's keyword needs");
+    if(!lines.next(t))
+      lines.fail("the file ends after " + std::to_string(v) + " of the " + std::to_string(nv) +
+                 " vertices it declares");
+    if(t.size() < fixed)
+      lines.fail("vertex " + std::to_string(v) + " has " + std::to_string(t.size()) + " numbers, fewer than the " +
+                 std::to_string(fixed) + " its header's keyword needs");
     double c[4] = {0, 0, 0, 1};
-    const std::size_t color_end = t.size() - (texcoords ? (homogeneous ? 3 : 2) : 0);
-    const std::size_t color_begin = std::size_t(dim) + (normals ? std::size_t(dim) : 0);
+    const std::size_t color_end = t.size() - h.texcoord_numbers();
+    const std::size_t color_begin = std::size_t(h.dim) + (h.normals ? std::size_t(h.dim) : 0);
     for(std::size_t k = 0; k < t.size(); ++k)
-      if(!colors || k < color_begin || k >= color_end)
+      if(!h.colors || k < color_begin || k >= color_end)
       {
         const double x = lines.real(t[k], "the number");
-        if(k < std::size_t(dim)) c[k] = x;
+        if(k < std::size_t(h.dim)) c[k] = x;
       }
-    if(colors)
-    {
-      if(color_end < color_begin) lines.fail("vertex " + std::to_string(v) + " has too few numbers for its header's keyword");
-      // CGAL 5.5 reads three colour numbers of a COFF vertex that has none (beyond its line)
-      if(color_end == color_begin) lines.fail("vertex " + std::to_string(v) + " has no colour, though the header's " + std::string(t0) + " says every vertex has one");
-      const std::vector<std::string_view> color(t.begin() + std::ptrdiff_t(color_begin), t.begin() + std::ptrdiff_t(color_end));
-      check_off_color(lines, color, 0, "vertex " + std::to_string(v));
-    }
+    const std::size_t color_numbers = h.colors ? check_vertex_color(lines, t, h, v, color_begin, color_end) : 0;
     for(int k = 0; k < 3; ++k)
     {
-      const double x = homogeneous ? c[k] / c[3] : c[k];
+      const double x = h.homogeneous ? c[k] / c[3] : c[k];
       if(!std::isfinite(x)) lines.fail("vertex " + std::to_string(v) + " has a coordinate that is not a finite number");
       soup.points[std::size_t(v)][std::size_t(k)] = x;
     }
-    alpha = alpha || (colors && color_end - color_begin == 4);
+    alpha = alpha || (h.colors && color_numbers == 4);
   }
-  if(alpha) soup.warnings.push_back("the alpha of the vertex colours of " + path + " is not kept (CGAL's OFF reader reads red, green and blue)");
+  if(alpha)
+    soup.warnings.push_back("the alpha of the vertex colours of " + path +
+                            " is not kept (CGAL's OFF reader reads red, green and blue)");
+}
+
+void read_off_faces(Text_lines& lines, std::vector<std::string_view>& t, const std::string& path, const Off_header& h,
+                    Polygon_soup& soup)
+{
   std::vector<long long> index;
   long long first_colored_face = -1;
-  for(long long f = 0; f < nf; ++f)
+  for(long long f = 0; f < h.faces; ++f)
   {
-    if(!lines.next(t)) lines.fail("the file ends after " + std::to_string(f) + " of the " + std::to_string(nf) + " faces it declares");
+    if(!lines.next(t))
+      lines.fail("the file ends after " + std::to_string(f) + " of the " + std::to_string(h.faces) +
+                 " faces it declares");
     const long long k = lines.integer(t[0], "the face's vertex count");
     if(k < 0 || static_cast<unsigned long long>(k) + 1 > t.size())
       lines.fail("face " + std::to_string(f) + " declares " + std::to_string(k) + " vertices but the line holds " +
                  std::to_string(t.size() - 1) + " numbers after it");
     index.resize(std::size_t(k));
     for(long long i = 0; i < k; ++i) index[std::size_t(i)] = lines.integer(t[std::size_t(i) + 1], "the vertex index");
-    if(colors)
+    if(h.colors)
     {
       check_off_color(lines, t, std::size_t(k) + 1, "face " + std::to_string(f));
       // once a face has a colour, CGAL 5.5 reads one for every later face, beyond the line if it has none
       if(t.size() > std::size_t(k) + 1 && first_colored_face < 0) first_colored_face = f;
       if(t.size() == std::size_t(k) + 1 && first_colored_face >= 0)
-        lines.fail("face " + std::to_string(f) + " has no colour, though face " + std::to_string(first_colored_face) + " has one");
+        lines.fail("face " + std::to_string(f) + " has no colour, though face " + std::to_string(first_colored_face) +
+                   " has one");
     }
     else
       for(std::size_t i = std::size_t(k) + 1; i < t.size(); ++i) lines.real(t[i], "the number");
-    add_face(soup, index, std::size_t(nv), "line " + std::to_string(lines.line()), path);
+    add_face(soup, index, std::size_t(h.vertices), "line " + std::to_string(lines.line()), path);
   }
+}
+
+} // namespace
+
+Polygon_soup read_checked_off(const std::string& path, const std::string& text)
+{
+  Text_lines lines(text, path);
+  std::vector<std::string_view> t;
+  if(!lines.next(t)) throw File_problem(path + ": the file is empty");
+  check_header_line_has_no_comment(lines, text);
+  Off_header h;
+  read_off_keyword(lines, t, h);
+  if(h.binary)
+  {
+    // CGAL 5.5 casts binary colours to bytes unchecked and its count of their floats is not Geomview's
+    if(h.any_dim || h.colors) lines.fail("binary " + h.keyword + " is not supported (only binary OFF without colours)");
+    const std::size_t start = text.find('\n') + 1;
+    return read_binary_off(path, text, start, h.dim, h.normals, h.colors, h.texcoords);
+  }
+  read_off_counts(lines, t, path, text, h);
+  Polygon_soup soup;
+  read_off_vertices(lines, t, path, h, soup);
+  read_off_faces(lines, t, path, h, soup);
   if(lines.next(t))
-    lines.fail("more lines after the " + std::to_string(nf) + " faces the header declares (is its face count wrong?)");
+    lines.fail("more lines after the " + std::to_string(h.faces) +
+               " faces the header declares (is its face count wrong?)");
   return soup;
 }
 
@@ -261,7 +341,9 @@ Polygon_soup read_checked_obj(const std::string& path, const std::string& text)
   std::istringstream in(text);
   std::string raw;
   std::size_t line = 0;
-  const auto fail = [&](const std::string& what) { throw File_problem(path + " line " + std::to_string(line) + ": " + what); };
+  const auto fail = [&](const std::string& what) {
+    throw File_problem(path + " line " + std::to_string(line) + ": " + what);
+  };
   while(std::getline(in, raw))
   {
     ++line;
@@ -321,7 +403,8 @@ Polygon_soup read_checked_stl(const std::string& path, const std::string& text)
         float x[3];
         std::memcpy(x, base + 12 * c, 12);
         if(!std::isfinite(x[0]) || !std::isfinite(x[1]) || !std::isfinite(x[2]))
-          throw File_problem(path + ": triangle " + std::to_string(f) + " has a coordinate that is not a finite number");
+          throw File_problem(path + ": triangle " + std::to_string(f) +
+                             " has a coordinate that is not a finite number");
         corners.push_back({double(x[0]), double(x[1]), double(x[2])});
       }
       places.push_back("triangle " + std::to_string(f));
@@ -332,7 +415,8 @@ Polygon_soup read_checked_stl(const std::string& path, const std::string& text)
     Text_lines lines(text, path, false);
     std::vector<std::string_view> t;
     if(!lines.next(t) || t[0] != "solid")
-      throw File_problem(path + ": neither an ASCII STL file (starting with 'solid') nor a binary one (84 + 50 n bytes)");
+      throw File_problem(path +
+                         ": neither an ASCII STL file (starting with 'solid') nor a binary one (84 + 50 n bytes)");
     std::size_t in_facet = 0;
     while(lines.next(t))
     {
@@ -340,7 +424,8 @@ Polygon_soup read_checked_stl(const std::string& path, const std::string& text)
       {
         if(t.size() != 4) lines.fail("a vertex line needs 3 coordinates");
         if(++in_facet > 3) lines.fail("a facet with more than 3 vertices");
-        corners.push_back({lines.real(t[1], "the coordinate"), lines.real(t[2], "the coordinate"), lines.real(t[3], "the coordinate")});
+        corners.push_back({ lines.real(t[1], "the coordinate"), lines.real(t[2], "the coordinate"),
+                            lines.real(t[3], "the coordinate") });
       }
       else if(t[0] == "endfacet")
       {

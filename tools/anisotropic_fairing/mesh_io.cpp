@@ -63,11 +63,13 @@ std::string ply_header_comments(const std::string& path)
 // An ASCII PLY file whose properties hold NaN or infinity (never its coordinates: the check refuses
 // those): CGAL's ASCII reader cannot read them, so it reads the text with 0 in their place, and the
 // values are then put back into their properties, to be written as they were.
-bool read_ply_with_nonfinite_values(const std::string& path, const Polygon_soup& soup, Mesh& mesh, std::string& comments)
+bool read_ply_with_nonfinite_values(const std::string& path, const Polygon_soup& soup, Mesh& mesh,
+                                    std::string& comments)
 {
   std::ifstream file(path, std::ios::binary);
   std::string text((std::istreambuf_iterator<char>(file)), std::istreambuf_iterator<char>());
-  for(const Polygon_soup::Nonfinite_value& x : soup.nonfinite) text.replace(x.offset, x.length, std::string(x.length, ' ')).at(x.offset) = '0';
+  for(const Polygon_soup::Nonfinite_value& x : soup.nonfinite)
+    text.replace(x.offset, x.length, std::string(x.length, ' ')).at(x.offset) = '0';
   std::istringstream in(text);
   if(!CGAL::IO::read_PLY(in, mesh, comments, false)) return false;
   for(const Polygon_soup::Nonfinite_value& x : soup.nonfinite)
@@ -147,7 +149,8 @@ void add_soup_faces(const af_tool::Polygon_soup& soup, Mesh& mesh)
 {
   if(mesh.number_of_vertices() == 0)
   {
-    mesh.reserve(Mesh::size_type(soup.points.size()), Mesh::size_type(2 * soup.faces.size()), Mesh::size_type(soup.faces.size()));
+    mesh.reserve(Mesh::size_type(soup.points.size()), Mesh::size_type(2 * soup.faces.size()),
+                 Mesh::size_type(soup.faces.size()));
     for(const auto& p : soup.points) mesh.add_vertex(Point(p[0], p[1], p[2]));
   }
   std::vector<Vertex_index> face;
@@ -171,8 +174,18 @@ bool off_face_colours(const std::string& text)
     std::istringstream words(line.substr(0, line.find('#')));
     std::vector<std::string> w{std::istream_iterator<std::string>(words), std::istream_iterator<std::string>()};
     if(w.empty()) continue;
-    if(content == 0 && w.size() >= 4) { vertices = std::strtoull(w[1].c_str(), nullptr, 10); faces = std::strtoull(w[2].c_str(), nullptr, 10); content = 2; continue; }
-    if(content == 1) { vertices = std::strtoull(w[0].c_str(), nullptr, 10); faces = std::strtoull(w[1].c_str(), nullptr, 10); }
+    if(content == 0 && w.size() >= 4)
+    {
+      vertices = std::strtoull(w[1].c_str(), nullptr, 10);
+      faces = std::strtoull(w[2].c_str(), nullptr, 10);
+      content = 2;
+      continue;
+    }
+    if(content == 1)
+    {
+      vertices = std::strtoull(w[0].c_str(), nullptr, 10);
+      faces = std::strtoull(w[1].c_str(), nullptr, 10);
+    }
     ++content;
     if(content <= 2 + vertices) continue;
     if(content > 2 + vertices + faces) break;
@@ -210,10 +223,12 @@ bool without_faces(std::string& text, Format format)
     if(words.size() == 1)
     {
       const std::string keyword = text.substr(at, end - at);
-      if(keyword.size() < 3 || keyword.compare(keyword.size() - 3, 3, "OFF") != 0 || keyword.find_first_of("4n") != std::string::npos)
+      if(keyword.size() < 3 || keyword.compare(keyword.size() - 3, 3, "OFF") != 0 ||
+         keyword.find_first_of("4n") != std::string::npos)
         return false;
       const std::size_t eol = text.find('\n', end);
-      if(text.substr(end, eol == std::string::npos ? std::string::npos : eol - end).find("BINARY") != std::string::npos) return false;
+      if(text.substr(end, eol == std::string::npos ? std::string::npos : eol - end).find("BINARY") != std::string::npos)
+        return false;
     }
     at = end;
   }
@@ -224,8 +239,8 @@ bool without_faces(std::string& text, Format format)
 // The mesh of a repaired soup with the vertex properties of the file's vertices: CGAL's reader reads
 // the vertices alone (without_faces), the copies of split vertices and the faces come from the soup.
 // Where that cannot be done, the positions alone, as said in a warning.
-void read_vertices_then_soup_faces(const std::string& path, const Polygon_soup& soup, std::size_t file_vertices, Mesh& mesh,
-                                   Input_info& info)
+void read_vertices_then_soup_faces(const std::string& path, const Polygon_soup& soup, std::size_t file_vertices,
+                                   Mesh& mesh, Input_info& info)
 {
   std::ifstream file(path, std::ios::binary);
   std::string text((std::istreambuf_iterator<char>(file)), std::istreambuf_iterator<char>());
@@ -257,67 +272,81 @@ void read_vertices_then_soup_faces(const std::string& path, const Polygon_soup& 
   if(!read)
   {
     mesh.clear();
-    info.warnings.push_back("the mesh of " + path + " was rebuilt from its positions and faces: its other vertex properties are not kept");
+    info.warnings.push_back("the mesh of " + path +
+                            " was rebuilt from its positions and faces: its other vertex properties are not kept");
   }
   std::string face_properties;   // made by the reader for faces it did not read
   for(const std::string& p : mesh.properties<Face_index>())
     if(!is_internal_property(p)) face_properties += (face_properties.empty() ? "" : ", ") + p.substr(2);
   for(const std::string& p : mesh.properties<Face_index>())
-    if(!is_internal_property(p)) with_property_map<Face_index>(mesh, p, [&](auto& map) { mesh.remove_property_map(map); });
+    if(!is_internal_property(p))
+      with_property_map<Face_index>(mesh, p, [&](auto& map) { mesh.remove_property_map(map); });
   if(!face_properties.empty() && (info.format == Format::PLY || face_colours))
-    info.warnings.push_back("the face properties of " + path + " (" + face_properties + ") are not kept: its faces were rebuilt");
+    info.warnings.push_back("the face properties of " + path + " (" + face_properties +
+                            ") are not kept: its faces were rebuilt");
   if(read)
     for(std::size_t v = file_vertices; v < soup.points.size(); ++v)
       mesh.add_vertex(Point(soup.points[v][0], soup.points[v][1], soup.points[v][2]));
   add_soup_faces(soup, mesh);
 }
 
-} // namespace
-
-void read_input(const std::string& path, Mesh& mesh, Input_info& info, bool repair)
+// INPUT exists and can be opened, and its extension names a format.
+void check_openable(const std::string& path, Input_info& info)
 {
   if(!format_of(path, info.format)) usage_error("INPUT must be an .off, .obj, .ply or .stl file: " + path);
   std::error_code ec;
   if(!fs::is_regular_file(path, ec)) fail("read_error", "cannot open " + path + ": no such file");
   std::ifstream probe(path);
   if(!probe) fail("read_error", "cannot open " + path + ": " + std::strerror(errno));
-  probe.close();
+}
 
-  // the file is read and checked before CGAL's readers see it (mesh_file_check.h)
-  af_tool::Polygon_soup soup;
-  try { soup = af_tool::read_checked_soup(path, af_tool::Mesh_format(int(info.format))); }
+// The file read and checked before CGAL's readers see it (mesh_file_check.h).
+af_tool::Polygon_soup checked_soup(const std::string& path, const Input_info& info)
+{
+  try { return af_tool::read_checked_soup(path, af_tool::Mesh_format(int(info.format))); }
   catch(const af_tool::File_problem& e) { fail("read_error", std::string("cannot read ") + e.what()); }
-  // faces that are no oriented 2-manifold (non-manifold vertices and edges of raw scans, flipped faces,
-  // faces repeating a vertex) are made one for the run (vertex_split.h), and the mesh is then built from
-  // the repaired soup, with the vertex properties the file's vertices have
+}
+
+// Faces that are no oriented 2-manifold (non-manifold vertices and edges of raw scans, flipped faces, faces
+// repeating a vertex) are made one for the run (vertex_split.h); returns whether the soup was changed, the
+// mesh then being built from it, with the vertex properties the file's vertices have.
+bool make_oriented_manifold(af_tool::Polygon_soup& soup, Input_info& info, bool repair)
+{
   const std::size_t file_vertices = soup.points.size();
-  bool rebuilt = false;
-  try { af_tool::check_oriented_manifold(soup); }
+  try { af_tool::check_oriented_manifold(soup); return false; }
   catch(const af_tool::File_problem& e)
   {
     const af_tool::Soup_repair fixed = af_tool::repair_soup(soup);
     try { af_tool::check_oriented_manifold(soup); }
     catch(const af_tool::File_problem& again)
     {
-      fail("input_error", std::string("cannot fair ") + again.what() + (repair ? ", even after --repair" : ", even after splitting its non-manifold vertices"));
+      fail("input_error", std::string("cannot fair ") + again.what() +
+                          (repair ? ", even after --repair" : ", even after splitting its non-manifold vertices"));
     }
-    rebuilt = true;
     info.split.file_vertices = file_vertices;
     info.split.copy_of = fixed.copy_of;
     info.split.split_vertices = fixed.split_vertices;
     for(const std::string& c : fixed.changes) info.input_changes.push_back(repair ? "--repair: " + c : c);
     if(repair && !fixed.copy_of.empty())
-      info.input_changes.push_back("--repair: the copies of split vertices are written after the input's " + std::to_string(file_vertices) + " vertices");
+      info.input_changes.push_back("--repair: the copies of split vertices are written after the input's " +
+                                   std::to_string(file_vertices) + " vertices");
     if(!repair)
     {
       std::string changes;
       for(const std::string& c : fixed.changes) changes += (changes.empty() ? "" : "; ") + c;
       info.warnings.push_back(std::string(e.what()) + ": for the run, " + changes +
                               (fixed.copy_of.empty() ? std::string()
-                                                     : "; each split vertex is written once, at the mean of its copies, with the input's vertex numbers"));
+                                                     : "; each split vertex is written once, at the mean of its "
+                                                       "copies, with the input's vertex numbers"));
     }
+    return true;
   }
-  info.warnings.insert(info.warnings.end(), soup.warnings.begin(), soup.warnings.end());
+}
+
+// The mesh of a repaired soup, or of an STL file (whose corners the check merged), without CGAL's readers.
+void build_from_soup(const std::string& path, const af_tool::Polygon_soup& soup, std::size_t file_vertices,
+                     bool rebuilt, Mesh& mesh, Input_info& info)
+{
   if(rebuilt && info.format != Format::STL && info.format != Format::OBJ)
     read_vertices_then_soup_faces(path, soup, file_vertices, mesh, info);
   else if(rebuilt && info.format == Format::OBJ)
@@ -328,102 +357,111 @@ void read_input(const std::string& path, Mesh& mesh, Input_info& info, bool repa
     info.notes.push_back(std::to_string(soup.merged_points) + " triangle corners of " + path + " merged into the " +
                          std::to_string(file_vertices) + " vertices they coincide with");
   }
+}
 
-  bool ok = info.format == Format::STL || rebuilt;
-  std::string printed;
-  if(!ok)
+bool read_off_with_cgal(const std::string& path, Mesh& mesh)
+{
+  std::string patched;
+  if(stoff_without_colors(path, patched))
   {
-    Capture_streams capture;
-    if(info.format == Format::OFF)
+    std::istringstream in(patched);
+    const bool ok = CGAL::IO::read_OFF(in, mesh);
+    // the colour maps made for the "C" put in by stoff_without_colors(): nothing was read into them
+    auto vcolor = mesh.property_map<Vertex_index, CGAL::IO::Color>("v:color");
+    if(vcolor.second) mesh.remove_property_map(vcolor.first);
+    auto fcolor = mesh.property_map<Face_index, CGAL::IO::Color>("f:color");
+    if(fcolor.second) mesh.remove_property_map(fcolor.first);
+    return ok;
+  }
+  std::ifstream in(path);
+  const bool ok =
+    CGAL::IO::read_OFF(in, mesh); // Surface_mesh overload: keeps normals, colours, texture coordinates in v:*
+  // no face colours where the file has none (CGAL's reader makes them black for a COFF file)
+  auto fcolor = mesh.property_map<Face_index, CGAL::IO::Color>("f:color");
+  std::ifstream again(path, std::ios::binary);
+  if(ok && fcolor.second &&
+     !off_face_colours(std::string(std::istreambuf_iterator<char>(again), std::istreambuf_iterator<char>())))
+    mesh.remove_property_map(fcolor.first);
+  return ok;
+}
+
+bool read_ply_with_cgal(const std::string& path, const af_tool::Polygon_soup& soup, Mesh& mesh, Input_info& info)
+{
+  bool ok;
+  info.ply_binary = ply_is_binary(path);
+  if(soup.positions_and_faces_only)
+  {
+    // nothing but what the check read: the mesh from it, without parsing the file again
+    add_soup_faces(soup, mesh);
+    info.ply_comments = ply_header_comments(path);
+    ok = true;
+  }
+  else if(soup.nonfinite.empty())
+  {
+    std::ifstream in(path, std::ios::binary);
+    ok = CGAL::IO::read_PLY(in, mesh, info.ply_comments, false);  // keeps every property as v:<name>, f:<name>
+  }
+  else
+    ok = read_ply_with_nonfinite_values(path, soup, mesh, info.ply_comments);
+  if(soup.ply_strips && mesh.number_of_faces() == 0 && mesh.number_of_vertices() == soup.points.size())
+  {
+    // CGAL reads the vertices and their properties of a file of triangle strips, but not the strips
+    add_soup_faces(soup, mesh);
+    ok = true;
+    info.notes.push_back(std::to_string(soup.faces.size()) + " triangles read from the triangle strips of " + path);
+  }
+  return ok;
+}
+
+// CGAL's readers, which keep the vertex and face properties; `printed`: the first line they printed.
+bool read_with_cgal(const std::string& path, const af_tool::Polygon_soup& soup, Mesh& mesh, Input_info& info,
+                    std::string& printed)
+{
+  bool ok;
+  Capture_streams capture;
+  if(info.format == Format::OFF)
+    ok = read_off_with_cgal(path, mesh);
+  else if(info.format == Format::PLY)
+    ok = read_ply_with_cgal(path, soup, mesh, info);
+  else
+  {
+    std::ifstream in(path);
+    ok = CGAL::IO::read_OBJ(in, mesh);
+  }
+  printed = capture.first_line();
+  return ok;
+}
+
+// What the program keeps of an OBJ file that CGAL's reader drops: vn (recomputed), vt one per vertex.
+void keep_obj_vertex_data(const std::string& path, std::size_t file_vertices, Mesh& mesh, Input_info& info)
+{
+  bool normals, textures, colors;
+  scan_obj(path, normals, textures, colors);
+  if(normals) mesh.add_property_map<Vertex_index, Vector>("v:normal", Vector(0, 0, 0));
+  if(textures)
+  {
+    const Obj_texcoords t = read_obj_texcoords(path, file_vertices);
+    if(t.matched)
     {
-      std::string patched;
-      if(stoff_without_colors(path, patched))
-      {
-        std::istringstream in(patched);
-        ok = CGAL::IO::read_OFF(in, mesh);
-        // the colour maps made for the "C" put in by stoff_without_colors(): nothing was read into them
-        auto vcolor = mesh.property_map<Vertex_index, CGAL::IO::Color>("v:color");
-        if(vcolor.second) mesh.remove_property_map(vcolor.first);
-        auto fcolor = mesh.property_map<Face_index, CGAL::IO::Color>("f:color");
-        if(fcolor.second) mesh.remove_property_map(fcolor.first);
-      }
-      else
-      {
-        std::ifstream in(path);
-        ok = CGAL::IO::read_OFF(in, mesh);  // Surface_mesh overload: keeps normals, colours, texture coordinates in v:*
-        // no face colours where the file has none (CGAL's reader makes them black for a COFF file)
-        auto fcolor = mesh.property_map<Face_index, CGAL::IO::Color>("f:color");
-        std::ifstream again(path, std::ios::binary);
-        if(ok && fcolor.second && !off_face_colours(std::string(std::istreambuf_iterator<char>(again), std::istreambuf_iterator<char>())))
-          mesh.remove_property_map(fcolor.first);
-      }
-    }
-    else if(info.format == Format::PLY)
-    {
-      info.ply_binary = ply_is_binary(path);
-      if(soup.positions_and_faces_only)
-      {
-        // nothing but what the check read: the mesh from it, without parsing the file again
-        add_soup_faces(soup, mesh);
-        info.ply_comments = ply_header_comments(path);
-        ok = true;
-      }
-      else if(soup.nonfinite.empty())
-      {
-        std::ifstream in(path, std::ios::binary);
-        ok = CGAL::IO::read_PLY(in, mesh, info.ply_comments, false);  // keeps every property as v:<name>, f:<name>
-      }
-      else
-        ok = read_ply_with_nonfinite_values(path, soup, mesh, info.ply_comments);
-      if(soup.ply_strips && mesh.number_of_faces() == 0 && mesh.number_of_vertices() == soup.points.size())
-      {
-        // CGAL reads the vertices and their properties of a file of triangle strips, but not the strips
-        add_soup_faces(soup, mesh);
-        ok = true;
-        info.notes.push_back(std::to_string(soup.faces.size()) + " triangles read from the triangle strips of " + path);
-      }
+      Texcoord_map uv = mesh.add_property_map<Vertex_index, Texcoord>("v:texcoord", Texcoord(0, 0)).first;
+      for(std::size_t v = 0; v < file_vertices; ++v)
+        uv[Vertex_index(Mesh::size_type(v))] = Texcoord(t.uv[v][0], t.uv[v][1]);
+      if(t.dropped_w) info.warnings.push_back("the third components (w) of the vt of " + path + " are not kept");
     }
     else
     {
-      std::ifstream in(path);
-      ok = CGAL::IO::read_OBJ(in, mesh);
+      info.uv_problem = "the texture coordinates (vt) of " + path + " are not one per vertex (" + t.problem + ")";
+      info.warnings.push_back(info.uv_problem + ": not kept");
     }
-    printed = capture.first_line();
   }
-  // the checks above are those CGAL's readers make: a difference would be a bug of ours
-  if(!ok || mesh.number_of_faces() != soup.faces.size() || mesh.number_of_vertices() != soup.points.size())
-  {
-    mesh.clear();
-    fail("read_error", "cannot read a polygon mesh from " + path + " (CGAL's reader refused a file the checks accepted)" +
-                       (printed.empty() ? std::string() : ": " + printed));
-  }
-  if(info.format == Format::PLY)
-  {
-    info.vertex_alpha = fold_alpha<Vertex_index>(mesh, mesh.vertices(), "v:color", "v:alpha");
-    info.face_alpha = fold_alpha<Face_index>(mesh, mesh.faces(), "f:color", "f:alpha");
-  }
-  if(info.format == Format::OBJ)
-  {
-    bool normals, textures, colors;
-    scan_obj(path, normals, textures, colors);
-    if(normals) mesh.add_property_map<Vertex_index, Vector>("v:normal", Vector(0, 0, 0));
-    if(textures)
-    {
-      const Obj_texcoords t = read_obj_texcoords(path, file_vertices);
-      if(t.matched)
-      {
-        Texcoord_map uv = mesh.add_property_map<Vertex_index, Texcoord>("v:texcoord", Texcoord(0, 0)).first;
-        for(std::size_t v = 0; v < file_vertices; ++v) uv[Vertex_index(Mesh::size_type(v))] = Texcoord(t.uv[v][0], t.uv[v][1]);
-        if(t.dropped_w) info.warnings.push_back("the third components (w) of the vt of " + path + " are not kept");
-      }
-      else
-      {
-        info.uv_problem = "the texture coordinates (vt) of " + path + " are not one per vertex (" + t.problem + ")";
-        info.warnings.push_back(info.uv_problem + ": not kept");
-      }
-    }
-    if(colors) info.warnings.push_back("vertex colours on the v lines of " + path + " are not kept (CGAL's OBJ reader drops them)");
-  }
+  if(colors)
+    info.warnings.push_back("vertex colours on the v lines of " + path +
+                            " are not kept (CGAL's OBJ reader drops them)");
+}
+
+// The mesh made ready for the run: properties on the split copies, --repair, triangles only.
+void prepare_for_run(const std::string& path, Mesh& mesh, Input_info& info, bool repair)
+{
   copy_properties_to_copies(mesh, info.split);
   if(repair)
   {
@@ -433,7 +471,8 @@ void read_input(const std::string& path, Mesh& mesh, Input_info& info, bool repa
   info.triangulated_faces = af_tool::triangulate_polygons(mesh);
   if(info.triangulated_faces)
   {
-    info.input_changes.push_back("triangulated " + std::to_string(info.triangulated_faces) + " faces that are not triangles");
+    info.input_changes.push_back("triangulated " + std::to_string(info.triangulated_faces) +
+                                 " faces that are not triangles");
     info.warnings.push_back(std::to_string(info.triangulated_faces) + " faces of " + path +
                             " are not triangles: triangulated (CGAL's triangulate_faces), and written as triangles");
   }
@@ -441,6 +480,36 @@ void read_input(const std::string& path, Mesh& mesh, Input_info& info, bool repa
     if(c.compare(0, 9, "--repair:") == 0) info.notes.push_back(c);
   info.has_normals = mesh.property_map<Vertex_index, Vector>("v:normal").second;
   info.normals_read = info.has_normals && info.format != Format::OBJ;
+}
+
+} // namespace
+
+void read_input(const std::string& path, Mesh& mesh, Input_info& info, bool repair)
+{
+  check_openable(path, info);
+  af_tool::Polygon_soup soup = checked_soup(path, info);
+  const std::size_t file_vertices = soup.points.size();
+  const bool rebuilt = make_oriented_manifold(soup, info, repair);
+  info.warnings.insert(info.warnings.end(), soup.warnings.begin(), soup.warnings.end());
+  build_from_soup(path, soup, file_vertices, rebuilt, mesh, info);
+
+  std::string printed;
+  const bool ok = info.format == Format::STL || rebuilt || read_with_cgal(path, soup, mesh, info, printed);
+  // the checks above are those CGAL's readers make: a difference would be a bug of ours
+  if(!ok || mesh.number_of_faces() != soup.faces.size() || mesh.number_of_vertices() != soup.points.size())
+  {
+    mesh.clear();
+    fail("read_error", "cannot read a polygon mesh from " + path +
+                         " (CGAL's reader refused a file the checks accepted)" +
+                         (printed.empty() ? std::string() : ": " + printed));
+  }
+  if(info.format == Format::PLY)
+  {
+    info.vertex_alpha = fold_alpha<Vertex_index>(mesh, mesh.vertices(), "v:color", "v:alpha");
+    info.face_alpha = fold_alpha<Face_index>(mesh, mesh.faces(), "f:color", "f:alpha");
+  }
+  if(info.format == Format::OBJ) keep_obj_vertex_data(path, file_vertices, mesh, info);
+  prepare_for_run(path, mesh, info, repair);
 }
 
 } // namespace af_tool

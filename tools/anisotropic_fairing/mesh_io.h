@@ -60,7 +60,8 @@ std::vector<std::string> dropped_properties(const Mesh& mesh, Format f);
 
 // Writes the mesh in format `f`: PLY binary if the input was a binary PLY, STL binary; as text if `text`.
 // Throws Failure.
-void write_mesh(const std::string& path, Format f, const Mesh& mesh, const Input_info& info, bool with_normals, bool text);
+void write_mesh(const std::string& path, Format f, const Mesh& mesh, const Input_info& info, bool with_normals,
+                bool text);
 
 // A temporary file next to `path`, renamed to it once everything succeeded.
 std::filesystem::path temporary_next_to(const std::string& path);

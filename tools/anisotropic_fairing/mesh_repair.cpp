@@ -68,17 +68,20 @@ Soup_repair repair_soup(Polygon_soup& soup)
   std::size_t reversed = 0;
   for(std::size_t f = 0; f < soup.faces.size(); ++f)
     if(before[f] != soup.faces[f]) reversed += match_face(before[f], soup.faces[f], n0, points, result.copy_of);
-  if(reversed) result.changes.push_back("reversed the orientation of " + std::to_string(reversed) + " faces to agree with their neighbours");
+  if(reversed)
+    result.changes.push_back("reversed the orientation of " + std::to_string(reversed) +
+                             " faces to agree with their neighbours");
   if(points.size() > n0)
   {
     std::vector<std::size_t> originals = result.copy_of;
     std::sort(originals.begin(), originals.end());
     result.split_vertices = std::size_t(std::unique(originals.begin(), originals.end()) - originals.begin());
     const bool one = result.split_vertices == 1;
-    result.changes.push_back("split " + std::to_string(result.split_vertices) + " non-manifold vert" + (one ? "ex" : "ices") +
-                             " (" + (one ? "" : "the first: ") + "vertex " + std::to_string(originals.front()) +
-                             "; an edge of more than two faces is split at its ends) into " +
-                             std::to_string(result.split_vertices + points.size() - n0) + " vertices, one per fan of faces");
+    result.changes.push_back(
+      "split " + std::to_string(result.split_vertices) + " non-manifold vert" + (one ? "ex" : "ices") + " (" +
+      (one ? "" : "the first: ") + "vertex " + std::to_string(originals.front()) +
+      "; an edge of more than two faces is split at its ends) into " +
+      std::to_string(result.split_vertices + points.size() - n0) + " vertices, one per fan of faces");
   }
   soup.points.resize(points.size());
   for(std::size_t i = 0; i < points.size(); ++i) soup.points[i] = {points[i].x(), points[i].y(), points[i].z()};
@@ -92,13 +95,15 @@ std::vector<std::string> repair_mesh(Mesh& mesh)
   const std::size_t stitched = PMP::stitch_borders(mesh);
   if(stitched)
     changes.push_back("stitched " + std::to_string(stitched) + " pairs of coinciding border edges (" +
-                      std::to_string(before - mesh.number_of_vertices()) + " vertices merged into the ones they coincide with)");
+                      std::to_string(before - mesh.number_of_vertices()) +
+                      " vertices merged into the ones they coincide with)");
   const std::size_t isolated = PMP::remove_isolated_vertices(mesh);
   if(isolated) changes.push_back("removed " + std::to_string(isolated) + " vertices on no face");
   if(mesh.has_garbage())
   {
     mesh.collect_garbage();   // the vertices after a removed one move up, with their properties
-    changes.push_back("the vertices after the removed ones move up: the output's vertex numbers differ from the input's");
+    changes.push_back(
+      "the vertices after the removed ones move up: the output's vertex numbers differ from the input's");
   }
   return changes;
 }

@@ -18,12 +18,34 @@ std::size_t root(std::vector<std::size_t>& parent, std::size_t i)
   return i;
 }
 
+struct Half_edge { std::size_t low, high, face, k; bool forward; };   // forward: runs from low to high
+
+// Sorted by (low, high, face): placed by low (in face order), then each vertex's few sorted by high, stably.
+void sort_by_vertices(std::vector<Half_edge>& edges, std::size_t vertices)
+{
+  std::vector<std::size_t> at(vertices + 1, 0);
+  for(const Half_edge& e : edges) ++at[e.low + 1];
+  std::partial_sum(at.begin(), at.end(), at.begin());
+  std::vector<Half_edge> placed(edges.size());
+  for(const Half_edge& e : edges) placed[at[e.low]++] = e;
+  edges.swap(placed);
+  for(std::size_t v = 0, begin = 0; v < vertices; begin = at[v++])
+    for(std::size_t i = begin + 1; i < at[v]; ++i)   // insertion: a vertex has a few
+    {
+      const Half_edge x = edges[i];
+      std::size_t j = i;
+      for(; j > begin && edges[j - 1].high > x.high; --j) edges[j] = edges[j - 1];
+      edges[j] = x;
+    }
+}
+
 } // namespace
 
 void check_oriented_manifold(const Polygon_soup& soup)
 {
   const auto& faces = soup.faces;
-  const auto face_name = [&](std::size_t f) {   // places are "line 12" (text) or "face 7", "triangle 3 of strip 0" (binary)
+  // places are "line 12" (text) or "face 7", "triangle 3 of strip 0" (binary)
+  const auto face_name = [&](std::size_t f) {
     const std::string& place = soup.face_place[f];
     return place.compare(0, 5, "line ") == 0 ? "face " + std::to_string(f) + " (" + place + ")" : place;
   };
@@ -31,7 +53,6 @@ void check_oriented_manifold(const Polygon_soup& soup)
   std::vector<std::size_t> first_corner(faces.size() + 1, 0);
   for(std::size_t f = 0; f < faces.size(); ++f) first_corner[f + 1] = first_corner[f] + faces[f].size();
 
-  struct Half_edge { std::size_t low, high, face, k; bool forward; };   // forward: runs from low to high
   std::vector<Half_edge> edges;
   edges.reserve(first_corner.back());
   for(std::size_t f = 0; f < faces.size(); ++f)
@@ -45,23 +66,7 @@ void check_oriented_manifold(const Polygon_soup& soup)
       edges.push_back({std::min(a, b), std::max(a, b), f, k, a < b});
     }
   }
-  // sorted by (low, high, face): placed by low (in face order), then each vertex's few sorted by high, stably
-  {
-    std::vector<std::size_t> at(soup.points.size() + 1, 0);
-    for(const Half_edge& e : edges) ++at[e.low + 1];
-    std::partial_sum(at.begin(), at.end(), at.begin());
-    std::vector<Half_edge> placed(edges.size());
-    for(const Half_edge& e : edges) placed[at[e.low]++] = e;
-    edges.swap(placed);
-    for(std::size_t v = 0, begin = 0; v < soup.points.size(); begin = at[v++])
-      for(std::size_t i = begin + 1; i < at[v]; ++i)   // insertion: a vertex has a few
-      {
-        const Half_edge x = edges[i];
-        std::size_t j = i;
-        for(; j > begin && edges[j - 1].high > x.high; --j) edges[j] = edges[j - 1];
-        edges[j] = x;
-      }
-  }
+  sort_by_vertices(edges, soup.points.size());
 
   std::vector<std::size_t> parent(first_corner.back());
   std::iota(parent.begin(), parent.end(), std::size_t(0));
@@ -70,7 +75,9 @@ void check_oriented_manifold(const Polygon_soup& soup)
   {
     std::size_t j = i + 1;
     while(j < edges.size() && edges[j].low == edges[i].low && edges[j].high == edges[i].high) ++j;
-    const auto edge = [&] { return "the edge between vertices " + std::to_string(edges[i].low) + " and " + std::to_string(edges[i].high); };
+    const auto edge = [&] {
+      return "the edge between vertices " + std::to_string(edges[i].low) + " and " + std::to_string(edges[i].high);
+    };
     if(j - i > 2)
       fail(edge() + " is shared by " + std::to_string(j - i) + " faces (" + face_name(edges[i].face) + ", " +
            face_name(edges[i + 1].face) + ", " + face_name(edges[i + 2].face) + (j - i > 3 ? ", ..." : "") +
@@ -98,8 +105,8 @@ void check_oriented_manifold(const Polygon_soup& soup)
       const std::size_t v = faces[f][k], r = root(parent, corner(f, k));
       if(fan[v] == parent.size()) { fan[v] = r; fan_face[v] = f; }
       else if(fan[v] != r)
-        fail("vertex " + std::to_string(v) + " is non-manifold: its faces form separate fans (" + face_name(fan_face[v]) +
-             " and " + face_name(f) + " meet only there, as in a bow-tie)");
+        fail("vertex " + std::to_string(v) + " is non-manifold: its faces form separate fans (" +
+             face_name(fan_face[v]) + " and " + face_name(f) + " meet only there, as in a bow-tie)");
     }
 }
 

@@ -118,7 +118,8 @@ bool write_obj_with_vertex_data(std::ostream& os, const Mesh& mesh, const Normal
 
 } // namespace
 
-void write_mesh(const std::string& path, Format f, const Mesh& mesh, const Input_info& info, bool with_normals, bool text)
+void write_mesh(const std::string& path, Format f, const Mesh& mesh, const Input_info& info, bool with_normals,
+                bool text)
 {
   bool ok = false;
   {
@@ -143,7 +144,8 @@ void write_mesh(const std::string& path, Format f, const Mesh& mesh, const Input
       {
         CGAL::IO::set_mode(out, binary ? CGAL::IO::BINARY : CGAL::IO::ASCII);
         // colours without the alpha the input did not have (a copy: the mesh is the caller's)
-        const bool vertex_rgb = !info.vertex_alpha && mesh.property_map<Vertex_index, CGAL::IO::Color>("v:color").second;
+        const bool vertex_rgb =
+          !info.vertex_alpha && mesh.property_map<Vertex_index, CGAL::IO::Color>("v:color").second;
         const bool face_rgb = !info.face_alpha && mesh.property_map<Face_index, CGAL::IO::Color>("f:color").second;
         if(vertex_rgb || face_rgb)
         {

@@ -10,6 +10,87 @@
 
 namespace af_tool {
 
+namespace {
+
+// the first problem found is the one said
+void set_problem(Obj_texcoords& t, const std::string& p)
+{
+  if(t.problem.empty()) t.problem = p;
+}
+
+// an OBJ index (1-based, or negative: relative to the `count` elements read so far) -> 0-based, -1 if invalid
+long obj_index(const std::string& text, std::size_t count)
+{
+  errno = 0;
+  char* end = nullptr;
+  const long i = std::strtol(text.c_str(), &end, 10);
+  if(text.empty() || *end != '\0' || errno == ERANGE || i == 0) return -1;
+  const long r = i > 0 ? i - 1 : long(count) + i;
+  return r >= 0 && r < long(count) ? r : -1;
+}
+
+// the rest of a vt line: up to three numbers, the third dropped
+void read_vt(std::istringstream& ls, std::size_t line_number, Obj_texcoords& t, std::vector<std::array<double, 2>>& vt)
+{
+  t.present = true;
+  double c[3] = {0, 0, 0};
+  int k = 0;
+  std::string token;
+  while(k < 3 && ls >> token)
+  {
+    char* end = nullptr;
+    c[k] = std::strtod(token.c_str(), &end);
+    if(*end != '\0' || !std::isfinite(c[k]))
+    {
+      set_problem(t, "line " + std::to_string(line_number) + ": malformed vt");
+      break;
+    }
+    ++k;
+  }
+  if(k == 0) set_problem(t, "line " + std::to_string(line_number) + ": malformed vt");
+  if(c[2] != 0) t.dropped_w = true;
+  vt.push_back({{c[0], c[1]}});
+}
+
+// the corners of an f line: each vertex's vt (`vt_of`, -1 none yet), one per vertex or a seam
+void read_f(std::istringstream& ls, std::size_t line_number, std::size_t nv,
+            const std::vector<std::array<double, 2>>& vt, std::vector<long>& vt_of, bool& corner_without_vt,
+            Obj_texcoords& t)
+{
+  std::string token;
+  while(ls >> token)
+  {
+    const std::string::size_type s1 = token.find('/');
+    const long v = obj_index(token.substr(0, s1), nv);
+    if(v < 0)
+    {
+      set_problem(t, "line " + std::to_string(line_number) + ": bad vertex index " + quoted_excerpt(token));
+      continue;
+    }
+    std::string tex;
+    if(s1 != std::string::npos)
+    {
+      const std::string::size_type s2 = token.find('/', s1 + 1);
+      tex = token.substr(s1 + 1, s2 == std::string::npos ? std::string::npos : s2 - s1 - 1);
+    }
+    if(tex.empty()) { corner_without_vt = true; continue; }
+    const long ti = obj_index(tex, vt.size());
+    if(ti < 0)
+    {
+      set_problem(t, "line " + std::to_string(line_number) + ": bad texture index " + quoted_excerpt(token));
+      continue;
+    }
+    long& used = vt_of[std::size_t(v)];
+    if(used < 0) used = ti;
+    else if(used != ti && vt[std::size_t(used)] != vt[std::size_t(ti)])
+      set_problem(t, "vertex " + std::to_string(v) + " (OBJ index " + std::to_string(v + 1) +
+                  ") has two texture coordinates, vt " + std::to_string(used + 1) + " and " +
+                  std::to_string(ti + 1) + ": a texture seam");
+  }
+}
+
+} // namespace
+
 Obj_texcoords read_obj_texcoords(const std::string& path, std::size_t mesh_vertices)
 {
   Obj_texcoords t;
@@ -19,66 +100,20 @@ Obj_texcoords read_obj_texcoords(const std::string& path, std::size_t mesh_verti
   std::size_t nv = 0, line_number = 0;
   bool corner_without_vt = false;
   std::string line, token;
-  auto set_problem = [&t](const std::string& p) { if(t.problem.empty()) t.problem = p; };
-  // an OBJ index (1-based, or negative: relative to the `count` elements read so far) -> 0-based, -1 if invalid
-  auto index = [](const std::string& text, std::size_t count) -> long {
-    errno = 0;
-    char* end = nullptr;
-    const long i = std::strtol(text.c_str(), &end, 10);
-    if(text.empty() || *end != '\0' || errno == ERANGE || i == 0) return -1;
-    const long r = i > 0 ? i - 1 : long(count) + i;
-    return r >= 0 && r < long(count) ? r : -1;
-  };
   while(std::getline(in, line))
   {
     ++line_number;
     std::istringstream ls(line);
     if(!(ls >> token)) continue;
     if(token == "v") { ++nv; vt_of.push_back(-1); }
-    else if(token == "vt")
-    {
-      t.present = true;
-      double c[3] = {0, 0, 0};
-      int k = 0;
-      while(k < 3 && ls >> token)
-      {
-        char* end = nullptr;
-        c[k] = std::strtod(token.c_str(), &end);
-        if(*end != '\0' || !std::isfinite(c[k])) { set_problem("line " + std::to_string(line_number) + ": malformed vt"); break; }
-        ++k;
-      }
-      if(k == 0) set_problem("line " + std::to_string(line_number) + ": malformed vt");
-      if(c[2] != 0) t.dropped_w = true;
-      vt.push_back({{c[0], c[1]}});
-    }
-    else if(token == "f")
-    {
-      while(ls >> token)
-      {
-        const std::string::size_type s1 = token.find('/');
-        const long v = index(token.substr(0, s1), nv);
-        if(v < 0) { set_problem("line " + std::to_string(line_number) + ": bad vertex index " + quoted_excerpt(token)); continue; }
-        std::string tex;
-        if(s1 != std::string::npos)
-        {
-          const std::string::size_type s2 = token.find('/', s1 + 1);
-          tex = token.substr(s1 + 1, s2 == std::string::npos ? std::string::npos : s2 - s1 - 1);
-        }
-        if(tex.empty()) { corner_without_vt = true; continue; }
-        const long ti = index(tex, vt.size());
-        if(ti < 0) { set_problem("line " + std::to_string(line_number) + ": bad texture index " + quoted_excerpt(token)); continue; }
-        long& used = vt_of[std::size_t(v)];
-        if(used < 0) used = ti;
-        else if(used != ti && vt[std::size_t(used)] != vt[std::size_t(ti)])
-          set_problem("vertex " + std::to_string(v) + " (OBJ index " + std::to_string(v + 1) +
-                      ") has two texture coordinates, vt " + std::to_string(used + 1) + " and " + std::to_string(ti + 1) +
-                      ": a texture seam");
-      }
-    }
+    else if(token == "vt") read_vt(ls, line_number, t, vt);
+    else if(token == "f") read_f(ls, line_number, nv, vt, vt_of, corner_without_vt, t);
   }
   if(!t.present) return t;
-  if(corner_without_vt) set_problem("some face corners have no texture coordinate");
-  if(nv != mesh_vertices) set_problem("the file has " + std::to_string(nv) + " v lines but the mesh " + std::to_string(mesh_vertices) + " vertices");
+  if(corner_without_vt) set_problem(t, "some face corners have no texture coordinate");
+  if(nv != mesh_vertices)
+    set_problem(t, "the file has " + std::to_string(nv) + " v lines but the mesh " + std::to_string(mesh_vertices) +
+                " vertices");
   if(!t.problem.empty()) return t;
   t.uv.resize(nv);
   for(std::size_t i = 0; i < nv; ++i)

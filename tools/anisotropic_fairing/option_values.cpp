@@ -60,7 +60,8 @@ void set_number(double& value, bool& given, const std::string& flag, const std::
 {
   value = parse_double(flag, text);
   if(given_if_invalid) given = true;
-  if(zero_allowed ? !(value >= 0) : !(value > 0)) usage_error(flag + (zero_allowed ? " must be >= 0" : " must be positive"));
+  if(zero_allowed ? !(value >= 0) : !(value > 0))
+    usage_error(flag + (zero_allowed ? " must be >= 0" : " must be positive"));
   given = true;
 }
 

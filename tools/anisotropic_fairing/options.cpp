@@ -1,8 +1,10 @@
-// The options of anisotropic_fairing. The table `option_table` is the one list of the options: the
-// parser reads it, the help text is made from it, and scripts/option_docs.py makes the manual's list
+// The options of anisotropic_fairing. Those of the library's parameters come from its parameter table
+// (CGAL/Anisotropic_fairing/internal/parameter_table.h), the program's own from `program_options`; the
+// parser reads both, the help text is made from them, and scripts/option_docs.py makes the manual's list
 // from the help (the test cli_option_docs checks they agree).
 #include "options.h"
 #include "json_report.h"
+#include "option_kinds.h"
 #include "option_values.h"
 #include "option_words.h"
 
@@ -44,150 +46,38 @@ struct Option_spec
   void (*apply)(Options& o, const std::string& flag, const std::string& value);
 };
 
-const Option_spec option_table[] = {
-  {"--time-step", nullptr, "T", "time step tau in model units (length^2), as in the paper (time_step)",
-   [](Options& o, const std::string& flag, const std::string& v) { set_number(o.fairing.time_step, flag, v, false); }},
-  {"--relative-time-step", nullptr, "R",
-   "time step in units of l^2, l = sqrt(area/4pi) of the input (per connected\n"
-   "component; relative_time_step); give at most one of the two. Neither:\n"
-   "automatic parameters: the noise is estimated from the mesh, the tensor is\n"
-   "the anisotropic one with its threshold and prefilter chosen from the mesh\n"
-   "(unless --tensor is given), steps of 0.3 h^2 (h: the edge length) until\n"
-   "the surface has moved off the input by the noise",
-   [](Options& o, const std::string& flag, const std::string& v) {
-     set_number(o.fairing.relative_time_step, flag, v, false);
+// The options of the library's parameters, in the table's order (a row without option has no name)
+#define AF_PARAMETER(name, type, default_value, named, setting, check, flag, value, program, python, help) \
+  {flag, nullptr, value, help, [](Options& o, const std::string& f, const std::string& v) {                \
+     const auto set = program;                                                                              \
+     set(o, o.fairing.name, f, v);                                                                          \
    }},
-  {"--order", nullptr, "2|4",
-   "the flow's order: 2 (default: diffusion, as in the paper) or 4\n"
-   "(dX/dt = -(M^-1 L)^2 X, which removes noise while rounding the shape less;\n"
-   "the time step is then in length^4, --relative-time-step in l^4; automatic:\n"
-   "0.1 h^4; flow_order). The automatic\n"
-   "default run uses the fourth-order flow itself for its uniform candidate\n"
-   "(the report's choices say so)",
-   [](Options& o, const std::string& flag, const std::string& v) {
-     o.fairing.flow_order = choice(flag, v, order_words);
+#define AF_TENSOR_SETTING(name, flag, value, program, python, help)                         \
+  {flag, nullptr, value, help, [](Options& o, const std::string& f, const std::string& v) { \
+     const auto set = program;                                                              \
+     set(o, f, v);                                                                          \
    }},
-  {"--steps", nullptr, "N", "the most time steps to run, all runs of the automatic comparison\n"
-   "together (default 10; with automatic parameters 200; number_of_iterations)",
-   [](Options& o, const std::string& flag, const std::string& v) { o.fairing.number_of_iterations = parse_unsigned(flag, v); }},
-  {"--stop", nullptr, "auto|noise|paper|off",
-   "auto (default): noise with automatic parameters, paper otherwise;\n"
-   "noise: stop when the surface has moved off the input by the estimated\n"
-   "noise (--order 4: or when that displacement levels off short of it);\n"
-   "paper: the criteria (27)-(29) and a steady-state test; off: exactly\n"
-   "N steps (Stopping_criteria::automatic(), Stopping_criteria(),\n"
-   "Stopping_criteria::none()). Whatever the criteria, a step that would fold\n"
-   "the surface is retried with a quarter of the time step, and the run ends\n"
-   "on the last sound surface (step_rejected, with a warning) if even 1/1024\n"
-   "of it fails",
-   [](Options& o, const std::string& flag, const std::string& v) {
-     o.stop = v;   // set before the check: a usage error's report shows what was asked
-     choice_index(flag, v, stop_words);
-     o.fairing.stopping_criteria = stopping_rule(v);
-   }},
-  {"--strength", nullptr, "S",
-   "how far the noise stop goes: until the surface has moved off the input\n"
-   "by S times the estimated noise (default 1; 2 smooths more, 0.5 less).\n"
-   "The rest stays automatic: the flows are compared at the noise level,\n"
-   "and the one kept runs again to S times it. Needs the noise stop:\n"
-   "automatic parameters, or --stop noise with a time step (strength)",
-   [](Options& o, const std::string& flag, const std::string& v) {
-     bool given = false;
-     set_number(o.fairing.strength, given, flag, v, false);
-   }},
-  {"--fidelity", nullptr, "W", "fidelity weight omega in model units (1/time), as in the paper (default 0;\n"
-   "fidelity_weight)",
-   [](Options& o, const std::string& flag, const std::string& v) { set_number(o.fairing.fidelity_weight, flag, v, true); }},
-  {"--relative-fidelity", nullptr, "W", "fidelity weight in units of 1/l^2 (relative_fidelity_weight); give at most\n"
-   "one of the two",
-   [](Options& o, const std::string& flag, const std::string& v) {
-     set_number(o.fairing.relative_fidelity_weight, flag, v, true);
-   }},
-  {"--absolute-maximum-deviation", "--maximum-deviation", "D",
-   "no written vertex moves farther than D (model units) off its input\n"
-   "position: the vertices nearing it are held by a fidelity weight of\n"
-   "their own, and one it cannot hold is written on the bound (default:\n"
-   "no bound; 0: none; absolute_maximum_deviation; --maximum-deviation,\n"
-   "its former spelling, is deprecated: in the library and Python that\n"
-   "name is the relative bound)",
-   [](Options& o, const std::string& flag, const std::string& v) {
-     if(flag == "--maximum-deviation")
-       o.deprecations.push_back("--maximum-deviation is deprecated: write --absolute-maximum-deviation (model units, as here) or "
-                                "--relative-maximum-deviation (units of l, as the library's maximum_deviation)");
-     set_number(o.fairing.absolute_maximum_deviation, flag, v, true);
-   }},
-  {"--relative-maximum-deviation", nullptr, "R", "the same in units of l (relative_maximum_deviation); give at most one of the two",
-   [](Options& o, const std::string& flag, const std::string& v) { set_number(o.fairing.relative_maximum_deviation, flag, v, true); }},
-  {"--attribute-maximum-deviation", nullptr, "D",
-   "no vertex's attribute values move farther than D (their units,\n"
-   "Euclidean over the components) off the input's (default: no bound;\n"
-   "attribute_maximum_deviation)",
-   [](Options& o, const std::string& flag, const std::string& v) {
-     bool given = false;
-     set_number(o.fairing.attribute_maximum_deviation, given, flag, v, true);
-   }},
-  {"--element", nullptr, "loop|linear", "Loop limit-surface elements (default) or linear (P1) elements\n"
-   "(finite_element)",
-   [](Options& o, const std::string& flag, const std::string& v) {
-     o.fairing.finite_element = choice(flag, v, element_words);
-   }},
-  {"--output", nullptr, "limit|control",
-   "write the points of the faired limit surface (default) or the faired\n"
-   "control points (the mesh whose Loop limit surface is the faired surface;\n"
-   "output_positions)",
-   [](Options& o, const std::string& flag, const std::string& v) {
-     o.fairing.output_positions = choice(flag, v, output_words);
-   }},
-  {"--tensor", nullptr, "isotropic|anisotropic|uniform",
-   "the diffusion tensor: isotropic (mean-curvature flow; the\n"
-   "default with a time step), anisotropic (curvature-driven, feature-preserving:\n"
-   "Anisotropic_diffusion_tensor; the default with automatic parameters, its\n"
-   "threshold and prefilter then chosen from the mesh unless given, and the\n"
-   "isotropic (or uniform) result kept instead when its estimated error at the\n"
-   "noise level is lower: the report's tensor and choices say which) or uniform (the\n"
-   "uniform Laplacian's weights, Uniform_diffusion_tensor: for noisy scans with a\n"
-   "graded triangulation; it rounds creases like the isotropic tensor);\n"
-   "diffusion_tensor",
-   [](Options& o, const std::string& flag, const std::string& v) {
-     o.tensor = v;   // set before the check: a usage error's report shows what was asked
-     choice_index(flag, v, tensor_words);
-   }},
-  {"--lambda", nullptr, "L",
-   "the anisotropic tensor's feature threshold, a curvature in units of 1/l\n"
-   "(default 2): principal curvatures above it are diffused less\n"
-   "(Anisotropic_diffusion_tensor::set_lambda)",
-   [](Options& o, const std::string& flag, const std::string& v) { set_number(o.lambda, o.has_lambda, flag, v, false, true); }},
-  {"--epsilon", nullptr, "E",
-   "the anisotropic tensor reads curvature on the surface after an isotropic\n"
-   "step of E (units of l^2; the paper's prefiltered M_eps); default 1e-3;\n"
-   "0: on the current surface (set_epsilon)",
-   [](Options& o, const std::string& flag, const std::string& v) { set_number(o.epsilon, o.has_epsilon, flag, v, true, true); }},
-  {"--tangential-motion", nullptr, "remove|keep",
-   "the anisotropic flow moves control points along the surface's\n"
-   "normal only (remove, the default: the tangential part of div(D grad x)\n"
-   "folds noisy meshes) or also within it, as the paper does (keep;\n"
-   "set_normal_motion_only)",
-   [](Options& o, const std::string& flag, const std::string& v) {
-     o.normal_motion_only = choice(flag, v, tangential_words);
-     o.has_tangential_motion = true;
-   }},
-  {"--solver", nullptr, "auto|cg|cholesky", "linear solver: automatic (default), conjugate gradients, sparse LDL^T\n"
-   "(linear_solver)",
-   [](Options& o, const std::string& flag, const std::string& v) {
-     o.fairing.linear_solver = choice(flag, v, solver_words);
-   }},
-  {"--boundary", nullptr, "curve|vertices",
-   "on a mesh with borders, hold the limit boundary curve (default: the\n"
-   "boundary vertices and the interior vertices that shape the curve) or only\n"
-   "the boundary vertices (the paper's choice; the border may slide;\n"
-   "boundary_handling). Boundary vertices are written unchanged either way",
-   [](Options& o, const std::string& flag, const std::string& v) {
-     o.fairing.boundary_handling = choice(flag, v, boundary_words);
-   }},
-  {"--quadrature-degree", nullptr, "4|6|8", "Gauss rule per face for the Loop element (default 8; quadrature_degree)",
-   [](Options& o, const std::string& flag, const std::string& v) {
-     o.fairing.quadrature_degree = choice(flag, v, quadrature_words);
-   }},
+const Option_spec parameter_options[] = {
+#include <CGAL/Anisotropic_fairing/internal/parameter_table.h>
+};
+#undef AF_PARAMETER
+#undef AF_TENSOR_SETTING
+
+// Spellings kept working, each with the option it now names and the warning it gives.
+struct Deprecated_flag
+{
+  const char* flag;
+  const char* now;
+  const char* warning;
+};
+const Deprecated_flag deprecated_flags[] = {
+  {"--maximum-deviation", "--absolute-maximum-deviation",
+   "--maximum-deviation is deprecated: write --absolute-maximum-deviation (model units, as here) or "
+   "--relative-maximum-deviation (units of l, as the library's maximum_deviation)"},
+};
+
+// The program's own options, after the parameters' in the help.
+const Option_spec program_options[] = {
   {"--attributes", nullptr, "NAME,...",
    "the per-vertex attributes to fair, in this order, as one vector per\n"
    "vertex: PLY: any numeric vertex property by name (quality, u, v, s, t,\n"
@@ -198,21 +88,6 @@ const Option_spec option_table[] = {
    "back into their own properties with their own types (integers rounded\n"
    "and clamped, colours to 0..255)",
    [](Options& o, const std::string&, const std::string& v) { o.attributes = parse_attribute_list(v); }},
-  {"--mode", nullptr, "separate|coupled|attributes|geometry",
-   "how they are faired: separate (the default with\n"
-   "--attributes): with the operator of the geometry's surface; coupled: as one\n"
-   "surface with the geometry in R^(3+d); attributes: the geometry is fixed (not\n"
-   "written) and only the attributes diffuse on it; geometry (the default\n"
-   "without --attributes): the attributes are not faired. coupled and\n"
-   "attributes need --attributes (attribute_mode)",
-   [](Options& o, const std::string& flag, const std::string& v) {
-     o.fairing.attribute_mode = choice(flag, v, mode_words);
-   }},
-  {"--attribute-weight", nullptr, "W", "coupled: the length that one attribute unit counts for (> 0, default 1;\n"
-   "attribute_weight)",
-   [](Options& o, const std::string& flag, const std::string& v) {
-     set_number(o.fairing.attribute_weight, o.has_attribute_weight, flag, v, false);
-   }},
   {"--curvature", nullptr, nullptr,
    "also write the curvature of the faired Loop limit surface at each vertex\n"
    "as the PLY vertex properties k1, k2 (principal curvatures, k1 <= k2) and\n"
@@ -323,10 +198,32 @@ const char* const help_after_options =
 "On failure one line starting with\n"
 "\"anisotropic_fairing: \" is printed on stderr and OUTPUT is not created (an existing one is left as is).\n";
 
-const Option_spec* find_option(const std::string& arg)
+// every option: the parameters' that have one, then the program's own
+const std::vector<Option_spec>& option_table()
 {
-  for(const Option_spec& s : option_table)
-    if(arg == s.name || (s.alias && arg == s.alias)) return &s;
+  static const std::vector<Option_spec> table = [] {
+    std::vector<Option_spec> t;
+    for(const Option_spec& s : parameter_options)
+      if(s.name) t.push_back(s);
+    t.insert(t.end(), std::begin(program_options), std::end(program_options));
+    return t;
+  }();
+  return table;
+}
+
+// the option that `arg` names; a deprecated spelling names the option it now is, and gives its `warning`
+const Option_spec* find_option(const std::string& arg, const char*& warning)
+{
+  std::string name = arg;
+  warning = nullptr;
+  for(const Deprecated_flag& d : deprecated_flags)
+    if(arg == d.flag)
+    {
+      warning = d.warning;
+      name = d.now;
+    }
+  for(const Option_spec& s : option_table())
+    if(name == s.name || (s.alias && name == s.alias)) return &s;
   return nullptr;
 }
 
@@ -335,7 +232,8 @@ const Option_spec* find_option(const std::string& arg)
 // --mode, or its default: separate with --attributes, geometry without
 AF::Attribute_mode effective_mode(const Options& o)
 {
-  return o.fairing.attribute_mode.value_or(o.attributes.empty() ? AF::Attribute_mode::GEOMETRY_ONLY : AF::Attribute_mode::SEPARATE);
+  return o.fairing.attribute_mode.value_or(o.attributes.empty() ? AF::Attribute_mode::GEOMETRY_ONLY
+                                                                : AF::Attribute_mode::SEPARATE);
 }
 
 const char* mode_name(AF::Attribute_mode m)
@@ -367,7 +265,8 @@ bool format_of(const std::string& path, Format& f)
 std::string version_text()
 {
   return std::string("anisotropic_fairing ") + AF_VERSION + " (Anisotropic_fairing " + AF_VERSION + ")\n" +
-         "CGAL " + CGAL_VERSION_STR + ", Eigen " + std::to_string(EIGEN_WORLD_VERSION) + "." + std::to_string(EIGEN_MAJOR_VERSION) + "." +
+         "CGAL " + CGAL_VERSION_STR + ", Eigen " + std::to_string(EIGEN_WORLD_VERSION) + "." +
+         std::to_string(EIGEN_MAJOR_VERSION) + "." +
          std::to_string(EIGEN_MINOR_VERSION) + ", Boost " + std::to_string(BOOST_VERSION / 100000) + "." +
          std::to_string(BOOST_VERSION / 100 % 1000) + "." + std::to_string(BOOST_VERSION % 100) + "\n";
 }
@@ -375,7 +274,7 @@ std::string version_text()
 std::string help_text()
 {
   std::string text = help_before_options;
-  for(const Option_spec& s : option_table)
+  for(const Option_spec& s : option_table())
   {
     std::string line = std::string("  ") + s.name + (s.value ? std::string(" ") + s.value : std::string());
     line += line.size() <= 25 ? std::string(28 - line.size(), ' ') : std::string(3, ' ');
@@ -384,7 +283,8 @@ std::string help_text()
     text += line + "\n";
   }
   // the report's keys, from the report itself, wrapped like the rest
-  std::string keys = "JSON report (--report; the manual's page on the program says what each key holds; unknown values are null): " +
+  std::string keys =
+    "JSON report (--report; the manual's page on the program says what each key holds; unknown values are null): " +
                      report_keys() + ".";
   std::string wrapped, line;
   std::size_t start = 0;
@@ -418,66 +318,78 @@ std::string report_refused_on_failure(const Options& o)
   in.read(&head[0], std::streamsize(head.size()));
   head.resize(std::size_t(in.gcount()));
   const std::size_t first = head.find_first_not_of(" \t\r\n");
-  if(!fs::is_regular_file(o.report, ec) || first == std::string::npos || head[first] != '{' || head.find("\"status\"") == std::string::npos)
+  if(!fs::is_regular_file(o.report, ec) || first == std::string::npos || head[first] != '{' ||
+     head.find("\"status\"") == std::string::npos)
     return "it exists and is not a report of this program";
   return std::string();
 }
 
-void parse_arguments(int argc, char** argv, Options& o)
+namespace {
+
+// One option with its value: `arg` as given, its value inline (--option=value) or the next argument.
+void read_option(std::string arg, int argc, char** argv, int& i, Options& o)
 {
-  std::vector<std::string> positional;
-  Failure first_error{0, "", ""};
-  bool has_error = false;
+  std::string value;
+  bool has_inline_value = false;
+  const std::size_t eq = arg.find('=');
+  if(arg.compare(0, 2, "--") == 0 && eq != std::string::npos)
+  {
+    value = arg.substr(eq + 1);
+    arg = arg.substr(0, eq);
+    has_inline_value = true;
+  }
+  const char* warning = nullptr;
+  const Option_spec* spec = find_option(arg, warning);
+  if(!spec) usage_error("unknown option " + arg);
+  if(!spec->value && has_inline_value) usage_error(arg + " takes no value");
+  if(spec->value && !has_inline_value)
+  {
+    if(i + 1 >= argc) usage_error(arg + " needs a value");
+    value = argv[++i];
+  }
+  if(warning) o.deprecations.push_back(warning);
+  spec->apply(o, arg, value);
+}
+
+// Reads every argument into `o`, the options in the order given, and returns the first usage error, if any.
+std::optional<Failure> read_arguments(int argc, char** argv, Options& o)
+{
+  std::optional<Failure> first_error;
   for(int i = 1; i < argc; ++i)
   {
-    std::string arg = argv[i];
-    if(arg.size() < 2 || arg[0] != '-') { positional.push_back(arg); continue; }
-    if(arg == "--") { for(++i; i < argc; ++i) positional.push_back(argv[i]); break; }
-    std::string value;
-    bool has_inline_value = false;
-    const std::size_t eq = arg.find('=');
-    if(arg.compare(0, 2, "--") == 0 && eq != std::string::npos)
-    {
-      value = arg.substr(eq + 1);
-      arg = arg.substr(0, eq);
-      has_inline_value = true;
-    }
+    const std::string arg = argv[i];
+    if(arg.size() < 2 || arg[0] != '-') { o.positional.push_back(arg); continue; }
+    if(arg == "--") { for(++i; i < argc; ++i) o.positional.push_back(argv[i]); break; }
     try
     {
-      const Option_spec* spec = find_option(arg);
-      if(!spec) usage_error("unknown option " + arg);
-      if(!spec->value && has_inline_value) usage_error(arg + " takes no value");
-      if(spec->value && !has_inline_value)
-      {
-        if(i + 1 >= argc) usage_error(arg + " needs a value");
-        value = argv[++i];
-      }
-      spec->apply(o, arg, value);
+      read_option(arg, argc, argv, i, o);
     }
     catch(const Failure& f)
     {
       // keep reading, so that a --report given later is still honoured, then report the first problem
-      if(!has_error) { first_error = f; has_error = true; }
+      if(!first_error) first_error = f;
     }
   }
-  o.positional = positional;
-  if(o.help || o.version) return;
-  if(has_error) throw first_error;
-  if(positional.size() < 2) usage_error("INPUT and OUTPUT are required");
-  if(positional.size() > 2) usage_error("unexpected argument " + quoted_excerpt(positional[2], 200));
-  o.input = positional[0];
-  o.output = positional[1];
+  return first_error;
+}
+
+// The checks between the parameters' options, then the tensor they make.
+void check_parameters(Options& o)
+{
   const AF::Fairing_options& given = o.fairing;
-  if(given.time_step && given.relative_time_step) usage_error("give either --time-step or --relative-time-step, not both");
-  if(given.fidelity_weight && given.relative_fidelity_weight) usage_error("give either --fidelity or --relative-fidelity, not both");
+  if(given.time_step && given.relative_time_step)
+    usage_error("give either --time-step or --relative-time-step, not both");
+  if(given.fidelity_weight && given.relative_fidelity_weight)
+    usage_error("give either --fidelity or --relative-fidelity, not both");
   if(given.absolute_maximum_deviation && given.relative_maximum_deviation)
     usage_error("give either --absolute-maximum-deviation or --relative-maximum-deviation, not both");
   const AF::Attribute_mode mode = effective_mode(o);
   if(o.attributes.empty() && (mode == AF::Attribute_mode::COUPLED || mode == AF::Attribute_mode::ATTRIBUTES_ONLY))
     usage_error(std::string("--mode ") + mode_name(mode) + " needs --attributes");
   // --strength scales the noise stop's target: where no run stops at the noise level it would change nothing
-  const bool noise_stop = mode != AF::Attribute_mode::ATTRIBUTES_ONLY &&
-                          (given.stopping_criteria ? given.stopping_criteria->noise_discrepancy > 0 : given.automatic_parameters());
+  const bool noise_stop =
+    mode != AF::Attribute_mode::ATTRIBUTES_ONLY &&
+    (given.stopping_criteria ? given.stopping_criteria->noise_discrepancy > 0 : given.automatic_parameters());
   if(given.strength != 1 && !noise_stop)
     usage_error(std::string("--strength scales the noise stop, which this run does not use (") +
                 (mode == AF::Attribute_mode::ATTRIBUTES_ONLY ? "--mode attributes fairs on a fixed surface"
@@ -488,30 +400,37 @@ void parse_arguments(int argc, char** argv, Options& o)
   if(o.has_lambda && !asked_anisotropic) usage_error("--lambda needs --tensor anisotropic");
   if(o.has_epsilon && !asked_anisotropic) usage_error("--epsilon needs --tensor anisotropic");
   if(o.has_tangential_motion && !asked_anisotropic) usage_error("--tangential-motion needs --tensor anisotropic");
-  o.fairing.diffusion_tensor = package_tensor(o.tensor, given.automatic_parameters(), o.has_lambda || o.has_epsilon || o.has_tangential_motion,
-                                              o.lambda, o.epsilon, o.normal_motion_only);
+  const bool settings = o.has_lambda || o.has_epsilon || o.has_tangential_motion;
+  o.fairing.diffusion_tensor =
+    package_tensor(o.tensor, given.automatic_parameters(), settings, o.lambda, o.epsilon, o.normal_motion_only);
+}
+
+// The report may overwrite no other file of the command line.
+void check_report_path(Options& o)
+{
+  if(o.report.empty()) return;
+  const auto hold_file = [&o] { return !o.hold.empty() && fs::is_regular_file(o.hold) && same_file(o.report, o.hold); };
+  const char* clash = same_file(o.report, o.input)    ? " is the INPUT: it would be overwritten"
+                      : same_file(o.report, o.output) ? " is the OUTPUT: one would overwrite the other"
+                      : hold_file()                   ? " is --hold's file: it would be overwritten"
+                                                      : nullptr;
+  if(!clash) return;
+  o.report_refused = true;
+  usage_error("the report " + o.report + clash);
+}
+
+// The files: their formats, and nothing written over the input or another file written.
+void check_files(Options& o)
+{
   Format f;
   if(!format_of(o.input, f)) usage_error("INPUT must be an .off, .obj, .ply or .stl file: " + o.input);
   if(!format_of(o.output, f)) usage_error("OUTPUT must be an .off, .obj, .ply or .stl file: " + o.output);
   // nothing written may overwrite the input or another file written (the report is not written either)
   if(same_file(o.output, o.input)) usage_error("OUTPUT " + o.output + " is the INPUT: it would be overwritten");
-  if(!o.report.empty() && same_file(o.report, o.input))
-  {
-    o.report_refused = true;
-    usage_error("the report " + o.report + " is the INPUT: it would be overwritten");
-  }
-  if(!o.report.empty() && same_file(o.report, o.output))
-  {
-    o.report_refused = true;
-    usage_error("the report " + o.report + " is the OUTPUT: one would overwrite the other");
-  }
-  if(!o.report.empty() && !o.hold.empty() && fs::is_regular_file(o.hold) && same_file(o.report, o.hold))
-  {
-    o.report_refused = true;
-    usage_error("the report " + o.report + " is --hold's file: it would be overwritten");
-  }
+  check_report_path(o);
   if(o.curvature && f != Format::PLY)
     usage_error("--curvature needs a .ply OUTPUT (k1, k2 and mean_curvature are written as vertex properties)");
+  const AF::Fairing_options& given = o.fairing;
   if(o.has_resample && given.finite_element != AF::Finite_element::LOOP)
     usage_error("--resample needs --element loop (it writes the Loop limit surface)");
   if(o.has_resample && given.output_positions != AF::Output_positions::LIMIT_SURFACE)
@@ -526,6 +445,22 @@ void parse_arguments(int argc, char** argv, Options& o)
   }
   if(o.curvature && given.finite_element != AF::Finite_element::LOOP)
     usage_error("--curvature needs --element loop (the linear element has no curvature)");
+}
+
+} // namespace
+
+void parse_arguments(int argc, char** argv, Options& o)
+{
+  o.positional.clear();
+  const std::optional<Failure> first_error = read_arguments(argc, argv, o);
+  if(o.help || o.version) return;
+  if(first_error) throw *first_error;
+  if(o.positional.size() < 2) usage_error("INPUT and OUTPUT are required");
+  if(o.positional.size() > 2) usage_error("unexpected argument " + quoted_excerpt(o.positional[2], 200));
+  o.input = o.positional[0];
+  o.output = o.positional[1];
+  check_parameters(o);
+  check_files(o);
 }
 
 } // namespace af_tool

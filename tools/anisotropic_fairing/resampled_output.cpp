@@ -44,7 +44,8 @@ std::vector<std::string> function_properties(const Mesh& mesh, const Input_info&
 {
   std::vector<std::string> names;
   for(const std::string& p : mesh.properties<Vertex_index>())
-    if(p.compare(0, 2, "v:") == 0 && is_numeric_property<Vertex_index>(mesh, p) && !(curvature && is_curvature_property(p)))
+    if(p.compare(0, 2, "v:") == 0 && is_numeric_property<Vertex_index>(mesh, p) &&
+       !(curvature && is_curvature_property(p)))
       names.push_back(p.substr(2));
   if(mesh.property_map<Vertex_index, CGAL::IO::Color>("v:color").second)
   {
@@ -61,7 +62,8 @@ bool add_same_property(const Mesh& from, Mesh& to, const std::string& name)
 {
   bool added = false;
   (void)std::initializer_list<int>{ (added = added || (from.property_map<Index, Types>(name).second &&
-                                                       (to.add_property_map<Index, Types>(name, Types()), true)), 0)... };
+                                                       (to.add_property_map<Index, Types>(name, Types()), true)),
+                                     0)... };
   return added;
 }
 
@@ -80,8 +82,8 @@ template <typename Index>
 void copy_property(const Mesh& from, Mesh& to, const std::string& name, const std::vector<Index>& source)
 {
   for_numeric_type([&](auto zero) { return copy_values<Index, decltype(zero)>(from, to, name, source); }) ||
-      copy_values<Index, CGAL::IO::Color>(from, to, name, source) || copy_values<Index, Vector>(from, to, name, source) ||
-      copy_values<Index, Texcoord>(from, to, name, source);
+    copy_values<Index, CGAL::IO::Color>(from, to, name, source) || copy_values<Index, Vector>(from, to, name, source) ||
+    copy_values<Index, Texcoord>(from, to, name, source);
 }
 
 // Adds to `to` every property of `from` with key Index, of a type the files hold; returns their names.
@@ -92,11 +94,65 @@ std::vector<std::string> add_properties(const Mesh& from, Mesh& to, const char* 
   for(const std::string& p : from.properties<Index>())
   {
     if(p.compare(0, 2, prefix) != 0 || to.property_map<Index, Point>(p).second) continue;   // v:point
-    if(add_same_property<Index, boost::int8_t, boost::uint8_t, boost::int16_t, boost::uint16_t, boost::int32_t, boost::uint32_t,
-                         boost::int64_t, boost::uint64_t, float, double, CGAL::IO::Color, Vector, Texcoord>(from, to, p))
+    if(add_same_property<Index, boost::int8_t, boost::uint8_t, boost::int16_t, boost::uint16_t, boost::int32_t,
+                         boost::uint32_t, boost::int64_t, boost::uint64_t, float, double, CGAL::IO::Color, Vector,
+                         Texcoord>(from, to, p))
       names.push_back(p);
   }
   return names;
+}
+
+// The control values of every function on the surface: the faired attributes by their faired control
+// values, the others by their values. A property holding NaN or infinity (never a faired one) has no limit
+// where those values reach: resampled with 0 in their place and beside it their indicator, whose limit is
+// positive exactly where they reach (Loop's weights are positive), NaN is written there.
+std::vector<Values> function_controls(const std::vector<Attribute_column>& columns, const std::vector<Values>& written,
+                                      const Faired_controls& faired)
+{
+  std::vector<Values> controls = written;
+  for(std::size_t c = 0; c < columns.size(); ++c)
+    for(std::size_t f = 0; f < faired.columns->size(); ++f)
+      if(columns[c].name == (*faired.columns)[f].name)
+        for(std::size_t i = 0; i < controls.size(); ++i) controls[i][c] = (*faired.values)[i][f];
+  const std::size_t d = columns.size();
+  for(Values& row : controls) row.resize(2 * d, 0.0);
+  for(Values& row : controls)
+    for(std::size_t c = 0; c < d; ++c)
+      if(!std::isfinite(row[c])) { row[c] = 0; row[d + c] = 1; }
+  return controls;
+}
+
+// `fine`: the limit surface of `control` at `levels` levels, its normals (if the input has normals), its
+// curvature (with --curvature) and, in `values`, the limits of the functions' control values.
+void resample_limit(const Mesh& control, unsigned levels, const Input_info& info, bool curvature,
+                    int quadrature_degree, bool with_functions, std::vector<Values>& controls, Mesh& fine,
+                    std::vector<Values>& values)
+{
+  const Limit limit(control, AF::parameters::quadrature_degree(curvature ? quadrature_degree : 4));
+  std::vector<Limit::Curvature> curvatures;
+  const Growing_map<Limit::Curvature> curvature_map{&curvatures};
+  // removed below if the input has none
+  auto normals = fine.add_property_map<Vertex_index, Vector>("v:normal").first;
+  auto resample = [&](const auto& np) {
+    if(!with_functions) limit.resample(levels, fine, np);
+    else limit.resample(levels, fine, Attribute_vectors{&controls}, Growing_map<Values>{&values}, np);
+  };
+  const auto with_normals = AF::parameters::vertex_normal_map(normals);
+  // the curvature only when asked: it costs a quadrature pass
+  if(curvature) resample(with_normals.vertex_curvature_map(curvature_map));
+  else resample(with_normals);
+  if(!info.has_normals) fine.remove_property_map(normals);
+  if(!curvature) return;
+  auto k1 = fine.property_map<Vertex_index, double>("v:k1").first;
+  auto k2 = fine.property_map<Vertex_index, double>("v:k2").first;
+  auto h = fine.property_map<Vertex_index, double>("v:mean_curvature").first;
+  for(Vertex_index v : fine.vertices())
+  {
+    const Limit::Curvature& c = curvatures[std::size_t(v)];
+    k1[v] = c.k1;
+    k2[v] = c.k2;
+    h[v] = 0.5 * (c.k1 + c.k2);
+  }
 }
 
 } // namespace
@@ -107,7 +163,8 @@ void check_resample_size(const Mesh& mesh, unsigned levels)
   if(faces > resample_face_budget)
   {
     char text[200];
-    std::snprintf(text, sizeof text, "--resample %u would write %.3g faces (%zu x 4^%u), more than the %.3g this program writes", levels,
+    std::snprintf(text, sizeof text,
+                  "--resample %u would write %.3g faces (%zu x 4^%u), more than the %.3g this program writes", levels,
                   faces, std::size_t(mesh.number_of_faces()), levels, resample_face_budget);
     fail("invalid_parameter", text);
   }
@@ -120,56 +177,19 @@ void resample_output(Mesh& mesh, const Input_info& info, const std::string& inpu
   Mesh control = mesh;
   for(Vertex_index v : control.vertices()) control.point(v) = (*faired.points)[std::size_t(v)];
 
-  // every function on the surface: the faired attributes by their control values, the others by their values
   Mesh& coarse = mesh;
-  const std::vector<Attribute_column> columns = resolve_attributes(coarse, info, input, function_properties(coarse, info, curvature));
-  std::vector<Values> written, controls;
+  const std::vector<Attribute_column> columns =
+      resolve_attributes(coarse, info, input, function_properties(coarse, info, curvature));
+  std::vector<Values> written;
   gather(coarse, columns, written, false);
-  controls = written;
-  for(std::size_t c = 0; c < columns.size(); ++c)
-    for(std::size_t f = 0; f < faired.columns->size(); ++f)
-      if(columns[c].name == (*faired.columns)[f].name)
-        for(std::size_t i = 0; i < controls.size(); ++i) controls[i][c] = (*faired.values)[i][f];
-  // a property holding NaN or infinity (never a faired one) has no limit where those values reach:
-  // resampled with 0 in their place and beside it their indicator, whose limit is positive exactly
-  // where they reach (Loop's weights are positive), NaN is written there
+  std::vector<Values> controls = function_controls(columns, written, faired);
   const std::size_t d = columns.size();
-  for(Values& row : controls) row.resize(2 * d, 0.0);
-  for(Values& row : controls)
-    for(std::size_t c = 0; c < d; ++c)
-      if(!std::isfinite(row[c])) { row[c] = 0; row[d + c] = 1; }
 
   Mesh fine;
   const std::vector<std::string> vertex_properties = add_properties<Vertex_index>(coarse, fine, "v:");
   const std::vector<std::string> face_properties = add_properties<Face_index>(coarse, fine, "f:");
   std::vector<Values> values;
-  {
-    const Limit limit(control, AF::parameters::quadrature_degree(curvature ? quadrature_degree : 4));
-    std::vector<Limit::Curvature> curvatures;
-    const Growing_map<Limit::Curvature> curvature_map{&curvatures};
-    auto normals = fine.add_property_map<Vertex_index, Vector>("v:normal").first;   // removed below if the input has none
-    auto resample = [&](const auto& np) {
-      if(columns.empty()) limit.resample(levels, fine, np);
-      else limit.resample(levels, fine, Attribute_vectors{&controls}, Growing_map<Values>{&values}, np);
-    };
-    const auto with_normals = AF::parameters::vertex_normal_map(normals);
-    if(curvature) resample(with_normals.vertex_curvature_map(curvature_map));   // only then: it costs a quadrature pass
-    else resample(with_normals);
-    if(!info.has_normals) fine.remove_property_map(normals);
-    if(curvature)
-    {
-      auto k1 = fine.property_map<Vertex_index, double>("v:k1").first;
-      auto k2 = fine.property_map<Vertex_index, double>("v:k2").first;
-      auto h = fine.property_map<Vertex_index, double>("v:mean_curvature").first;
-      for(Vertex_index v : fine.vertices())
-      {
-        const Limit::Curvature& c = curvatures[std::size_t(v)];
-        k1[v] = c.k1;
-        k2[v] = c.k2;
-        h[v] = 0.5 * (c.k1 + c.k2);
-      }
-    }
-  }
+  resample_limit(control, levels, info, curvature, quadrature_degree, !columns.empty(), controls, fine, values);
 
   // the input's vertices as the run without --resample writes them, every property included
   const std::size_t n = coarse.number_of_vertices();

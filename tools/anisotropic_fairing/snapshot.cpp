@@ -44,7 +44,8 @@ void render_snapshot(const std::string& script, const std::string& input, const 
 
   // the renderer's messages go to a file, so that a failure is still one line of ours
   const fs::path log = fs::temp_directory_path(ec) / ("af_snapshot_" + std::to_string(long(::getpid())) + ".log");
-  std::vector<std::string> args = { python, script, "--output", png, "--title", input_title, "--title", result_title, input, result };
+  std::vector<std::string> args = { python,      script,    "--output",   png,   "--title",
+                                    input_title, "--title", result_title, input, result };
   std::vector<char*> argv;
   for(std::string& a : args) argv.push_back(&a[0]);
   argv.push_back(nullptr);
@@ -64,9 +65,11 @@ void render_snapshot(const std::string& script, const std::string& input, const 
       if(line.find_first_not_of(" \t\r") != std::string::npos) last = line;
   }
   fs::remove(log, ec);
-  if(spawned != 0) fail("snapshot_error", "--snapshot: cannot run " + python + " (set AF_PYTHON to a Python 3 with VTK)");
+  if(spawned != 0)
+    fail("snapshot_error", "--snapshot: cannot run " + python + " (set AF_PYTHON to a Python 3 with VTK)");
   if(!WIFEXITED(status) || WEXITSTATUS(status) != 0 || !fs::exists(png, ec))
-    fail("snapshot_error", "--snapshot: rendering " + name + " failed" + (last.empty() ? std::string() : ": " + one_line(last)));
+    fail("snapshot_error",
+         "--snapshot: rendering " + name + " failed" + (last.empty() ? std::string() : ": " + one_line(last)));
 }
 
 } // namespace af_tool

@@ -62,7 +62,8 @@ public:
     const auto r = std::from_chars(t.data(), t.data() + t.size(), v);
     if(r.ec == std::errc::result_out_of_range)
       fail(std::string(what) + " " + quoted_excerpt(t) + " is outside the range of double precision");
-    if(r.ec != std::errc() || r.ptr != t.data() + t.size()) fail(std::string(what) + " " + quoted_excerpt(t) + " is not a number");
+    if(r.ec != std::errc() || r.ptr != t.data() + t.size())
+      fail(std::string(what) + " " + quoted_excerpt(t) + " is not a number");
     if(finite && !std::isfinite(v)) fail(std::string(what) + " " + quoted_excerpt(t) + " is not a finite number");
     return v;
   }
@@ -73,7 +74,8 @@ public:
     long long v = 0;
     if(!t.empty() && t.front() == '+') t.remove_prefix(1);
     const auto r = std::from_chars(t.data(), t.data() + t.size(), v);
-    if(r.ec != std::errc() || r.ptr != t.data() + t.size()) fail(std::string(what) + " " + quoted_excerpt(t) + " is not an integer");
+    if(r.ec != std::errc() || r.ptr != t.data() + t.size())
+      fail(std::string(what) + " " + quoted_excerpt(t) + " is not an integer");
     return v;
   }
 

@@ -42,8 +42,14 @@ struct Failure
   std::string message;
 };
 
-[[noreturn]] inline void usage_error(const std::string& message) { throw Failure{2, "usage_error", message + " (see --help)"}; }
-[[noreturn]] inline void fail(const std::string& status, const std::string& message) { throw Failure{1, status, message}; }
+[[noreturn]] inline void usage_error(const std::string& message)
+{
+  throw Failure{ 2, "usage_error", message + " (see --help)" };
+}
+[[noreturn]] inline void fail(const std::string& status, const std::string& message)
+{
+  throw Failure{ 1, status, message };
+}
 
 // seconds since the program started (the report's wall_seconds)
 double elapsed_seconds();

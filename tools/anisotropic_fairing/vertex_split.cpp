@@ -15,7 +15,8 @@ namespace af_tool {
 void copy_properties_to_copies(Mesh& mesh, const Vertex_split& split)
 {
   for(std::size_t i = 0; i < split.copy_of.size(); ++i)
-    copy_properties(mesh, Vertex_index(Mesh::size_type(split.copy_of[i])), Vertex_index(Mesh::size_type(split.file_vertices + i)));
+    copy_properties(mesh, Vertex_index(Mesh::size_type(split.copy_of[i])),
+                    Vertex_index(Mesh::size_type(split.file_vertices + i)));
 }
 
 namespace {
@@ -52,8 +53,13 @@ Vertex_index vertex(std::size_t v) { return Vertex_index(Mesh::size_type(v)); }
 void merge_copies(Mesh& mesh, const Vertex_split& split)
 {
   if(split.empty()) return;
-  average<3>(split, [&](std::size_t v) { const Point& p = mesh.point(vertex(v)); return std::array<double, 3>{p.x(), p.y(), p.z()}; },
-             [&](std::size_t v, const std::array<double, 3>& x) { mesh.point(vertex(v)) = Point(x[0], x[1], x[2]); });
+  average<3>(
+    split,
+    [&](std::size_t v) {
+      const Point& p = mesh.point(vertex(v));
+      return std::array<double, 3>{ p.x(), p.y(), p.z() };
+    },
+    [&](std::size_t v, const std::array<double, 3>& x) { mesh.point(vertex(v)) = Point(x[0], x[1], x[2]); });
   for(const std::string& name : mesh.properties<Vertex_index>())
   {
     if(is_internal_property(name)) continue;
@@ -69,17 +75,28 @@ void merge_copies(Mesh& mesh, const Vertex_split& split)
     if(vectors.second)
     {
       const bool unit = name == "v:normal";
-      average<3>(split, [&](std::size_t v) { const Vector& n = vectors.first[vertex(v)]; return std::array<double, 3>{n.x(), n.y(), n.z()}; },
-                 [&](std::size_t v, const std::array<double, 3>& x) {
-                   const double length = unit ? std::sqrt(x[0] * x[0] + x[1] * x[1] + x[2] * x[2]) : 1.0;
-                   vectors.first[vertex(v)] = length > 0 ? Vector(x[0] / length, x[1] / length, x[2] / length) : Vector(x[0], x[1], x[2]);
-                 });
+      average<3>(
+        split,
+        [&](std::size_t v) {
+          const Vector& n = vectors.first[vertex(v)];
+          return std::array<double, 3>{ n.x(), n.y(), n.z() };
+        },
+        [&](std::size_t v, const std::array<double, 3>& x) {
+          const double length = unit ? std::sqrt(x[0] * x[0] + x[1] * x[1] + x[2] * x[2]) : 1.0;
+          vectors.first[vertex(v)] =
+            length > 0 ? Vector(x[0] / length, x[1] / length, x[2] / length) : Vector(x[0], x[1], x[2]);
+        });
       continue;
     }
     auto uv = mesh.property_map<Vertex_index, Texcoord>(name);
     if(uv.second)
-      average<2>(split, [&](std::size_t v) { const Texcoord& t = uv.first[vertex(v)]; return std::array<double, 2>{t.x(), t.y()}; },
-                 [&](std::size_t v, const std::array<double, 2>& x) { uv.first[vertex(v)] = Texcoord(x[0], x[1]); });
+      average<2>(
+        split,
+        [&](std::size_t v) {
+          const Texcoord& t = uv.first[vertex(v)];
+          return std::array<double, 2>{ t.x(), t.y() };
+        },
+        [&](std::size_t v, const std::array<double, 2>& x) { uv.first[vertex(v)] = Texcoord(x[0], x[1]); });
   }
 }
 
@@ -215,7 +232,8 @@ std::size_t size_of(const std::string& type, const std::string& path)
 {
   if(type == "char" || type == "uchar" || type == "int8" || type == "uint8") return 1;
   if(type == "short" || type == "ushort" || type == "int16" || type == "uint16") return 2;
-  if(type == "int" || type == "uint" || type == "int32" || type == "uint32" || type == "float" || type == "float32") return 4;
+  if(type == "int" || type == "uint" || type == "int32" || type == "uint32" || type == "float" || type == "float32")
+    return 4;
   if(type == "double" || type == "float64") return 8;
   cannot(path, "unknown PLY type " + type);
 }
@@ -251,7 +269,8 @@ std::string merged_ply(const std::string& text, const Vertex_split& split, const
       if(w[1] == "vertex") written = "element vertex " + std::to_string(split.file_vertices) + "\n";
     }
     if(!w.empty() && w[0] == "property" && !elements.empty())
-      elements.back().properties.push_back(w.at(1) == "list" ? Ply_property{w.at(4), w.at(3), w.at(2)} : Ply_property{w.at(2), w.at(1), ""});
+      elements.back().properties.push_back(w.at(1) == "list" ? Ply_property{ w.at(4), w.at(3), w.at(2) }
+                                                             : Ply_property{ w.at(2), w.at(1), "" });
     header += written;
   }
   header += "end_header\n";
@@ -313,14 +332,17 @@ std::string merged_ply(const std::string& text, const Vertex_split& split, const
 
 void merge_copies_in_file(const std::string& path, Format format, const Vertex_split& split)
 {
-  if(split.empty() || format == Format::STL) return;   // STL has no vertices: the merged positions are written as they are
+  if(split.empty() || format == Format::STL)
+    return; // STL has no vertices: the merged positions are written as they are
   std::ifstream in(path, std::ios::binary);
   const std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
   if(!in.good() && !in.eof()) cannot(path, "it cannot be read back");
   std::string merged;
   try
   {
-    merged = format == Format::OFF ? merged_off(text, split, path) : format == Format::OBJ ? merged_obj(text, split) : merged_ply(text, split, path);
+    merged = format == Format::OFF   ? merged_off(text, split, path)
+             : format == Format::OBJ ? merged_obj(text, split)
+                                     : merged_ply(text, split, path);
   }
   catch(const std::logic_error& e)   // stoull, at(): a file write_mesh() would not write
   {

@@ -1,8 +1,9 @@
 // Copyright (c) 2026 Anisotropic_fairing developers.
 // SPDX-License-Identifier: GPL-3.0-or-later
 //
-// The curvature-driven diffusion tensor of Bajaj & Xu (section 5), as reconstructed in doc/Anisotropic_fairing/design/loop-fem.md
-// section 7: along each principal direction e_a the diffusion is scaled by g(k_a), an edge-stopping
+// The curvature-driven diffusion tensor of Bajaj & Xu (section 5), as reconstructed in
+// doc/Anisotropic_fairing/design/loop-fem.md section 7: along each principal direction e_a the diffusion is scaled by
+// g(k_a), an edge-stopping
 // function of the principal curvature that is 1 below the feature threshold lambda and falls off
 // above it, so that noise (small curvature) is smoothed while creases (large curvature) are not.
 
@@ -27,7 +28,8 @@ namespace Anisotropic_fairing {
 curvatures and directions (`principal_curvatures()`: with respect to the oriented normal for a surface
 in \f$\mathbb{R}^3\f$, to \f$h = H/|H|\f$ for a surface with attributes in \f$\mathbb{R}^{3+d}\f$) and the
 edge-stopping function
-\f[ g(s) = 1 \ \text{ if } |s| \leq \lambda, \qquad g(s) = \frac{1}{1 + (|s| - \lambda)^2/\lambda^2} \ \text{ otherwise}, \f]
+\f[ g(s) = 1 \ \text{ if } |s| \leq \lambda,
+   \qquad g(s) = \frac{1}{1 + (|s| - \lambda)^2/\lambda^2} \ \text{ otherwise}, \f]
 the paper's eq. (32) made even and continuous (as printed it jumps from 1 to 0.2 at \f$s = -\lambda\f$).
 In the face's parameters \f$A = \sum_a g(k_a)\,c_a c_a^T\f$ with \f$C^T G C = I\f$; where all
 \f$|k_a| \leq \lambda\f$ (flat and gently curved regions) this is \f$G^{-1}\f$, the isotropic tensor, and
@@ -42,9 +44,8 @@ scale. `anisotropic_fairing()` calls `set_length_scale()` with \f$\ell\f$ before
 \f$\sum_a g(k_a)\,k_a\f$, which is the anisotropic flow, and also along the surface, by the variation of
 \f$g(k_a)\f$ and \f$e_a\f$. The tangential part does not change the shape in the continuum, but on noise,
 where \f$g\f$ drops from 1 to almost 0 within one edge, it slides neighbouring control points over each
-other in a single step and folds the limit surface (on the Nicolo0.2 scan, one step of
-\f$\tau = 10^{-3}\ell^2\f$ raised \f$\int|H|^2\f$ from 2,564 to \f$1.6\cdot 10^6\f$; without the tangential
-part, to 1,817). So by default (`normal_motion_only()`) `anisotropic_fairing()` removes from each step's
+other in a single step and folds the limit surface (measured on the page \ref af_validation_page, section
+\ref sec_AF_tensor_checks). So by default (`normal_motion_only()`) `anisotropic_fairing()` removes from each step's
 displacement of a control point its component in the limit tangent plane at that vertex: of
 \f$M_\varepsilon\f$ when there is a prefilter (on noise the current surface's normal is mostly noise, and
 motion across the noisy surface is what removes it), of the current surface otherwise. Bajaj and Xu keep
@@ -61,8 +62,8 @@ public:
   /// isotropic implicit step of length \f$\varepsilon\f$ from the current one (Bajaj and Xu use
   /// \f$\varepsilon = 0.001\f$), so that noise does not pass for features; in units of \f$\ell^2\f$ if
   /// `relative`, like the time step. The default \f$10^{-3}\f$ did best on the denoising benchmark
-  /// (Fandisk0.3, 40 steps of \f$10^{-4}\ell^2\f$: 3.43 degrees against 4.41 with \f$2\cdot 10^{-3}\f$ and 5.02 with \f$3\cdot 10^{-3}\f$);
-  /// each step then costs one more isotropic assembly and solve. 0 reads the curvature on the current surface.
+  /// (\ref sec_AF_denoising); each step then costs one more isotropic assembly and solve. 0 reads the
+  /// curvature on the current surface.
   ///
   /// `normal_motion_only`: move the control points along the surface's normal only (see above).
   explicit Anisotropic_diffusion_tensor(double lambda = 2.0, bool relative = true, double epsilon = 1e-3,
@@ -93,7 +94,8 @@ public:
     if(std::isinf(lambda) && epsilon == 0) normal_motion_only_ = false;
   }
 
-  /// the threshold \f$\lambda\f$ and the prefilter time \f$\varepsilon\f$ as given (or chosen), before `set_length_scale()`
+  /// the threshold \f$\lambda\f$ and the prefilter time \f$\varepsilon\f$ as given (or chosen), before
+  /// `set_length_scale()`
   double lambda() const { return lambda_; }
   double epsilon() const { return epsilon_; }
 
@@ -104,9 +106,20 @@ public:
   /// @{
 
   /// the feature threshold \f$\lambda\f$ (units of \f$1/\ell\f$, or 1/length with `set_relative(false)`)
-  Anisotropic_diffusion_tensor& set_lambda(double lambda) { lambda_ = threshold_ = lambda; automatic_ = false; return *this; }
-  /// the prefilter time \f$\varepsilon\f$ (units of \f$\ell^2\f$, or length squared with `set_relative(false)`; 0: none)
-  Anisotropic_diffusion_tensor& set_epsilon(double epsilon) { epsilon_ = prefilter_ = epsilon; automatic_ = false; return *this; }
+  Anisotropic_diffusion_tensor& set_lambda(double lambda)
+  {
+    lambda_ = threshold_ = lambda;
+    automatic_ = false;
+    return *this;
+  }
+  /// the prefilter time \f$\varepsilon\f$ (units of \f$\ell^2\f$ , or length squared with `set_relative(false)`; 0:
+  /// none)
+  Anisotropic_diffusion_tensor& set_epsilon(double epsilon)
+  {
+    epsilon_ = prefilter_ = epsilon;
+    automatic_ = false;
+    return *this;
+  }
   /// whether \f$\lambda\f$ and \f$\varepsilon\f$ are relative to \f$\ell\f$ (the default) or in model units
   Anisotropic_diffusion_tensor& set_relative(bool relative) { relative_ = relative; return *this; }
   /// whether each step's tangential motion is removed (the default; `false`: kept, as Bajaj and Xu do)
@@ -120,7 +133,8 @@ public:
   /// \f$\varepsilon\ell^2\f$; the mean curvature below which \f$h\f$ is undefined is \f$10^{-10}/\ell\f$
   void set_length_scale(double ell)
   {
-    if(relative_) { threshold_ = lambda_ / ell; prefilter_ = epsilon_ * ell * ell; }   // (an infinite lambda stays infinite)
+    // (an infinite lambda stays infinite)
+    if(relative_) { threshold_ = lambda_ / ell; prefilter_ = epsilon_ * ell * ell; }
     undefined_ = 1e-10 / ell;
   }
 

@@ -22,8 +22,11 @@ enum class Fairing_status {
   SOLVER_FAILED,      ///< the linear solver failed (no convergence, or factorisation failure)
   NON_FINITE_VALUE,   ///< a NaN or infinite value appeared in the solution
   DEGENERATE_METRIC,  ///< the surface pinched: \f$\sqrt{\det G} \le 0\f$ (or not finite) at a quadrature point
-  COLLAPSED,          ///< a connected component of the surface shrank to (almost) nothing: area below 1% of its initial one
-  FOLDED              ///< the first step folded the surface (or made \f$\int|H|^2\f$ explode) even when retried with 1/1024 of the time step, or every step taken left more folded edges than the input had
+  /// a connected component of the surface shrank to (almost) nothing: area below 1% of its initial one
+  COLLAPSED,
+  /// the first step folded the surface (or made \f$\int|H|^2\f$ explode) even when retried with 1/1024 of the time
+  /// step, or every step taken left more folded edges than the input had
+  FOLDED
 };
 
 /// \ingroup PkgAnisotropicFairingFunctions
@@ -37,10 +40,19 @@ enum class Stop_reason {
   CALLBACK,             ///< the callback asked to stop
   NO_FREE_VERTEX,       ///< every vertex is held (constrained or on a border): nothing can move, no step is taken
   FAILURE,              ///< see `Fairing_report::status`
-  NOISE_LEVEL,          ///< the written surface moved off the input by the estimated noise (`Stopping_criteria::noise_discrepancy`); also before any step, when the limit surface of the input already does
-  STEP_REJECTED,        ///< a step would have left an unsound surface (folded, pinched, overflowing, \f$\int|H|^2\f$ exploding) even with 1/1024 of the time step: the run ended on the last sound surface, and `Fairing_report::message` says what failed
-  NOISE_REMOVED,        ///< the noise criterion, fourth-order flow: its displacement off the input stopped growing short of the estimated noise. What still moves then is shape: the displacement grows more slowly than a wave of \f$4\pi h\f$ (h: the mean edge length) decays under the flow, \f$1/16\f$ per unit of time \f$h^4\f$
-  DEVIATION_BOUND       ///< the noise criterion with a maximum deviation (`maximum_deviation`): the written surface's displacement off the input grew by less than 1% in a step, short of the estimated noise: the bound holds it there
+  /// the written surface moved off the input by the estimated noise (`Stopping_criteria::noise_discrepancy`); also
+  /// before any step, when the limit surface of the input already does
+  NOISE_LEVEL,
+  /// a step would have left an unsound surface (folded, pinched, overflowing, \f$\int|H|^2\f$ exploding) even with
+  /// 1/1024 of the time step: the run ended on the last sound surface, and `Fairing_report::message` says what failed
+  STEP_REJECTED,
+  /// the noise criterion, fourth-order flow: its displacement off the input stopped growing short of the estimated
+  /// noise. What still moves then is shape: the displacement grows more slowly than a wave of \f$4\pi h\f$ (h: the mean
+  /// edge length) decays under the flow, \f$1/16\f$ per unit of time \f$h^4\f$
+  NOISE_REMOVED,
+  /// the noise criterion with a maximum deviation (`maximum_deviation`): the written surface's displacement off the
+  /// input grew by less than 1% in a step, short of the estimated noise: the bound holds it there
+  DEVIATION_BOUND
 };
 
 /// \ingroup PkgAnisotropicFairingFunctions
@@ -60,8 +72,9 @@ inline const char* to_string(Stop_reason r)
     case Stop_reason::NOISE_REMOVED: return "noise_removed";
     case Stop_reason::DEVIATION_BOUND: return "deviation_bound";
     case Stop_reason::STEP_REJECTED: return "step_rejected";
-    default: return "failure";
+    case Stop_reason::FAILURE: return "failure";
   }
+  return "failure";   // not an enumerator: a value cast from an integer
 }
 
 /// \ingroup PkgAnisotropicFairingFunctions
@@ -75,8 +88,9 @@ inline const char* to_string(Fairing_status s)
     case Fairing_status::NON_FINITE_VALUE: return "non_finite_value";
     case Fairing_status::DEGENERATE_METRIC: return "degenerate_metric";
     case Fairing_status::FOLDED: return "folded";
-    default: return "collapsed";
+    case Fairing_status::COLLAPSED: return "collapsed";
   }
+  return "collapsed";   // not an enumerator: a value cast from an integer
 }
 
 /*!
@@ -87,20 +101,29 @@ Statistics of one time step \f$t_{n-1} \to t_n\f$; the geometric quantities are 
 struct Fairing_step
 {
   std::size_t step = 0;         ///< n (1 for the first step)
-  double time = 0;              ///< \f$t_n\f$, the sum of the time steps taken (of the largest connected component), model units
+  /// \f$t_n\f$ , the sum of the time steps taken (of the largest connected component), model units
+  double time = 0;
   double time_step = 0;         ///< the time step of this step: \f$\tau\f$, or a fraction of it after a rejected step
   int solver_iterations = 0;    ///< CG iterations (the largest over the columns), 1 for a direct solve
   double residual = 0;          ///< largest relative residual \f$\|b - AX\|/\|b\|\f$ over the columns
   double area = 0;              ///< area of the surface
-  double energy = 0;            ///< \f$\mathrm{trace}(X^T L(D) X)\f$: the Dirichlet energy (2 area when D = I); for the last step of a run whose tensor reads a prefiltered surface, D is read on the \f$M_\varepsilon\f$ the step was taken from (the surface's own would cost a prefilter solve that no step uses)
+  /// \f$\mathrm{trace}(X^T L(D) X)\f$ : the Dirichlet energy (2 area when D = I); for the last step of a run whose
+  /// tensor reads a prefiltered surface, D is read on the \f$M_\varepsilon\f$ the step was taken from (the surface's
+  /// own would cost a prefilter solve that no step uses)
+  double energy = 0;
   double H_integral = 0;        ///< \f$\int |H|^2 dA\f$ (mean-curvature vector H, \f$\Delta x = 2H\f$)
   double max_displacement = 0;  ///< \f$\max_i |x_i(t_n) - x_i(0)|\f$ over the control points, model units
   double step_displacement = 0; ///< \f$\max_i |x_i(t_n) - x_i(t_{n-1})|\f$, model units
-  double assemble_seconds = 0;  ///< wall time to assemble the system of this step (for the last step, plus the final surface's statistics)
+  /// wall time to assemble the system of this step (for the last step, plus the final surface's statistics)
+  double assemble_seconds = 0;
   double solve_seconds = 0;     ///< wall time to solve it
   bool direct_solve = false;    ///< solved by the sparse factorisation (else by conjugate gradients)
-  double noise_displacement = 0;///< how far the written surface moved off the input along the input's normals, in units of the local edge length (robust deviation; see `Fairing_report::noise_level`); 0 without the noise criterion
-  std::size_t run = 1;          ///< which run of the call the step belongs to: the default run compares several flows, each also on a probed copy of the input (`runs` at most), and `number_of_iterations` bounds their steps in all
+  /// how far the written surface moved off the input along the input's normals, in units of the local edge length
+  /// (robust deviation; see `Fairing_report::noise_level`); 0 without the noise criterion
+  double noise_displacement = 0;
+  /// which run of the call the step belongs to: the default run compares several flows, each also on a probed copy of
+  /// the input (`runs` at most), and `number_of_iterations` bounds their steps in all
+  std::size_t run = 1;
   std::size_t runs = 1;         ///< the most runs the call makes
   std::string run_name;         ///< what the run is, e.g. "isotropic flow", "anisotropic flow on the probed input"
 };
@@ -113,57 +136,98 @@ struct Fairing_report
 {
   Fairing_status status = Fairing_status::SUCCESS; ///< how the run ended
   Stop_reason stop_reason = Stop_reason::MAXIMUM_STEPS; ///< why it ended
-  std::string message;            ///< a one-line explanation of a failure, or of a run that ended early on the last sound surface (`Stop_reason::STEP_REJECTED`); empty otherwise
+  /// a one-line explanation of a failure, or of a run that ended early on the last sound surface
+  /// (`Stop_reason::STEP_REJECTED`); empty otherwise
+  std::string message;
   std::vector<Fairing_step> steps;///< one entry per completed step
   Fairing_step initial;           ///< area, energy and \f$\int|H|^2\f$ of the input surface (step 0)
-  double scale = 0;               ///< \f$\ell = \sqrt{\mathrm{Area}(M(0))/4\pi}\f$, the length unit of relative parameters
+  /// \f$\ell = \sqrt{\mathrm{Area}(M(0))/4\pi}\f$ , the length unit of relative parameters
+  double scale = 0;
   double time_step = 0;           ///< \f$\tau\f$ in model units (length^2, or length^4 for the fourth-order flow)
-  int flow_order = 2;             ///< 2: diffusion (the paper's flow); 4: the fourth-order flow \f$\partial_t x = -(M^{-1}L)^2 x\f$ (named parameter `flow_order`)
+  /// 2: diffusion (the paper's flow); 4: the fourth-order flow \f$\partial_t x = -(M^{-1}L)^2 x\f$ (named parameter
+  /// `flow_order`)
+  int flow_order = 2;
   double fidelity_weight = 0;     ///< \f$\omega\f$ in model units (1/time)
   double mean_edge_length = 0;    ///< h of the input mesh; \f$\tau/h^2\f$ governs the linear solver's work
   bool used_cholesky = false;     ///< whether any step was solved by the sparse factorisation
   std::size_t vertices = 0;       ///< number of vertices
   std::size_t faces = 0;          ///< number of faces
-  std::size_t constrained_vertices = 0; ///< vertices held fixed: by the user's constraints, by a border (`boundary_held_vertices`), or because they are on no face (`isolated_vertices`)
+  /// vertices held fixed: by the user's constraints, by a border (`boundary_held_vertices`), or because they are on no
+  /// face (`isolated_vertices`)
+  std::size_t constrained_vertices = 0;
   std::size_t boundary_vertices = 0;    ///< vertices on a border of the mesh
-  std::size_t boundary_held_vertices = 0; ///< vertices held because of a border: the boundary vertices and, with `Boundary_handling::HOLD_BOUNDARY_CURVE`, the interior vertices that shape the limit boundary curve
+  /// vertices held because of a border: the boundary vertices and, with `Boundary_handling::HOLD_BOUNDARY_CURVE`, the
+  /// interior vertices that shape the limit boundary curve
+  std::size_t boundary_held_vertices = 0;
   std::size_t boundary_loops = 0;       ///< number of boundary loops (holes and outer borders)
   Attribute_mode attribute_mode = Attribute_mode::GEOMETRY_ONLY; ///< how the attributes were faired
-  std::size_t attribute_dimension = 0;  ///< number of attribute components faired (0 without attributes or in `GEOMETRY_ONLY`)
+  /// number of attribute components faired (0 without attributes or in `GEOMETRY_ONLY`)
+  std::size_t attribute_dimension = 0;
   std::size_t isolated_vertices = 0;    ///< vertices on no face (scanner leftovers): held and left as they are
-  bool normal_motion_only = false;      ///< each step's displacement lost its tangential part (the tensor's `normal_motion_only()`, e.g. `Anisotropic_diffusion_tensor`'s default)
-  std::size_t components = 0;     ///< connected components of the surface; relative parameters are measured per component
-  std::size_t rejected_steps = 0; ///< steps rejected because they left an unsound surface, each retried with a quarter of the time step
-  bool automatic_parameters = false; ///< the time step, the stopping rule and (unless given) the tensor were chosen from the mesh (no time step was given)
-  double noise_level = 0;         ///< the input's noise estimated from the mesh itself: deviation along the normal in units of the local mean edge length (robust)
-  double noise_deviation = 0;     ///< the same in model units, \f$\sigma \approx\f$ `noise_level` \f$\times\f$ `mean_edge_length`
-  std::size_t removed_spikes = 0; ///< with automatic parameters: vertices that stood out of their ring alone, moved to its centroid before the noise was estimated, when they were at least 2% of the vertices (impulsive noise; a clean mesh's tips and corners are far fewer); 0 otherwise
-  double noise_displacement = 0;  ///< how far the written surface moved off the input (as `Fairing_step::noise_displacement`), at the end
-  double strength = 1;            ///< the named parameter `strength`: the noise criterion's target was `Stopping_criteria::noise_discrepancy` times it times `noise_level` (1: the estimated noise itself)
-  double feature_threshold = 0;   ///< the anisotropic tensor's threshold \f$\lambda\f$ used, model units (1/length); 0 for the isotropic tensor
-  double prefilter_time = 0;      ///< the anisotropic tensor's prefilter time \f$\varepsilon\f$ used, model units; 0 without prefilter
+  /// each step's displacement lost its tangential part (the tensor's `normal_motion_only()`, e.g.
+  /// `Anisotropic_diffusion_tensor`'s default)
+  bool normal_motion_only = false;
+  /// connected components of the surface; relative parameters are measured per component
+  std::size_t components = 0;
+  /// steps rejected because they left an unsound surface, each retried with a quarter of the time step
+  std::size_t rejected_steps = 0;
+  /// the time step, the stopping rule and (unless given) the tensor were chosen from the mesh (no time step was given)
+  bool automatic_parameters = false;
+  /// the input's noise estimated from the mesh itself: deviation along the normal in units of the local mean edge
+  /// length (robust)
+  double noise_level = 0;
+  /// the same in model units, \f$\sigma \approx\f$ `noise_level` \f$\times\f$ `mean_edge_length`
+  double noise_deviation = 0;
+  /// with automatic parameters: vertices that stood out of their ring alone, moved to its centroid before the noise was
+  /// estimated, when they were at least 2% of the vertices (impulsive noise; a clean mesh's tips and corners are far
+  /// fewer); 0 otherwise
+  std::size_t removed_spikes = 0;
+  /// how far the written surface moved off the input (as `Fairing_step::noise_displacement`), at the end
+  double noise_displacement = 0;
+  /// the named parameter `strength`: the noise criterion's target was `Stopping_criteria::noise_discrepancy` times it
+  /// times `noise_level` (1: the estimated noise itself)
+  double strength = 1;
+  /// the anisotropic tensor's threshold \f$\lambda\f$ used, model units (1/length); 0 for the isotropic tensor
+  double feature_threshold = 0;
+  /// the anisotropic tensor's prefilter time \f$\varepsilon\f$ used, model units; 0 without prefilter
+  double prefilter_time = 0;
   /// the share of the way from the input to its Loop limit points that the written positions go,
   /// \f$x = x_0 + w\,(\mathrm{limit}(x_0) - x_0)\f$: below 1 only when the noise stop ends the run before its
   /// first step, the input's own limit surface being off it by more than the noise (Loop element; with
   /// `Output_positions::CONTROL_POINTS` the input is written and this says what the limit output would be)
   double limit_weight = 1;
-  double absolute_maximum_deviation = 0;   ///< the bound on how far a written vertex moves off the input (named parameter `relative_maximum_deviation` or `absolute_maximum_deviation`), model units; 0 without a bound
+  /// the bound on how far a written vertex moves off the input (named parameter `relative_maximum_deviation` or
+  /// `absolute_maximum_deviation`), model units; 0 without a bound
+  double absolute_maximum_deviation = 0;
   /// \deprecated `absolute_maximum_deviation` under its former name, which the named parameters give the relative
   /// bound; filled as it, to be removed (no compiler warning: on a data member the compilers warn wherever a
   /// report is made or copied)
   double maximum_deviation = 0;
-  double largest_deviation = 0;   ///< the largest distance from a written vertex to its input position, model units (with or without a bound)
-  double attribute_maximum_deviation = 0; ///< the bound on each vertex's attribute values (`attribute_maximum_deviation`), the attributes' units; 0 without
-  double largest_attribute_deviation = 0; ///< the largest Euclidean distance between a vertex's written and input attribute values
-  double bound_fidelity_weight = 0;      ///< the largest fidelity weight a vertex was given to hold it within a bound, model units (1/time; the global one, `fidelity_weight`, comes on top)
+  /// the largest distance from a written vertex to its input position, model units (with or without a bound)
+  double largest_deviation = 0;
+  /// the bound on each vertex's attribute values (`attribute_maximum_deviation`), the attributes' units; 0 without
+  double attribute_maximum_deviation = 0;
+  /// the largest Euclidean distance between a vertex's written and input attribute values
+  double largest_attribute_deviation = 0;
+  /// the largest fidelity weight a vertex was given to hold it within a bound, model units (1/time; the global one,
+  /// `fidelity_weight`, comes on top)
+  double bound_fidelity_weight = 0;
   std::size_t bound_held_vertices = 0;   ///< vertices given a fidelity weight of their own by a bound
-  double bound_uniform_weight = 0;       ///< in a run not stopped at the noise level, the fidelity weight every vertex got from a bound (model units, 1/time), at its last value: the steady state within 0.8 of the bound
-  std::size_t bound_retaken_steps = 0;   ///< steps taken again, with more vertices held, because they carried a vertex past a bound
-  std::size_t clamped_vertices = 0;      ///< written vertices put on a bound along the line to their input position: their fidelity could not hold them (e.g. the input's own limit point lies farther off than the bound)
+  /// in a run not stopped at the noise level, the fidelity weight every vertex got from a bound (model units, 1/time),
+  /// at its last value: the steady state within 0.8 of the bound
+  double bound_uniform_weight = 0;
+  /// steps taken again, with more vertices held, because they carried a vertex past a bound
+  std::size_t bound_retaken_steps = 0;
+  /// written vertices put on a bound along the line to their input position: their fidelity could not hold them (e.g.
+  /// the input's own limit point lies farther off than the bound)
+  std::size_t clamped_vertices = 0;
   std::string choices;            ///< with automatic parameters: what was chosen and why, in one sentence
-  std::string selected_tensor;    ///< with automatic parameters and no tensor given: "anisotropic", "isotropic" or "uniform", the result kept (empty otherwise; "uniform" is the uniform tensor's fourth-order flow, `flow_order` 4)
+  /// with automatic parameters and no tensor given: "anisotropic", "isotropic" or "uniform", the result kept (empty
+  /// otherwise; "uniform" is the uniform tensor's fourth-order flow, `flow_order` 4)
+  std::string selected_tensor;
   double input_seconds = 0;       ///< the mesh and maps read and checked: numbering, topology, ghost layer
-  double setup_seconds = 0;       ///< set-up: private numbering, element (patch categories, stencils), sparsity patterns
+  /// set-up: private numbering, element (patch categories, stencils), sparsity patterns
+  double setup_seconds = 0;
   double write_back_seconds = 0;  ///< the result written into the caller's maps
   double total_seconds = 0;       ///< the whole call
 

@@ -14,7 +14,8 @@ namespace Anisotropic_fairing {
 /// The finite element that discretises the diffusion (named parameter `finite_element`).
 enum class Finite_element {
   LOOP,   ///< Loop-subdivision limit-surface elements (Bajaj & Xu): smooth, the default
-  LINEAR  ///< piecewise-linear (P1) hat functions on the mesh itself: consistent mass, cotangent stiffness (Clarenz et al.)
+  /// piecewise-linear (P1) hat functions on the mesh itself: consistent mass, cotangent stiffness (Clarenz et al.)
+  LINEAR
 };
 
 /// \ingroup PkgAnisotropicFairingFunctions
@@ -100,7 +101,8 @@ With \f$\mathcal{H}(t) = \int_{M(t)} |H|^2 dA / \int_{M(0)} |H|^2 dA\f$ and its 
 - (27) \f$|\mathcal{H}'(t)/\mathcal{H}'(0)| \le\f$ `curvature_rate_ratio` (from the second step on);
 - (28) \f$|\mathcal{H}'(t)| \le\f$ `curvature_rate`;
 - (29) \f$\max_i |x_i(t) - x_i(0)| \ge\f$ `displacement` (control points);
-- steady state: \f$\max_i |x_i(t_{n+1}) - x_i(t_n)| / \tau \le\f$ `steady_speed` (the flow has stopped, e.g. balanced by the fidelity term);
+- steady state: \f$\max_i |x_i(t_{n+1}) - x_i(t_n)| / \tau \le\f$ `steady_speed` (the flow has stopped, e.g. balanced by
+the fidelity term);
 - noise level (the discrepancy principle): the written surface has moved off the input, along the input's
   normals and in units of the local edge length (robust deviation over the vertices), by `noise_discrepancy`
   times the noise the package estimates from the input itself (`Fairing_report::noise_level`), times the named

@@ -30,15 +30,23 @@ public:
     EMPTY_MESH,            ///< the mesh has no face
     NON_TRIANGLE_FACE,     ///< a face with other than three vertices; `element()` is the face index
     DEGENERATE_FACE,       ///< a face that uses one vertex twice; `element()` is the face index
-    BORDER_EDGE,           ///< the mesh has a boundary where a closed mesh is needed; `element()` is a vertex index on it. Not raised by `anisotropic_fairing()` nor `Loop_limit_surface`, which accept borders
-    NON_MANIFOLD_EDGE,     ///< an edge used by more than two faces, or two edges joining the same vertices; `element()` is a vertex index
+    /// the mesh has a boundary where a closed mesh is needed; `element()` is a vertex index on it. Not raised by
+    /// `anisotropic_fairing()` nor `Loop_limit_surface`, which accept borders
+    BORDER_EDGE,
+    /// an edge used by more than two faces, or two edges joining the same vertices; `element()` is a vertex index
+    NON_MANIFOLD_EDGE,
     NON_MANIFOLD_VERTEX,   ///< a vertex whose faces form more than one fan; `element()` is the vertex index
-    ISOLATED_VERTEX,       ///< a vertex without incident face where none is allowed; `element()` is the vertex index. Not raised by `anisotropic_fairing()` nor `Loop_limit_surface`, which accept such vertices and leave them as they are
+    /// a vertex without incident face where none is allowed; `element()` is the vertex index. Not raised by
+    /// `anisotropic_fairing()` nor `Loop_limit_surface`, which accept such vertices and leave them as they are
+    ISOLATED_VERTEX,
     LOW_VALENCE_VERTEX,    ///< a vertex of valence below 3; `element()` is the vertex index
     NON_FINITE_COORDINATE, ///< a NaN or infinite coordinate; `element()` is the vertex index
     ATTRIBUTE_DIMENSION,   ///< an attribute whose dimension differs between vertices; `element()` is the vertex index
     INVALID_PARAMETER,     ///< a parameter value outside its documented range
-    COORDINATE_RANGE       ///< coordinates whose size would overflow or underflow double precision in the computation (fourth powers of lengths): the mesh spans more than 1e70 or less than 1e-70, or a coordinate exceeds 1e70; `element()` is a vertex index or `no_element`
+    /// coordinates whose size would overflow or underflow double precision in the computation (fourth powers of
+    /// lengths): the mesh spans more than 1e70 or less than 1e-70, or a coordinate exceeds 1e70; `element()` is a
+    /// vertex index or `no_element`
+    COORDINATE_RANGE
   };
 
   /// Index value used by `element()` when no single element is at fault.

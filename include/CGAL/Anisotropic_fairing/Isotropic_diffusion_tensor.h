@@ -19,7 +19,8 @@ namespace Anisotropic_fairing {
 The identity tensor: \f$(D\nabla\phi_i, \nabla\phi_j) = \nabla\phi_i\cdot\nabla\phi_j\f$, i.e.
 \f$A = G^{-1}\f$ in the face's parameters. With it, fairing the geometry is mean-curvature flow
 \f$\partial_t x = \Delta_M x = 2H\f$ and fairing a function is the heat equation on the surface.
-This is the default `diffusion_tensor`.
+It is the default `diffusion_tensor` of a run given a time step; with automatic parameters the run
+starts from `Anisotropic_diffusion_tensor::automatic()` (`Fairing_options::diffusion_tensor_or_default()`).
 */
 struct Isotropic_diffusion_tensor
 {

@@ -167,7 +167,8 @@ public:
   {
     using parameters::choose_parameter;
     using parameters::get_parameter;
-    init(choose_parameter(get_parameter(np, CGAL::internal_np::vertex_point), get_const_property_map(CGAL::vertex_point, tm)), np);
+    init(choose_parameter(get_parameter(np, CGAL::internal_np::vertex_point),
+                          get_const_property_map(CGAL::vertex_point, tm)), np);
   }
   /// @}
 
@@ -191,7 +192,9 @@ public:
   struct Curvature
   {
     Vector_3 mean_curvature_vector;   ///< \f$H = \frac12\Delta_M x\f$ (for the unit sphere, \f$-x\f$)
-    double k1 = 0, k2 = 0;            ///< principal curvatures, \f$k_1 \leq k_2\f$, w.r.t. the oriented normal (negative on a convex surface oriented outward)
+    /// principal curvatures, \f$k_1 \leq k_2\f$ , w.r.t. the oriented normal (negative on a convex surface oriented
+    /// outward)
+    double k1 = 0, k2 = 0;
     Vector_3 d1, d2;                  ///< unit principal directions
   };
 
@@ -238,7 +241,8 @@ public:
   evaluates the limit of a per-vertex attribute (a function on the surface, e.g. colours or texture
   coordinates) at the point of face `f` with barycentric coordinates `b`: the same Loop basis
   functions applied to the attribute values.
-  \tparam AttributeMap a `ReadablePropertyMap` with `vertex_descriptor` as key whose value type has a `Vector_attribute_traits`
+  \tparam AttributeMap a `ReadablePropertyMap` with `vertex_descriptor` as key whose value type has a
+  `Vector_attribute_traits`
   */
   template <typename AttributeMap>
   typename boost::property_traits<AttributeMap>::value_type
@@ -401,7 +405,8 @@ public:
     write_resampled(r, out, np,
       [&](std::size_t i, typename boost::graph_traits<OutputMesh>::vertex_descriptor v) {
         const Value& prototype = get(in, indexed_->vertex(r.prototype[i]));
-        put(out_attributes, v, Vector_attribute_traits<Value>::make(prototype, r.attributes.row(Eigen::Index(i)).data()));
+        put(out_attributes, v, Vector_attribute_traits<Value>::make(prototype,
+                                                                    r.attributes.row(Eigen::Index(i)).data()));
       });
   }
   /// @}
@@ -427,7 +432,8 @@ private:
     // rows of the ghosts appended, so patches next to a border evaluate like any other
     const internal::Ghost_layer& gl = indexed_->ghost_layer();
     X_ = gl.extend(indexed_->read_points(vpm));
-    cache_.reset(new internal::Ghosted_patch_cache(gl, internal::read_quadrature_spec(np)));   // ghost faces get no patch
+    // ghost faces get no patch
+    cache_.reset(new internal::Ghosted_patch_cache(gl, internal::read_quadrature_spec(np)));
     internal::Fem_assembler<internal::Patch_cache> statistics(patches(), gl.number_of_extended_vertices(), false);
     internal::Value_array unused;
     area_ = statistics.assemble(X_, int(X_.cols()), Isotropic_diffusion_tensor(), unused, unused, false).area;
@@ -486,7 +492,8 @@ private:
     mean_curvature_vector(q, H);
     const Principal_curvatures pc = principal_curvatures(q);
     auto direction = [&](const std::array<double, 2>& c) {
-      const Vector_3 e(c[0] * t[0][0] + c[1] * t[1][0], c[0] * t[0][1] + c[1] * t[1][1], c[0] * t[0][2] + c[1] * t[1][2]);
+      const Vector_3 e(c[0] * t[0][0] + c[1] * t[1][0], c[0] * t[0][1] + c[1] * t[1][1],
+                       c[0] * t[0][2] + c[1] * t[1][2]);
       const double l = std::sqrt(e * e);
       return l > 0 ? e / l : e;
     };
@@ -527,7 +534,8 @@ private:
     typedef typename CGAL::GetVertexPointMap<OutputMesh, NamedParameters>::type Out_vpm;
     typedef typename boost::property_traits<Out_vpm>::value_type Out_point;
     typedef typename CGAL::Kernel_traits<Out_point>::Kernel::Vector_3 Out_vector;
-    Out_vpm ovpm = choose_parameter(get_parameter(np, CGAL::internal_np::vertex_point), get_property_map(CGAL::vertex_point, out));
+    Out_vpm ovpm = choose_parameter(get_parameter(np, CGAL::internal_np::vertex_point),
+                                    get_property_map(CGAL::vertex_point, out));
     auto onm = choose_parameter(get_parameter(np, CGAL::internal_np::vertex_normal_map),
                                 CGAL::Constant_property_map<out_vertex, Out_vector>(Out_vector(0, 0, 0)));
     const bool with_normals = !is_default_parameter<NamedParameters, CGAL::internal_np::vertex_normal_map_t>::value;
@@ -547,7 +555,8 @@ private:
       if(with_curvatures)
       {
         if(std::size_t(i) < number_of_vertices()) put(ocm, v, to_curvature(at_vertices[std::size_t(i)]));
-        else put(ocm, v, curvature_at(r.face[std::size_t(i)], r.parameter[std::size_t(i)][0], r.parameter[std::size_t(i)][1]));
+        else put(ocm, v, curvature_at(r.face[std::size_t(i)], r.parameter[std::size_t(i)][0],
+                                      r.parameter[std::size_t(i)][1]));
       }
       write_attribute(std::size_t(i), v);
       created.push_back(v);

@@ -30,8 +30,10 @@ struct Quadrature_point_geometry
   const double* t22;       ///< \f$\partial^2 x/\partial\xi_2^2\f$
   double g11, g12, g22;    ///< the metric \f$G = [t_i \cdot t_j]\f$
   double det;              ///< \f$\det G > 0\f$
-  const int* ring;         ///< indices (order of `vertices(tm)`) of the control vertices whose basis functions are non-zero on the face
-  const double* basis;     ///< the values of those basis functions at the point (sum 1): interpolate per-vertex data with them
+  /// indices (order of `vertices(tm)`) of the control vertices whose basis functions are non-zero on the face
+  const int* ring;
+  /// the values of those basis functions at the point (sum 1): interpolate per-vertex data with them
+  const double* basis;
   int ring_size;           ///< number of entries of `ring` and `basis`
   /// The derivatives at the same point of the prefiltered surface \f$M_\varepsilon\f$ (Bajaj and Xu, section 5),
   /// when the tensor asks for one (a `prefilter_time()` > 0, see `DiffusionTensor`); null pointers otherwise.

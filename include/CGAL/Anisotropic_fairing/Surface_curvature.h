@@ -2,7 +2,8 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 //
 // Curvature of a parametrised surface x(xi1, xi2) in R^kappa at one point, from its first and second
-// derivatives (doc/Anisotropic_fairing/design/loop-fem.md section 7, the paper's garbled section 5 reconstructed): the mean-curvature
+// derivatives (doc/Anisotropic_fairing/design/loop-fem.md section 7, the paper's garbled section 5 reconstructed): the
+// mean-curvature
 // vector H = Q (g22 t11 + g11 t22 - 2 g12 t12) / (2 det G), and the principal curvatures and directions
 // with respect to a unit normal nu, from the generalised eigenproblem B_nu c = k G c with
 // B_nu = [t_ij . nu].
@@ -30,7 +31,8 @@ normalised mean-curvature vector \f$h = H/|H|\f$ for \f$\kappa > 3\f$ (Bajaj and
 struct Principal_curvatures
 {
   double k1 = 0, k2 = 0;                 ///< \f$k_1 \leq k_2\f$; \f$k_1 + k_2 = 2H\cdot\nu\f$
-  std::array<double, 2> c1{ { 0, 0 } };  ///< parametric direction of \f$k_1\f$: \f$e_1 = c_{1,1} t_1 + c_{1,2} t_2\f$, with \f$c_a^T G c_b = \delta_{ab}\f$
+  /// parametric direction of \f$k_1\f$ : \f$e_1 = c_{1,1} t_1 + c_{1,2} t_2\f$ , with \f$c_a^T G c_b = \delta_{ab}\f$
+  std::array<double, 2> c1{ { 0, 0 } };
   std::array<double, 2> c2{ { 0, 0 } };  ///< parametric direction of \f$k_2\f$
   /// false where the normal is undefined: for \f$\kappa > 3\f$ where \f$|H|\f$ is below the threshold
   /// given (planar or minimal points), for any \f$\kappa\f$ where the metric is degenerate. Then
@@ -60,7 +62,8 @@ inline void mean_curvature_vector(const Quadrature_point_geometry& q, double* H)
 /// The principal curvatures and directions at the point described by `q` (its second derivatives are
 /// used). For \f$\kappa > 3\f$ the normal is \f$h = H/|H|\f$, undefined where \f$|H| \leq\f$
 /// `undefined_mean_curvature` (in 1/length; choose it relative to the model's scale).
-inline Principal_curvatures principal_curvatures(const Quadrature_point_geometry& q, double undefined_mean_curvature = 0)
+inline Principal_curvatures principal_curvatures(const Quadrature_point_geometry& q,
+                                                 double undefined_mean_curvature = 0)
 {
   Principal_curvatures pc;
   const int k = q.dimension;

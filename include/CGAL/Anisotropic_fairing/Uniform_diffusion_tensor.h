@@ -2,10 +2,9 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 //
 // The diffusion of the uniform (umbrella) Laplacian, on any element: the Dirichlet energy measured
-// as if every face were equilateral, so that the operator depends on the connectivity alone. On noisy
-// graded scans the metric of the noisy surface makes the geometric operator noisy too (its error
-// gathers in the smallest faces, as on the camel head); the uniform weights do not see the noise
-// (bench/README.md).
+// as if every face were equilateral, so that the operator depends on the connectivity alone: on noisy
+// graded scans the noisy metric makes the geometric operator noisy too, and the uniform weights do not
+// see it.
 
 #ifndef CGAL_ANISOTROPIC_FAIRING_UNIFORM_DIFFUSION_TENSOR_H
 #define CGAL_ANISOTROPIC_FAIRING_UNIFORM_DIFFUSION_TENSOR_H
@@ -32,8 +31,8 @@ analogue. The flow moves vertices along the surface too, towards an even triangu
 It suits noisy scans with a graded triangulation (small faces where the surface has detail), where
 the surface's own metric is as noisy as its normals. With automatic parameters (no time step given)
 its time step follows the mesh's density, as the isotropic tensor's does. It rounds sharp creases
-like the isotropic tensor, and on evenly triangulated scans the isotropic tensor does better
-(bench/README.md).
+like the isotropic tensor, and on evenly triangulated scans the isotropic tensor does better (page
+\ref af_validation_page, section \ref sec_AF_denoising).
 */
 struct Uniform_diffusion_tensor
 {

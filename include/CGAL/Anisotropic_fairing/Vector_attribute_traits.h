@@ -30,7 +30,8 @@ namespace Anisotropic_fairing {
 Reads and writes the components of a per-vertex attribute value of type `V` as doubles, so that
 any vertex property map can carry a vector-valued function on the surface.
 
-Models are provided for arithmetic types (integers rounded and clamped to their range), `std::array<T,N>`, `std::vector<T>`,
+Models are provided for arithmetic types (integers rounded and clamped to their range), `std::array<T,N>`,
+`std::vector<T>`,
 `Eigen::Matrix<T,N,1>` (fixed or dynamic `N`), `CGAL::Point_2`, `CGAL::Point_3`,
 `CGAL::Vector_2`, `CGAL::Vector_3` of any kernel, and `CGAL::IO::Color` (red, green and blue, each
 clamped to 0..255 and rounded when written; alpha is kept). Specialize it for other types:

@@ -25,12 +25,14 @@ namespace Anisotropic_fairing {
 namespace internal {
 // the attribute overloads: one sentence, not pages of template errors, for a value type without traits
 template <typename TriangleMesh, typename VertexPointMap, typename VertexAttributeMap, typename NamedParameters>
-Fairing_report fair_attributes(TriangleMesh& tm, VertexPointMap vpm, VertexAttributeMap attr_map, const NamedParameters& np)
+Fairing_report fair_attributes(TriangleMesh& tm, VertexPointMap vpm, VertexAttributeMap attr_map,
+                               const NamedParameters& np)
 {
   typedef typename boost::property_traits<VertexAttributeMap>::value_type Attribute;
   constexpr bool has_traits = has_vector_attribute_traits<Attribute>::value;
-  static_assert(has_traits, "the attribute map's value type has no CGAL::Anisotropic_fairing::Vector_attribute_traits: "
-                            "specialise it for the type (see Vector_attribute_traits.h) or use a vector type that has one");
+  static_assert(has_traits,
+                "the attribute map's value type has no CGAL::Anisotropic_fairing::Vector_attribute_traits: "
+                "specialise it for the type (see Vector_attribute_traits.h) or use a vector type that has one");
   if constexpr(has_traits) return fair(tm, vpm, attr_map, np);
   else return Fairing_report();
 }
@@ -62,7 +64,8 @@ of its area per step. `time_step` and `fidelity_weight` give them in model units
 \tparam VertexPointMap a model of `ReadWritePropertyMap` with `boost::graph_traits<TriangleMesh>::%vertex_descriptor`
         as key and a CGAL `Point_3` as value
 \tparam VertexAttributeMap a model of `ReadWritePropertyMap` with the same key and a value type that
-        has a `Vector_attribute_traits` (numbers, `std::array`, Eigen vectors, CGAL points and vectors, `CGAL::IO::Color`)
+        has a `Vector_attribute_traits` (numbers, `std::array`, Eigen vectors, CGAL points and vectors,
+        `CGAL::IO::Color`)
 \tparam NamedParameters a sequence of named parameters, started from `CGAL::Anisotropic_fairing::parameters`
         (which also accepts CGAL's own names)
 
@@ -97,22 +100,28 @@ of its area per step. `time_step` and `fidelity_weight` give them in model units
   \cgalParamNEnd
   \cgalParamNBegin{flow_order}
     \cgalParamDescription{2: the paper's diffusion, \f$\partial_t x = -M^{-1}L(D)\,x\f$; 4: the fourth-order flow
-                          \f$\partial_t x = -(M^{-1}L(D))^2 x\f$ with the lumped inverse mass, whose step damps a mode of
-                          \f$M^{-1}L\f$ with eigenvalue \f$\mu\f$ by \f$1/(1+\tau\mu^2)\f$ instead of \f$1/(1+\tau\mu)\f$:
-                          noise goes, the shape is rounded less. Its time step is in length\f$^4\f$ (`relative_time_step`
+                          \f$\partial_t x = -(M^{-1}L(D))^2 x\f$ with the lumped inverse mass, whose step damps a mode
+                          of
+                          \f$M^{-1}L\f$ with eigenvalue \f$\mu\f$ by \f$1/(1+\tau\mu^2)\f$ instead of
+                          \f$1/(1+\tau\mu)\f$ :
+                          noise goes, the shape is rounded less. Its time step is in length\f$^4\f$
+                          (`relative_time_step`
                           in \f$\ell^4\f$; automatic: \f$0.1\,h^4\f$). Held vertices (borders, constraints) carry no
-                          curvature penalty of their own, so that a noisy held border does not bend the surface next to it}
+                          curvature penalty of their own, so that a noisy held border does not bend the surface next to
+                          it}
     \cgalParamType{int, 2 or 4} \cgalParamDefault{`2`}
   \cgalParamNEnd
   \cgalParamNBegin{number_of_iterations}
     \cgalParamDescription{the largest number of time steps of the whole call: the default run's comparison of flows
                           counts every step of every run it makes, and makes no run once they are spent;
                           `stopping_criteria` may end a run earlier}
-    \cgalParamType{unsigned int} \cgalParamDefault{`automatic_maximum_steps` (200) with automatic parameters, `10` with a time step}
+    \cgalParamType{unsigned int} \cgalParamDefault{`automatic_maximum_steps` (200) with automatic parameters, `10` with
+    a time step}
   \cgalParamNEnd
   \cgalParamNBegin{relative_fidelity_weight}
     \cgalParamDescription{\f$\omega\f$ in units of \f$1/\ell^2\f$ (0: pure diffusion). A sphere of radius \f$r_0\f$
-                          settles at \f$r^* = (r_0 + \sqrt{r_0^2 - 8/\omega})/2\f$ if \f$\omega \ge 8/r_0^2\f$ and collapses otherwise}
+                          settles at \f$r^* = (r_0 + \sqrt{r_0^2 - 8/\omega})/2\f$ if \f$\omega \ge 8/r_0^2\f$ and
+                          collapses otherwise}
     \cgalParamType{double >= 0} \cgalParamDefault{`0`}
   \cgalParamNEnd
   \cgalParamNBegin{fidelity_weight}
@@ -153,18 +162,24 @@ of its area per step. `time_step` and `fidelity_weight` give them in model units
     \cgalParamDescription{the criteria (27)-(29) and a steady-state test, relative to \f$\ell\f$ by default}
     \cgalParamType{`Stopping_criteria`; `Stopping_criteria::none()` runs exactly `number_of_iterations` steps}
     \cgalParamDefault{`Stopping_criteria::automatic()` (the noise level) with automatic parameters, except in
-                      `Attribute_mode::ATTRIBUTES_ONLY`; otherwise `Stopping_criteria()`: the paper's thresholds 0.005, 8 and 0.2 read at unit scale}
+                      `Attribute_mode::ATTRIBUTES_ONLY`; otherwise `Stopping_criteria()`: the paper's thresholds 0.005,
+                      8 and 0.2 read at unit scale}
   \cgalParamNEnd
   \cgalParamNBegin{strength}
     \cgalParamDescription{how far the noise criterion goes: its target, `Stopping_criteria::noise_discrepancy` times the
-                          estimated noise, times this (2 smooths more, 0.5 less). Everything else stays automatic. In the
+                          estimated noise, times this (2 smooths more, 0.5 less). Everything else stays automatic. In
+                          the
                           default run the flows are compared at the noise level itself, where the risk estimate measures
-                          the error of a denoised surface, and the flow kept (`Fairing_report::selected_tensor`) then runs
-                          again from the input to `strength` times the noise; its run is the report's, and `choices` ends
+                          the error of a denoised surface, and the flow kept (`Fairing_report::selected_tensor`) then
+                          runs
+                          again from the input to `strength` times the noise; its run is the report's, and `choices`
+                          ends
                           with it. A run with a tensor given or a time step, stopped by the noise criterion, aims at the
                           scaled target directly. Above 1 the automatic fourth-order flow steps at the scale `strength`
-                          \f$\times h\f$ (time step \f$0.1\,(\mathrm{strength}\,h)^4\f$, its levelling off read on waves of
-                          \f$4\pi\,\mathrm{strength}\,h\f$), so that it reaches the farther target in about as many steps.
+                          \f$\times h\f$ (time step \f$0.1\,(\mathrm{strength}\,h)^4\f$ , its levelling off read on
+                          waves of
+                          \f$4\pi\,\mathrm{strength}\,h\f$ ), so that it reaches the farther target in about as many
+                          steps.
                           Where no run stops at the noise level (the paper's criteria, `Stopping_criteria::none()`,
                           `Attribute_mode::ATTRIBUTES_ONLY`) any value but 1 is refused, since it would change nothing
                           (Section \ref sec_AF_strength)}
@@ -193,7 +208,8 @@ of its area per step. `time_step` and `fidelity_weight` give them in model units
   \cgalParamNEnd
   \cgalParamNBegin{attribute_weight}
     \cgalParamDescription{`COUPLED` only: the length that one attribute unit counts for in the metric of the
-                          manifold in \f$\mathbb{R}^{3+d}\f$; larger values let attribute edges hold back the diffusion more}
+                          manifold in \f$\mathbb{R}^{3+d}\f$ ; larger values let attribute edges hold back the diffusion
+                          more}
     \cgalParamType{double > 0} \cgalParamDefault{`1`}
   \cgalParamNEnd
   \cgalParamNBegin{boundary_handling}
@@ -207,15 +223,19 @@ of its area per step. `time_step` and `fidelity_weight` give them in model units
     \cgalParamType{`Finite_element`} \cgalParamDefault{`Finite_element::LOOP`}
   \cgalParamNEnd
   \cgalParamNBegin{output_positions}
-    \cgalParamDescription{what is written back: points of the faired limit surface at the vertices, or the faired control points}
+    \cgalParamDescription{what is written back: points of the faired limit surface at the vertices, or the faired
+    control points}
     \cgalParamType{`Output_positions`} \cgalParamDefault{`Output_positions::LIMIT_SURFACE`}
   \cgalParamNEnd
   \cgalParamNBegin{control_point_map}
     \cgalParamDescription{receives, on success, the faired control points of every vertex: the mesh whose Loop limit
-                          surface is the faired surface (held vertices: their input). With `Output_positions::LIMIT_SURFACE`
-                          the point map gets the limit points, held within `relative_maximum_deviation`, and this map the control
+                          surface is the faired surface (held vertices: their input). With
+                          `Output_positions::LIMIT_SURFACE`
+                          the point map gets the limit points, held within `relative_maximum_deviation`, and this map
+                          the control
                           points they come from: what `Loop_limit_surface` needs for the exact normals and curvatures of
-                          the result. With the control points or the linear element written, the same points as the point map}
+                          the result. With the control points or the linear element written, the same points as the
+                          point map}
     \cgalParamType{a `WritablePropertyMap` with `vertex_descriptor` key and the point type as value}
     \cgalParamDefault{none}
   \cgalParamNEnd
@@ -244,14 +264,16 @@ of its area per step. `time_step` and `fidelity_weight` give them in model units
   \cgalParamNEnd
   \cgalParamNBegin{solver_tolerance}
     \cgalParamDescription{relative residual at which conjugate gradients stop (the prefilter's: a hundredth of it)}
-    \cgalParamType{double in (0, 1)} \cgalParamDefault{`1e-8` (the error it leaves in a step is far below the time-discretisation error)}
+    \cgalParamType{double in (0, 1)} \cgalParamDefault{`1e-8` (the error it leaves in a step is far below the
+    time-discretisation error)}
   \cgalParamNEnd
   \cgalParamNBegin{solver_maximum_iterations}
     \cgalParamDescription{conjugate-gradient iterations after which the step fails}
     \cgalParamType{int >= 1} \cgalParamDefault{`10000`}
   \cgalParamNEnd
   \cgalParamNBegin{callback}
-    \cgalParamDescription{called after every step with its `Fairing_step`; returning `false` ends the run (successfully)}
+    \cgalParamDescription{called after every step with its `Fairing_step`; returning `false` ends the run
+    (successfully)}
     \cgalParamType{a functor `bool(const Fairing_step&)`} \cgalParamDefault{none}
   \cgalParamNEnd
   \cgalParamNBegin{verbose}
@@ -271,7 +293,8 @@ of its area per step. `time_step` and `fidelity_weight` give them in model units
 \returns a `Fairing_report`: the status, why the run stopped, and per step the solver's iterations and
          residual, the area, energy, \f$\int|H|^2\f$, displacement and timings.
 \throws Input_error, before anything is modified, if the mesh is not a 2-manifold triangle mesh
-        with interior valences \f$\geq 3\f$ (e.g. a bow-tie vertex on a border, named in the message), if a coordinate or attribute is not finite, if attribute dimensions differ,
+        with interior valences \f$\geq 3\f$ (e.g. a bow-tie vertex on a border, named in the message), if a coordinate
+        or attribute is not finite, if attribute dimensions differ,
         or if a parameter is out of range.
 */
 template <typename TriangleMesh, typename VertexPointMap, typename VertexAttributeMap,

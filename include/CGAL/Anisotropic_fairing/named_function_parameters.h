@@ -57,7 +57,8 @@ struct Named_function_parameters : CGAL::Named_function_parameters<T, Tag, Base>
 #undef CGAL_add_extra_named_parameter_with_compatibility
 
 #define CGAL_AF_add_named_parameter(X, Y, Z) CGAL_AF_NP_MEMBER(Anisotropic_fairing::internal_np::X, Z)
-#define CGAL_AF_add_deprecated_named_parameter(X, Y, Z, M) CGAL_AF_NP_DEPRECATED_MEMBER(Anisotropic_fairing::internal_np::X, Z, M)
+#define CGAL_AF_add_deprecated_named_parameter(X, Y, Z, M) \
+  CGAL_AF_NP_DEPRECATED_MEMBER(Anisotropic_fairing::internal_np::X, Z, M)
 #include <CGAL/Anisotropic_fairing/internal/parameters_interface.h>
 #undef CGAL_AF_add_named_parameter
 #undef CGAL_AF_add_deprecated_named_parameter
@@ -98,7 +99,8 @@ inline Default_named_parameters default_values() { return Default_named_paramete
 #undef CGAL_add_extra_named_parameter_with_compatibility
 
 #define CGAL_AF_add_named_parameter(X, Y, Z) CGAL_AF_NP_FREE(Anisotropic_fairing::internal_np::X, Z)
-#define CGAL_AF_add_deprecated_named_parameter(X, Y, Z, M) CGAL_AF_NP_DEPRECATED_FREE(Anisotropic_fairing::internal_np::X, Z, M)
+#define CGAL_AF_add_deprecated_named_parameter(X, Y, Z, M) \
+  CGAL_AF_NP_DEPRECATED_FREE(Anisotropic_fairing::internal_np::X, Z, M)
 #include <CGAL/Anisotropic_fairing/internal/parameters_interface.h>
 #undef CGAL_AF_add_named_parameter
 #undef CGAL_AF_add_deprecated_named_parameter

@@ -10,6 +10,8 @@ gives its Loop limit surface (exact positions, normals, curvatures, finer meshes
 ``vtkPolyData`` (a PyVista ``PolyData`` too). The types are in the package's stubs (``__init__.pyi``); the
 report is a :class:`FairingReport`.
 """
+import inspect as _inspect
+
 from . import _core
 from ._core import FairingError, LimitSurface, __version__, limit_surface
 from ._progress import Progress as _Progress
@@ -20,12 +22,7 @@ __all__ = ['fair', 'limit_surface', 'LimitSurface', 'FairingError', 'fair_meshio
            'FairingReport', 'FairingStep', 'InitialSurface', 'StepInfo', '__version__']
 
 
-def fair(V, F, *, attributes=None, vertex_is_constrained=None, callback=None, quiet=False, time_step=None, relative_time_step=None,
-         flow_order=None, number_of_iterations=None, stopping_criteria=None, strength=None, fidelity_weight=None,
-         relative_fidelity_weight=None, relative_maximum_deviation=None, absolute_maximum_deviation=None,
-         maximum_deviation=None, attribute_maximum_deviation=None, finite_element=None, output_positions=None,
-         tensor=None, lambda_=None, epsilon=None, tangential_motion=None, linear_solver=None, boundary_handling=None,
-         quadrature_degree=None, attribute_mode=None, attribute_weight=None):
+def fair(V, F, *, attributes=None, vertex_is_constrained=None, callback=None, quiet=False, **parameters):
     """Fairs a triangle mesh and, if given, the functions on it; returns ``(V2, attributes2, report)``.
 
     ``V``: N x 3 positions (float64), ``F``: M x 3 vertex indices (integers) of an oriented 2-manifold mesh,
@@ -58,9 +55,24 @@ def fair(V, F, *, attributes=None, vertex_is_constrained=None, callback=None, qu
     wrong type, :class:`FairingError` (with ``.report``) if the fairing fails. The input arrays are never
     modified; the GIL is released while the run computes.
     """
-    given = locals()
-    parameters = {name: given[name] for name in _core.parameter_names if given[name] is not None}
-    return _run(V, F, attributes, vertex_is_constrained, callback, quiet, parameters)
+    for name in parameters:
+        if name not in _core.parameter_names:
+            raise TypeError("fair() got an unexpected keyword argument '%s'" % name)
+    given = {name: parameters[name] for name in _core.parameter_names if parameters.get(name) is not None}
+    return _run(V, F, attributes, vertex_is_constrained, callback, quiet, given)
+
+
+def _with_parameters(function):
+    """`function`'s signature with each of the compiled part's parameters (its parameter table) as a keyword
+    of its own, default None, in place of **parameters: what help() and inspect show, and the stubs state."""
+    signature = _inspect.signature(function)
+    fixed = [p for p in signature.parameters.values() if p.kind != _inspect.Parameter.VAR_KEYWORD]
+    named = [_inspect.Parameter(name, _inspect.Parameter.KEYWORD_ONLY, default=None) for name in _core.parameter_names]
+    function.__signature__ = signature.replace(parameters=fixed + named)
+    return function
+
+
+fair = _with_parameters(fair)
 
 
 def _run(V, F, attributes, vertex_is_constrained, callback, quiet, parameters, vertex_normals=False):

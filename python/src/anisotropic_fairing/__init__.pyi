@@ -22,6 +22,8 @@ class FairingError(RuntimeError):
     """Raised when a run fails (the mesh collapsed, folded, or the solver failed); ``report`` is its report."""
     report: FairingReport
 
+# its keyword parameters, after quiet, are the parameter table's (_core.parameter_names, in that order; the
+# test test_parameter_table.py checks them and their words against it)
 def fair(V: npt.ArrayLike, F: npt.ArrayLike, *, attributes: Optional[npt.ArrayLike] = None,
          vertex_is_constrained: Optional[npt.ArrayLike] = None,
          callback: Optional[Callable[[StepInfo], Optional[bool]]] = None, quiet: bool = False,
@@ -31,15 +33,14 @@ def fair(V: npt.ArrayLike, F: npt.ArrayLike, *, attributes: Optional[npt.ArrayLi
          fidelity_weight: Optional[float] = None, relative_fidelity_weight: Optional[float] = None,
          relative_maximum_deviation: Optional[float] = None, absolute_maximum_deviation: Optional[float] = None,
          maximum_deviation: Optional[float] = None, attribute_maximum_deviation: Optional[float] = None,
-         finite_element: Optional[Literal['loop', 'linear']] = None,
-         output_positions: Optional[Literal['limit', 'control']] = None,
          tensor: Optional[Literal['isotropic', 'anisotropic', 'uniform']] = None,
          lambda_: Optional[float] = None, epsilon: Optional[float] = None,
          tangential_motion: Optional[Literal['remove', 'keep']] = None,
-         linear_solver: Optional[Literal['auto', 'cg', 'cholesky']] = None,
-         boundary_handling: Optional[Literal['curve', 'vertices']] = None, quadrature_degree: Optional[int] = None,
+         finite_element: Optional[Literal['loop', 'linear']] = None,
+         output_positions: Optional[Literal['limit', 'control']] = None,
          attribute_mode: Optional[Literal['separate', 'coupled', 'attributes', 'geometry']] = None,
-         attribute_weight: Optional[float] = None
+         attribute_weight: Optional[float] = None, boundary_handling: Optional[Literal['curve', 'vertices']] = None,
+         linear_solver: Optional[Literal['auto', 'cg', 'cholesky']] = None, quadrature_degree: Optional[int] = None
          ) -> Tuple[_Points, Optional[npt.NDArray[np.float64]], FairingReport]: ...
 
 class LimitSurface:
@@ -54,13 +55,16 @@ class LimitSurface:
     @overload
     def resample(self, levels: int, attributes: None = None) -> Tuple[_Points, _Triangles]: ...
     @overload
-    def resample(self, levels: int, attributes: npt.ArrayLike) -> Tuple[_Points, _Triangles, npt.NDArray[np.float64]]: ...
+    def resample(self, levels: int,
+                 attributes: npt.ArrayLike) -> Tuple[_Points, _Triangles, npt.NDArray[np.float64]]: ...
 
 def limit_surface(V: npt.ArrayLike, F: npt.ArrayLike, *, quadrature_degree: int = 8) -> LimitSurface: ...
 
-def fair_meshio(mesh: Any, *, attributes: Union[str, Sequence[str]] = (), **parameters: Any) -> Tuple[Any, FairingReport]: ...
+def fair_meshio(mesh: Any, *, attributes: Union[str, Sequence[str]] = (),
+                **parameters: Any) -> Tuple[Any, FairingReport]: ...
 def fair_open3d(mesh: Any, *, colours: bool = True, **parameters: Any) -> Tuple[Any, FairingReport]: ...
 
 _PolyData = TypeVar('_PolyData')   # a vtkPolyData (VTK ships no type information), e.g. a pyvista.PolyData
 
-def fair_vtk(mesh: _PolyData, *, attributes: Union[str, Sequence[str]] = (), **parameters: Any) -> Tuple[_PolyData, FairingReport]: ...
+def fair_vtk(mesh: _PolyData, *, attributes: Union[str, Sequence[str]] = (),
+             **parameters: Any) -> Tuple[_PolyData, FairingReport]: ...

@@ -12,6 +12,7 @@ from .report import FairingReport, StepInfo
 
 __version__: str
 parameter_names: Tuple[str, ...]
+parameter_words: dict[str, Tuple[str, ...]]
 
 # with vertex_normals, the normals the program would write (None when the geometry was not faired) come fourth
 @overload

@@ -45,8 +45,8 @@ class Progress:
             self.thread.join()
         with self.lock:
             if self.shown:
-                self._close('done' if exception[0] is None else
-                            'interrupted' if issubclass(exception[0], KeyboardInterrupt) else 'ended by ' + exception[0].__name__)
+                self._close('done' if exception[0] is None else 'interrupted'
+                            if issubclass(exception[0], KeyboardInterrupt) else 'ended by ' + exception[0].__name__)
 
     def step(self, info):
         """The callback's part: one step done."""
@@ -120,7 +120,8 @@ class Progress:
                 self.bar.set_postfix_str(end + ' after ' + self._text(), refresh=False)
                 self.bar.close()
             elif self.file is not None:
-                line = 'anisotropic_fairing: %s after %d steps, %.1f s' % (end, self.steps, time.monotonic() - self.start)
+                seconds = time.monotonic() - self.start
+                line = 'anisotropic_fairing: %s after %d steps, %.1f s' % (end, self.steps, seconds)
                 self.file.write(('\r' + line.ljust(self.width) if self.terminal else line) + '\n')
                 self.file.flush()
         except Exception:

@@ -53,7 +53,8 @@ def _as_type(values, dtype):
 
 
 def _dropped(what, why, stacklevel=3):
-    warnings.warn('%s: %s, so dropped (it would be stale after fairing)' % (what, why), UserWarning, stacklevel=stacklevel)
+    warnings.warn('%s: %s, so dropped (it would be stale after fairing)' % (what, why), UserWarning,
+                  stacklevel=stacklevel)
 
 
 def fair_meshio(mesh, *, attributes=(), **parameters):
@@ -79,7 +80,8 @@ def fair_meshio(mesh, *, attributes=(), **parameters):
     names = [attributes] if isinstance(attributes, str) else list(attributes)
     missing = [name for name in names if name not in mesh.point_data]
     if missing:
-        raise ValueError('not point data of the mesh: %s (it has: %s)' % (', '.join(missing), ', '.join(sorted(mesh.point_data)) or 'none'))
+        raise ValueError('not point data of the mesh: %s (it has: %s)'
+                         % (', '.join(missing), ', '.join(sorted(mesh.point_data)) or 'none'))
     n = len(points)
     # the normals, unless faired as attributes: single arrays, triples of 1-D arrays, face normals
     normals = [name for name in mesh.point_data if name.lower() in _NORMAL_NAMES and name not in names]
@@ -99,7 +101,8 @@ def fair_meshio(mesh, *, attributes=(), **parameters):
     for name in normals:
         if np.shape(point_data[name]) != (n, 3):
             del point_data[name]
-            _dropped("point data '%s' (vertex normals)" % name, 'it is an array of shape %s, not one normal per point (%d x 3)'
+            _dropped("point data '%s' (vertex normals)" % name,
+                     'it is an array of shape %s, not one normal per point (%d x 3)'
                      % (np.shape(mesh.point_data[name]), n))
         elif N2 is not None:
             point_data[name] = _as_type(N2, point_data[name].dtype)
@@ -118,9 +121,10 @@ def fair_meshio(mesh, *, attributes=(), **parameters):
             del cell_data[name]
             _dropped("cell data '%s' (face normals)" % name, 'it is not one normal per triangle')
         elif geometry_faired:
-            cell_data[name] = [_as_type(_face_normals(V2, np.asarray(c.data)), d.dtype) for d, c in zip(blocks, mesh.cells)]
-    faired = meshio.Mesh(V2, [(block.type, np.array(block.data, copy=True)) for block in mesh.cells], point_data=point_data,
-                         cell_data=cell_data, field_data=dict(mesh.field_data))
+            cell_data[name] = [_as_type(_face_normals(V2, np.asarray(c.data)), d.dtype)
+                               for d, c in zip(blocks, mesh.cells)]
+    cells = [(block.type, np.array(block.data, copy=True)) for block in mesh.cells]
+    faired = meshio.Mesh(V2, cells, point_data=point_data, cell_data=cell_data, field_data=dict(mesh.field_data))
     return faired, report
 
 
@@ -153,7 +157,8 @@ def fair_open3d(mesh, *, colours=True, **parameters):
         faired.triangle_normals = open3d.utility.Vector3dVector(_face_normals(V2, F))
     if mesh.has_triangle_uvs() and len(mesh.triangle_uvs) != 3 * len(F):
         warnings.warn('the mesh has %d texture coordinates (triangle_uvs), not 3 per triangle (%d): kept as they are, '
-                      'though Open3D will not use them' % (len(mesh.triangle_uvs), 3 * len(F)), UserWarning, stacklevel=2)
+                      'though Open3D will not use them' % (len(mesh.triangle_uvs), 3 * len(F)),
+                      UserWarning, stacklevel=2)
     return faired, report
 
 
@@ -176,34 +181,9 @@ def fair_vtk(mesh, *, attributes=(), **parameters):
     and names that are not point-data arrays.
     """
     from vtkmodules.util.numpy_support import vtk_to_numpy
-    from vtkmodules.vtkCommonDataModel import vtkDataSetAttributes, vtkPolyData
-    from vtkmodules.vtkFiltersCore import vtkTriangleFilter
-    if not isinstance(mesh, vtkPolyData):
-        raise TypeError('fair_vtk fairs a vtkPolyData (or a pyvista.PolyData), not a %s' % type(mesh).__name__)
-    names = [attributes] if isinstance(attributes, str) else list(attributes)
-    point_data = mesh.GetPointData()
-    missing = [name for name in names if point_data.GetArray(name) is None]
-    if missing:
-        arrays = sorted(point_data.GetArrayName(i) or '' for i in range(point_data.GetNumberOfArrays()))
-        raise ValueError('not point-data arrays of the mesh: %s (it has: %s)' % (', '.join(missing), ', '.join(arrays) or 'none'))
-    if mesh.GetNumberOfPolys() + mesh.GetNumberOfStrips() == 0:
-        raise ValueError('fair_vtk fairs a surface: this vtkPolyData has no polygon (%d points, %d vertex and %d line cells)'
-                         % (mesh.GetNumberOfPoints(), mesh.GetNumberOfVerts(), mesh.GetNumberOfLines()))
-
-    # the triangles: the polygons as they are, or triangulated as a copy
-    sizes = np.diff(vtk_to_numpy(mesh.GetPolys().GetOffsetsArray())) if mesh.GetNumberOfPolys() else np.zeros(0, dtype=int)
-    polygons, strips = int(np.count_nonzero(sizes != 3)), mesh.GetNumberOfStrips()
-    source = mesh
-    if polygons or strips:
-        triangulate = vtkTriangleFilter()
-        triangulate.SetInputData(mesh)
-        triangulate.PassVertsOn()
-        triangulate.PassLinesOn()
-        triangulate.Update()
-        source = triangulate.GetOutput()
-        warnings.warn('%d polygons of the vtkPolyData are not triangles%s: triangulated (vtkTriangleFilter) and given back '
-                      'as triangles, their cell data copied to each triangle' %
-                      (polygons, ' and %d are triangle strips' % strips if strips else ''), UserWarning, stacklevel=2)
+    from vtkmodules.vtkCommonDataModel import vtkPolyData
+    names = _vtk_names(mesh, attributes)
+    source = _vtk_triangles(mesh)
     try:
         faired = type(mesh)()
     except Exception:   # a subclass that wants arguments
@@ -218,25 +198,8 @@ def fair_vtk(mesh, *, attributes=(), **parameters):
     n = len(V)
     columns = [vtk_to_numpy(faired.GetPointData().GetArray(name)).astype(float).reshape(n, -1) for name in names]
     A = np.hstack(columns) if columns else None
-
-    def normals_of(data, count, per):
-        """the 3-component arrays of `data` that are its normals: the active ones, or named so (the name of
-        one that is not one 3-vector per `per`, which is dropped)"""
-        found = []
-        for i in range(data.GetNumberOfArrays()):
-            array = data.GetArray(i)
-            named = (data.GetArrayName(i) or '').lower() in ('normals', 'normal')
-            if array is not None and (data.IsArrayAnAttribute(i) == vtkDataSetAttributes.NORMALS or named) and \
-               data.GetArrayName(i) not in names:
-                if array.GetNumberOfComponents() == 3 and array.GetNumberOfTuples() == count:
-                    found.append(array)
-                else:
-                    _dropped("the normals '%s' of the vtkPolyData" % data.GetArrayName(i), 'they are not one 3-vector per ' + per,
-                             stacklevel=4)
-                    found.append(data.GetArrayName(i))
-        return found
-    point_normals = normals_of(faired.GetPointData(), n, 'point')
-    cell_normals = normals_of(faired.GetCellData(), faired.GetNumberOfCells(), 'cell')
+    point_normals = _vtk_normals(faired.GetPointData(), n, 'point', names)
+    cell_normals = _vtk_normals(faired.GetCellData(), faired.GetNumberOfCells(), 'cell', names)
     V2, A2, report, N2 = _fair(V, F, A, parameters, vertex_normals=bool(point_normals or cell_normals))
 
     points[:] = V2
@@ -247,17 +210,87 @@ def fair_vtk(mesh, *, attributes=(), **parameters):
         target[:] = _as_type(A2[:, first:first + block.shape[1]].reshape(target.shape), target.dtype)
         faired.GetPointData().GetArray(name).Modified()
         first += block.shape[1]
-    for data, arrays, per_point in ((faired.GetPointData(), point_normals, True), (faired.GetCellData(), cell_normals, False)):
+    faired_geometry = report['mode'] != 'attributes'
+    _vtk_write_normals(faired, point_normals, cell_normals, N2 if faired_geometry else None,
+                       _face_normals(V2, F) if faired_geometry and cell_normals else None)
+    faired.Modified()
+    return faired, report
+
+
+def _vtk_names(mesh, attributes):
+    """fair_vtk's attribute names, each a point-data array of the mesh, which must have polygons"""
+    from vtkmodules.vtkCommonDataModel import vtkPolyData
+    if not isinstance(mesh, vtkPolyData):
+        raise TypeError('fair_vtk fairs a vtkPolyData (or a pyvista.PolyData), not a %s' % type(mesh).__name__)
+    names = [attributes] if isinstance(attributes, str) else list(attributes)
+    point_data = mesh.GetPointData()
+    missing = [name for name in names if point_data.GetArray(name) is None]
+    if missing:
+        arrays = sorted(point_data.GetArrayName(i) or '' for i in range(point_data.GetNumberOfArrays()))
+        raise ValueError('not point-data arrays of the mesh: %s (it has: %s)'
+                         % (', '.join(missing), ', '.join(arrays) or 'none'))
+    if mesh.GetNumberOfPolys() + mesh.GetNumberOfStrips() == 0:
+        raise ValueError('fair_vtk fairs a surface: this vtkPolyData has no polygon '
+                         '(%d points, %d vertex and %d line cells)'
+                         % (mesh.GetNumberOfPoints(), mesh.GetNumberOfVerts(), mesh.GetNumberOfLines()))
+    return names
+
+
+def _vtk_triangles(mesh):
+    """the triangles of fair_vtk's mesh: its polygons as they are, or triangulated as a copy (with a warning
+    for fair_vtk's caller)"""
+    from vtkmodules.util.numpy_support import vtk_to_numpy
+    from vtkmodules.vtkFiltersCore import vtkTriangleFilter
+    polys = mesh.GetPolys()
+    sizes = np.diff(vtk_to_numpy(polys.GetOffsetsArray())) if mesh.GetNumberOfPolys() else np.zeros(0, dtype=int)
+    polygons, strips = int(np.count_nonzero(sizes != 3)), mesh.GetNumberOfStrips()
+    if not polygons and not strips:
+        return mesh
+    triangulate = vtkTriangleFilter()
+    triangulate.SetInputData(mesh)
+    triangulate.PassVertsOn()
+    triangulate.PassLinesOn()
+    triangulate.Update()
+    warnings.warn('%d polygons of the vtkPolyData are not triangles%s: triangulated (vtkTriangleFilter) and given back '
+                  'as triangles, their cell data copied to each triangle' %
+                  (polygons, ' and %d are triangle strips' % strips if strips else ''), UserWarning, stacklevel=3)
+    return triangulate.GetOutput()
+
+
+def _vtk_normals(data, count, per, names):
+    """the 3-component arrays of `data` that are its normals: the active ones, or named so (the name of one
+    that is not one 3-vector per `per`, which is dropped, with a warning for fair_vtk's caller); not the
+    attributes `names`"""
+    from vtkmodules.vtkCommonDataModel import vtkDataSetAttributes
+    found = []
+    for i in range(data.GetNumberOfArrays()):
+        array = data.GetArray(i)
+        named = (data.GetArrayName(i) or '').lower() in ('normals', 'normal')
+        if array is not None and (data.IsArrayAnAttribute(i) == vtkDataSetAttributes.NORMALS or named) and \
+           data.GetArrayName(i) not in names:
+            if array.GetNumberOfComponents() == 3 and array.GetNumberOfTuples() == count:
+                found.append(array)
+            else:
+                _dropped("the normals '%s' of the vtkPolyData" % data.GetArrayName(i),
+                         'they are not one 3-vector per ' + per, stacklevel=4)
+                found.append(data.GetArrayName(i))
+    return found
+
+
+def _vtk_write_normals(faired, point_normals, cell_normals, N2, face_normals):
+    """the faired normals into fair_vtk's copy (None: the geometry was not faired, the input's are kept);
+    the names of normals that could not be kept are removed"""
+    from vtkmodules.util.numpy_support import vtk_to_numpy
+    for data, arrays, per_point in ((faired.GetPointData(), point_normals, True),
+                                    (faired.GetCellData(), cell_normals, False)):
         for array in arrays:
             if isinstance(array, str):
                 data.RemoveArray(array)
-            elif report['mode'] != 'attributes':
+            elif N2 is not None:
                 target = vtk_to_numpy(array)
                 if per_point:
                     target[:] = _as_type(N2, target.dtype)
                 else:   # the triangles' cells come after the vertices' and the lines'
                     start = faired.GetNumberOfVerts() + faired.GetNumberOfLines()
-                    target[start:start + len(F)] = _as_type(_face_normals(V2, F), target.dtype)
+                    target[start:start + len(face_normals)] = _as_type(face_normals, target.dtype)
                 array.Modified()
-    faired.Modified()
-    return faired, report

@@ -131,4 +131,5 @@ FairingReport = TypedDict('FairingReport', {
     'write_seconds': Optional[float],
     'wall_seconds': Optional[float],
 })
-FairingReport.__doc__ = """The report of a run: the program's JSON report (``anisotropic_fairing --report``) as a dict."""
+FairingReport.__doc__ = """The report of a run: the program's JSON report (``anisotropic_fairing --report``) as a
+dict."""

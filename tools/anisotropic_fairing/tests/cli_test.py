@@ -88,6 +88,13 @@ def check_table(spec, work):
         check(False, '%s: no such file' % spec['file'])
         return
     columns, rows = table(path, spec.get('table', 'vertex'))
+    check_table_shape(spec, path, what, columns, rows)
+    check_table_values(spec, what, columns, rows)
+    check_table_against_files(spec, work, what, columns, rows)
+
+
+def check_table_shape(spec, path, what, columns, rows):
+    """The rows, the columns and the header lines of the table."""
     if 'rows' in spec:
         check(len(rows) == spec['rows'], '%s: %d rows, expected %d' % (what, len(rows), spec['rows']))
     for col in spec.get('has_columns', []):
@@ -96,7 +103,12 @@ def check_table(spec, work):
         check(columns == spec['columns'], '%s: properties %s, expected %s' % (what, columns, spec['columns']))
     for line in spec.get('header_has', []):   # PLY header lines
         header = [l.strip() for l in read_lines(path)]
-        check(line in header[:header.index('end_header')] if 'end_header' in header else False, '%s: header has %r' % (what, line))
+        check(line in header[:header.index('end_header')] if 'end_header' in header else False,
+              '%s: header has %r' % (what, line))
+
+
+def check_table_values(spec, what, columns, rows):
+    """The values of the table's rows."""
     for e in spec.get('equal', []):   # exact tokens per row
         for i, expected in enumerate(e['values']):
             got = select(columns, rows[i], e['cols']) if i < len(rows) else 'missing'
@@ -115,7 +127,8 @@ def check_table(spec, work):
         c = spec['close']
         for i, row in enumerate(rows):
             v = float(select(columns, row, c['cols']))
-            check(abs(v - c['value']) <= c['tol'], '%s row %d: %s %r == %r to %g' % (what, i, c['cols'], v, c['value'], c['tol']))
+            check(abs(v - c['value']) <= c['tol'],
+                  '%s row %d: %s %r == %r to %g' % (what, i, c['cols'], v, c['value'], c['tol']))
     if 'all_equal' in spec:   # every value of these columns within tol of row 0's first
         c = spec['all_equal']
         first = float(select(columns, rows[0], c['cols'][:1]))
@@ -127,17 +140,24 @@ def check_table(spec, work):
         check(v.startswith('-'), '%s: %s %s negative' % (what, spec['negative'], v))
     if 'tokens_per_row' in spec:
         for i, row in enumerate(rows):
-            check(len(row) == spec['tokens_per_row'], '%s row %d: %d tokens, expected %d' % (what, i, len(row), spec['tokens_per_row']))
+            check(len(row) == spec['tokens_per_row'],
+                  '%s row %d: %d tokens, expected %d' % (what, i, len(row), spec['tokens_per_row']))
     if 'row_regex' in spec:
         for i, row in enumerate(rows):
-            check(re.search(spec['row_regex'], ' '.join(row)), '%s row %d %r matches %s' % (what, i, ' '.join(row), spec['row_regex']))
+            check(re.search(spec['row_regex'], ' '.join(row)),
+                  '%s row %d %r matches %s' % (what, i, ' '.join(row), spec['row_regex']))
     if 'max_significant_digits' in spec:
         most = max(significant_digits(t) for row in rows for t in row)
-        check(most == spec['max_significant_digits'], '%s: at most %d significant digits, expected %d' % (what, most, spec['max_significant_digits']))
+        check(most == spec['max_significant_digits'],
+              '%s: at most %d significant digits, expected %d' % (what, most, spec['max_significant_digits']))
     if 'row' in spec:   # one row (negative index: from the end)
         r = spec['row']
         got = select(columns, rows[r['index']], r['cols']) if -len(rows) <= r['index'] < len(rows) else 'missing'
         check(got == r['value'], '%s row %d: %r == %r' % (what, r['index'], got, r['value']))
+
+
+def check_table_against_files(spec, work, what, columns, rows):
+    """The table against the same table of another file."""
     if 'within' in spec:   # every row's columns no farther (Euclidean) than `distance` from another file's
         o = spec['within']
         ocolumns, orows = table(os.path.join(work, o['file']), spec.get('table', 'vertex'))
@@ -147,7 +167,8 @@ def check_table(spec, work):
             a = [float(x) for x in select(columns, row, o['cols']).split()]
             b = [float(x) for x in select(ocolumns, orow, o['cols']).split()]
             far = max(far, sum((x - y) ** 2 for x, y in zip(a, b)) ** 0.5)
-        check(far <= o['distance'], '%s %s within %g of %s (largest %.17g)' % (what, o['cols'], o['distance'], o['file'], far))
+        check(far <= o['distance'],
+              '%s %s within %g of %s (largest %.17g)' % (what, o['cols'], o['distance'], o['file'], far))
         check(far > o.get('moved', 0), '%s moved by more than %g (largest %.17g)' % (what, o.get('moved', 0), far))
     for key, same in (('same_as', True), ('differs_from', False)):   # the same columns of another file
         if key not in spec:
@@ -171,7 +192,6 @@ def check_table(spec, work):
         ocolumns, orows = table(os.path.join(work, o['file']), spec.get('table', 'vertex'))
         a, b = float(select(columns, rows[0], [o['col']])), float(select(ocolumns, orows[0], [o['col']]))
         check(a < b, '%s: %s %r < %r of %s' % (what, o['col'], a, b, o['file']))
-
 
 # ---- the report ----------------------------------------------------------------------------------
 # every report, of a success or a failure, holds every key of the manual page's report table
@@ -233,7 +253,8 @@ def do_run(run, tool, work, data):
     print('anisotropic_fairing %s\n  -> exit %d\n  stderr: %s' % (' '.join(args), p.returncode, p.stderr.rstrip()))
     what = run.get('what', ' '.join(run['args']))
     output = os.path.join(work, run['output']) if 'output' in run else None
-    check(p.returncode == run.get('exit', 0), '%s: exit code %d, expected %d' % (what, p.returncode, run.get('exit', 0)))
+    check(p.returncode == run.get('exit', 0),
+          '%s: exit code %d, expected %d' % (what, p.returncode, run.get('exit', 0)))
     if run.get('clean_failure'):   # one line starting with "anisotropic_fairing: ", no output, no temporary
         err = p.stderr[:-1] if p.stderr.endswith('\n') else p.stderr
         check('\n' not in err, '%s: stderr has one line: [%s]' % (what, p.stderr))
@@ -246,12 +267,14 @@ def do_run(run, tool, work, data):
         after = file_digests(work)
         asked = os.path.join(work, run['report']) if 'report' in run else None
         for path, digest in before.items():
-            check(path == asked or after.get(path) == digest, '%s: %s unchanged by the failure' % (what, os.path.relpath(path, work)))
+            check(path == asked or after.get(path) == digest,
+                  '%s: %s unchanged by the failure' % (what, os.path.relpath(path, work)))
     for pattern in run.get('stderr', []):
         check(re.search(pattern, p.stderr), '%s: stderr matches %s' % (what, pattern))
     if 'stderr_lines' in run:   # every line of stderr matches
         for line in p.stderr.splitlines():
-            check(re.search(run['stderr_lines'], line), '%s: stderr line %r matches %s' % (what, line, run['stderr_lines']))
+            check(re.search(run['stderr_lines'], line),
+                  '%s: stderr line %r matches %s' % (what, line, run['stderr_lines']))
     for pattern in run.get('stderr_not', []):
         check(not re.search(pattern, p.stderr), '%s: stderr does not match %s' % (what, pattern))
     if 'report' in run:
@@ -276,23 +299,27 @@ def report_keys_of_page(manual):
 
 def check_docs(tool, manual, example_data, work):
     version = subprocess.run([tool, '--version'], capture_output=True, text=True)
-    check(version.returncode == 0 and re.match(r'anisotropic_fairing \d+\.\d+\.\d+ .*\nCGAL \S+, Eigen \d+\.\d+\.\d+, Boost \d+\.\d+\.\d+\n$', version.stdout),
+    pattern = r'anisotropic_fairing \d+\.\d+\.\d+ .*\nCGAL \S+, Eigen \d+\.\d+\.\d+, Boost \d+\.\d+\.\d+\n$'
+    check(version.returncode == 0 and re.match(pattern, version.stdout),
           '--version prints the versions and exits 0: %r' % version.stdout)
     # the option list is made from --help by scripts/option_docs.py, which says what differs
     generator = os.path.join(os.path.dirname(os.path.abspath(__file__)), '..', '..', '..', 'scripts', 'option_docs.py')
     docs = subprocess.run([sys.executable, generator, tool, '--check'], capture_output=True, text=True)
-    check(docs.returncode == 0, 'the manual (%s) gives the options exactly as --help does:\n%s%s' % (manual, docs.stdout, docs.stderr))
+    check(docs.returncode == 0,
+          'the manual (%s) gives the options exactly as --help does:\n%s%s' % (manual, docs.stdout, docs.stderr))
     # every key a report holds is in the page's table, and the table names no other
     os.makedirs(work, exist_ok=True)
     report = os.path.join(work, 'keys.json')
-    run = subprocess.run([tool, os.path.join(example_data, 'octahedron_quality.ply'), os.path.join(work, 'keys.ply'), '--quiet',
-                          '--attributes', 'quality', '--steps', '1', '--report', report], capture_output=True, text=True)
+    run = subprocess.run([tool, os.path.join(example_data, 'octahedron_quality.ply'), os.path.join(work, 'keys.ply'),
+                          '--quiet', '--attributes', 'quality', '--steps', '1', '--report', report],
+                         capture_output=True, text=True)
     check(run.returncode == 0, 'a one-step run with attributes succeeds: %s' % run.stderr)
     if run.returncode == 0:
         written, listed = set(json.load(open(report))), report_keys_of_page(manual)
         check(len(listed) == len(set(listed)), 'the page names each report key once: %s' %
               sorted(k for k in set(listed) if listed.count(k) > 1))
-        check(written == set(listed), 'the report keys are those of the page\'s table: not in the table %s, not in the report %s' %
+        check(written == set(listed),
+              'the report keys are those of the page\'s table: not in the table %s, not in the report %s' %
               (sorted(written - set(listed)), sorted(set(listed) - written)))
 
 
@@ -318,7 +345,8 @@ def main():
         for f in group.get('inputs', []):
             shutil.copy(os.path.join(here, f), a.work)
         for name, source in group.get('with_normals', {}).items():   # an OFF file as NOFF, every normal 0 0 1
-            lines = [l for l in read_lines(source.replace('@DATA@', a.example_data)) if l.strip() and not l.startswith('#')]
+            lines = [l for l in read_lines(source.replace('@DATA@', a.example_data))
+                     if l.strip() and not l.startswith('#')]
             nv = int(lines[1].split()[0])
             body = ['NOFF', lines[1]] + [l + ' 0 0 1' for l in lines[2:2 + nv]] + lines[2 + nv:]
             open(os.path.join(a.work, name), 'w').write('\n'.join(body) + '\n')

@@ -37,7 +37,8 @@ def icosphere(level):
     V = [[-1, t, 0], [1, t, 0], [-1, -t, 0], [1, -t, 0], [0, -1, t], [0, 1, t], [0, -1, -t], [0, 1, -t],
          [t, 0, -1], [t, 0, 1], [-t, 0, -1], [-t, 0, 1]]
     F = [[0, 11, 5], [0, 5, 1], [0, 1, 7], [0, 7, 10], [0, 10, 11], [1, 5, 9], [5, 11, 4], [11, 10, 2], [10, 7, 6],
-         [7, 1, 8], [3, 9, 4], [3, 4, 2], [3, 2, 6], [3, 6, 8], [3, 8, 9], [4, 9, 5], [2, 4, 11], [6, 2, 10], [8, 6, 7], [9, 8, 1]]
+         [7, 1, 8], [3, 9, 4], [3, 4, 2], [3, 2, 6], [3, 6, 8], [3, 8, 9], [4, 9, 5], [2, 4, 11], [6, 2, 10],
+         [8, 6, 7], [9, 8, 1]]
     for _ in range(level):
         middle, G = {}, []
         def mid(a, b):
@@ -97,8 +98,9 @@ def columns_for(V):
 # ------------------------------------------------------------------------------------------------
 # Files
 # ------------------------------------------------------------------------------------------------
-PLY_TYPES = {'char': 'b', 'uchar': 'B', 'int8': 'b', 'uint8': 'B', 'short': 'h', 'ushort': 'H', 'int16': 'h', 'uint16': 'H',
-             'int': 'i', 'uint': 'I', 'int32': 'i', 'uint32': 'I', 'float': 'f', 'float32': 'f', 'double': 'd', 'float64': 'd'}
+PLY_TYPES = {'char': 'b', 'uchar': 'B', 'int8': 'b', 'uint8': 'B', 'short': 'h', 'ushort': 'H',
+             'int16': 'h', 'uint16': 'H', 'int': 'i', 'uint': 'I', 'int32': 'i', 'uint32': 'I',
+             'float': 'f', 'float32': 'f', 'double': 'd', 'float64': 'd'}
 
 
 def write_ply(path, V, F, columns, binary=False, face_columns=None):
@@ -112,14 +114,18 @@ def write_ply(path, V, F, columns, binary=False, face_columns=None):
         f.write(('\n'.join(head) + '\n').encode())
         for i, p in enumerate(V):
             if binary:
-                f.write(struct.pack('<3d', *p) + b''.join(struct.pack('<f' if n == 'quality' else '<B', c[i]) for n, c in columns.items()))
+                props = b''.join(struct.pack('<f' if n == 'quality' else '<B', c[i]) for n, c in columns.items())
+                f.write(struct.pack('<3d', *p) + props)
             else:
-                f.write((' '.join(repr(x) for x in p) + ''.join(' %s' % c[i] for c in columns.values()) + '\n').encode())
+                props = ''.join(' %s' % c[i] for c in columns.values())
+                f.write((' '.join(repr(x) for x in p) + props + '\n').encode())
         for k, t in enumerate(F):
             if binary:
-                f.write(struct.pack('<B%di' % len(t), len(t), *t) + b''.join(struct.pack('<i', c[k]) for c in face_columns.values()))
+                props = b''.join(struct.pack('<i', c[k]) for c in face_columns.values())
+                f.write(struct.pack('<B%di' % len(t), len(t), *t) + props)
             else:
-                f.write(('%d %s%s\n' % (len(t), ' '.join(map(str, t)), ''.join(' %d' % c[k] for c in face_columns.values()))).encode())
+                props = ''.join(' %d' % c[k] for c in face_columns.values())
+                f.write(('%d %s%s\n' % (len(t), ' '.join(map(str, t)), props)).encode())
 
 
 def read_ply(path):
@@ -150,7 +156,8 @@ def read_ply(path):
     for name, count, props in elements:
         rows = []
         for _ in range(count):
-            rows.append([tuple(value(t[2]) for _ in range(value(t[1]))) if t[0] == 'list' else value(t[0]) for _, t in props])
+            rows.append([tuple(value(t[2]) for _ in range(value(t[1]))) if t[0] == 'list' else value(t[0])
+                         for _, t in props])
         out[name] = ([p for p, _ in props], rows)
     return out
 
@@ -232,7 +239,8 @@ def non_manifold(tool, work):
         hand_cols = {n: c + [c[i] for i in a] for n, c in cols.items()}
         write_ply(os.path.join(work, 'hand.ply'), Vh, Fh, hand_cols)
         rc, err = run(tool, ['hand.ply', 'hand_out.ply', '--report', 'hand.json'], work)
-        check(rc == 0 and 'non-manifold' not in err, '%s split by hand: a manifold mesh faired (%s)' % (what, err.strip()[-200:]))
+        check(rc == 0 and 'non-manifold' not in err,
+              '%s split by hand: a manifold mesh faired (%s)' % (what, err.strip()[-200:]))
         hand = points_of(read_ply(os.path.join(work, 'hand_out.ply'))['vertex'])
         for fmt in ('ply', 'binary.ply', 'off', 'obj'):
             name = 'nm%d.%s' % (shared, fmt)
@@ -250,30 +258,37 @@ def non_manifold(tool, work):
             if not check(rc == 0, '%s: faired without asking (exit %d: %s)' % (label, rc, err.strip()[-300:])):
                 continue
             check(open(path, 'rb').read() == before, '%s: the input is unchanged' % label)
-            check('non-manifold' in err and 'split' in err and 'mean of its copies' in err, '%s: a warning says what was done' % label)
+            check('non-manifold' in err and 'split' in err and 'mean of its copies' in err,
+                  '%s: a warning says what was done' % label)
             r = report(work, name + '.json')
             check(r['status'] == 'success' and r['split_vertices'] == shared and r['vertices'] == len(V) and
-                  any('split' in c for c in r['input_changes']), '%s: the report says it (split_vertices %s)' % (label, r['split_vertices']))
+                  any('split' in c for c in r['input_changes']),
+                  '%s: the report says it (split_vertices %s)' % (label, r['split_vertices']))
             if fmt.endswith('ply'):
                 t = read_ply(os.path.join(work, out))
                 P, faces = points_of(t['vertex']), [row[0] for row in t['face'][1]]
-                check(column(t['vertex'], 'quality') == cols['quality'] and column(t['vertex'], 'red') == cols['red'] and
-                      column(t['vertex'], 'blue') == cols['blue'], '%s: every vertex property kept, in vertex order' % label)
+                check(column(t['vertex'], 'quality') == cols['quality'] and
+                      column(t['vertex'], 'red') == cols['red'] and column(t['vertex'], 'blue') == cols['blue'],
+                      '%s: every vertex property kept, in vertex order' % label)
             elif fmt == 'off':
                 keyword, rows, faces, rest = read_off(os.path.join(work, out))
                 P = [[float(x) for x in row[:3]] for row in rows]
                 check('C' in keyword and [tuple(int(float(x)) for x in row[3:6]) for row in rows] ==
-                      list(zip(cols['red'], cols['green'], cols['blue'])), '%s: the colours kept, in vertex order' % label)
+                      list(zip(cols['red'], cols['green'], cols['blue'])),
+                      '%s: the colours kept, in vertex order' % label)
             else:
                 P, faces = read_obj(os.path.join(work, out))
             check(len(P) == len(V), '%s: the input\'s %d vertices written (%d)' % (label, len(V), len(P)))
-            check([tuple(f) for f in faces] == [tuple(f) for f in F], '%s: the input\'s faces written, as they were' % label)
-            check(all(math.isfinite(x) for p in P for x in p) and max(math.dist(p, q) for p, q in zip(P, V)) > 1e-4 * size,
+            check([tuple(f) for f in faces] == [tuple(f) for f in F],
+                  '%s: the input\'s faces written, as they were' % label)
+            check(all(math.isfinite(x) for p in P for x in p) and
+                  max(math.dist(p, q) for p, q in zip(P, V)) > 1e-4 * size,
                   '%s: the surface was faired' % label)
             # the split run is the run split by hand: the shared vertices at the mean of their two copies
             if fmt == 'ply':
                 worst = max(math.dist(P[i], hand[i]) for i in range(len(V)) if i not in a)
-                check(worst < 1e-9 * size, '%s: the other vertices as the hand-split run writes them (%.2g)' % (label, worst))
+                check(worst < 1e-9 * size,
+                      '%s: the other vertices as the hand-split run writes them (%.2g)' % (label, worst))
                 for k, i in enumerate(a):
                     mean = [(hand[i][c] + hand[len(V) + k][c]) / 2 for c in range(3)]
                     check(math.dist(P[i], mean) < 1e-9 * size and math.dist(hand[i], hand[len(V) + k]) > 1e-6 * size,
@@ -289,8 +304,10 @@ def raw_scan(tool, work, data):
         return
     r = report(work, 'angel.json')
     P, G = read_obj(os.path.join(work, 'angel_out.obj'))
-    check(r['status'] == 'success' and r['split_vertices'] > 0 and 'non-manifold' in err, 'angel.obj: its non-manifold vertices split, said')
-    check(len(P) == len(V) and G == F, 'angel.obj: the scan\'s %d vertices and %d faces written as they were' % (len(V), len(F)))
+    check(r['status'] == 'success' and r['split_vertices'] > 0 and 'non-manifold' in err,
+          'angel.obj: its non-manifold vertices split, said')
+    check(len(P) == len(V) and G == F,
+          'angel.obj: the scan\'s %d vertices and %d faces written as they were' % (len(V), len(F)))
 
 
 def polygons(tool, work):
@@ -337,7 +354,8 @@ def polygons(tool, work):
         r = report(work, 'quads.json')
         check('triangulated' in err and r['triangulated_faces'] == len(P) and r['faces'] == triangles,
               'polygons: triangulated, said in a warning and the report (%s)' % r['triangulated_faces'])
-        check(len(faces) == triangles and all(len(f) == 3 for f in faces), 'polygons: written as %d triangles' % triangles)
+        check(len(faces) == triangles and all(len(f) == 3 for f in faces),
+              'polygons: written as %d triangles' % triangles)
         check(len(rows) == len(V) and [tuple(int(float(x)) for x in row[3:6]) for row in rows] ==
               list(zip(cols['red'], cols['green'], cols['blue'])), 'polygons: the vertices and their colours kept')
     rc, err = run(tool, ['quads.ply', 'quads_out.ply'], work)
@@ -346,7 +364,8 @@ def polygons(tool, work):
         faces, label = [row[0] for row in t['face'][1]], column(t['face'], 'label')
         expected = sorted(l for k, p in enumerate(P) for l in [labels['label'][k]] * (len(p) - 2))
         covers = all(set(f) <= set(P[label[k] // 10]) for k, f in enumerate(faces))
-        check(sorted(label) == expected and covers, 'polygons: each triangle has the face property of the polygon it was cut from')
+        check(sorted(label) == expected and covers,
+              'polygons: each triangle has the face property of the polygon it was cut from')
         check(column(t['vertex'], 'quality') == cols['quality'], 'polygons: the vertex properties kept')
 
 
@@ -361,7 +380,8 @@ def repair(tool, work):
     q = column(t['vertex'], 'quality')
     check(len(q) == len(V) + 1 and q[:len(V)] == cols['quality'] and q[len(V)] == cols['quality'][a[0]],
           '--repair: the vertex properties kept, the copy with its original\'s (%d vertices)' % len(q))
-    check(any(c.startswith('--repair:') for c in report(work, 'repair.json')['input_changes']), '--repair: its changes in the report')
+    check(any(c.startswith('--repair:') for c in report(work, 'repair.json')['input_changes']),
+          '--repair: its changes in the report')
 
 
 def stl(tool, work, data):
@@ -371,8 +391,10 @@ def stl(tool, work, data):
     rc, err = run(tool, ['bumpy.off', 'bumpy.stl', '--steps', '1', '--relative-time-step', '1e-3'], work)
     if check(rc == 0, 'STL output (exit %d: %s)' % (rc, err.strip()[-200:])):
         b = open(os.path.join(work, 'bumpy.stl'), 'rb').read()
-        check(len(b) == 84 + 50 * faces and struct.unpack_from('<I', b, 80)[0] == faces, 'STL: binary, %d triangles' % faces)
-    rc, err = run(tool, ['bumpy.off', 'bumpy_text.stl', '--ascii', '--steps', '1', '--relative-time-step', '1e-3'], work)
+        check(len(b) == 84 + 50 * faces and struct.unpack_from('<I', b, 80)[0] == faces,
+              'STL: binary, %d triangles' % faces)
+    rc, err = run(tool, ['bumpy.off', 'bumpy_text.stl', '--ascii', '--steps', '1', '--relative-time-step', '1e-3'],
+                  work)
     if check(rc == 0, 'ASCII STL output (exit %d: %s)' % (rc, err.strip()[-200:])):
         text = open(os.path.join(work, 'bumpy_text.stl')).read()
         vertices = [line.split()[1:] for line in text.splitlines() if line.strip().startswith('vertex')]
@@ -381,7 +403,8 @@ def stl(tool, work, data):
         check(digits > 9, 'STL --ascii: the full doubles (up to %d significant digits)' % digits)
         binary = open(os.path.join(work, 'bumpy.stl'), 'rb').read()
         first = struct.unpack_from('<3f', binary, 84 + 12)
-        check(all(abs(float(x) - y) <= 1e-6 * max(1, abs(y)) for x, y in zip(vertices[0], first)), 'STL: binary and text hold the same triangles')
+        check(all(abs(float(x) - y) <= 1e-6 * max(1, abs(y)) for x, y in zip(vertices[0], first)),
+              'STL: binary and text hold the same triangles')
 
 
 def main():

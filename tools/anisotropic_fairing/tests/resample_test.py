@@ -60,7 +60,8 @@ def read_ply(path):
 def write_ply(path, points, faces, columns):
     """ascii PLY with double vertex properties `columns` (name -> list)"""
     with open(path, 'w') as f:
-        f.write('ply\nformat ascii 1.0\nelement vertex %d\nproperty double x\nproperty double y\nproperty double z\n' % len(points))
+        f.write('ply\nformat ascii 1.0\nelement vertex %d\n'
+                'property double x\nproperty double y\nproperty double z\n' % len(points))
         for name in columns:
             f.write('property double %s\n' % name)
         f.write('element face %d\nproperty list uchar int vertex_indices\nend_header\n' % len(faces))
@@ -81,18 +82,20 @@ def test_resample(tool, data, work):
     E = 3 * F // 2   # closed
 
     # an unfaired affine attribute is the same affine function of the positions at every new vertex
-    code, err = run(tool, ['fandisk_q.ply', 'affine.ply', '--attributes', 'q', '--relative-time-step', '1e-3', '--steps', '0',
-                           '--stop', 'off', '--resample', '1', '--quiet'], work)
+    code, err = run(tool, ['fandisk_q.ply', 'affine.ply', '--attributes', 'q', '--relative-time-step', '1e-3',
+                           '--steps', '0', '--stop', 'off', '--resample', '1', '--quiet'], work)
     if check(code == 0, '--resample 1 with 0 steps runs (%s)' % err.strip()):
         _, rows, _, names = read_ply(os.path.join(work, 'affine.ply'))
         qi = names.index('q')
         worst = max(abs(float(r.split()[qi]) - affine([float(x) for x in r.split()[:3]])) for r in rows)
-        check(worst <= 1e-9, 'an affine attribute stays the same affine function of the resampled positions (largest error %.3g)' % worst)
+        check(worst <= 1e-9, 'an affine attribute stays the same affine function of the resampled positions '
+              '(largest error %.3g)' % worst)
 
     # a run with and without --resample 2 (a few steps: the sanitizer builds run this too)
     steps = ['--relative-time-step', '1e-3', '--steps', '2', '--stop', 'off', '--quiet']
     code0, err0 = run(tool, ['fandisk_q.ply', 'plain.ply', '--attributes', 'q'] + steps, work)
-    code2, err2 = run(tool, ['fandisk_q.ply', 'fine.ply', '--attributes', 'q', '--resample', '2', '--report', 'fine.json'] + steps, work)
+    code2, err2 = run(tool, ['fandisk_q.ply', 'fine.ply', '--attributes', 'q',
+                             '--resample', '2', '--report', 'fine.json'] + steps, work)
     if check(code0 == 0 and code2 == 0, 'a run with and without --resample 2 (%s %s)' % (err0.strip(), err2.strip())):
         h0, rows0, faces0, names0 = read_ply(os.path.join(work, 'plain.ply'))
         h2, rows2, faces2, names2 = read_ply(os.path.join(work, 'fine.ply'))
@@ -102,7 +105,8 @@ def test_resample(tool, data, work):
         check(rows2[:V] == rows0, 'the input\'s vertices come first, line for line as without --resample')
         check(names2 == names0 == ['x', 'y', 'z', 'q'], 'the properties are the input\'s (%s)' % names2)
         report = json.load(open(os.path.join(work, 'fine.json')))
-        check(report['resample'] == 2 and report['resampled_vertices'] == len(rows2) and report['resampled_faces'] == len(faces2),
+        check(report['resample'] == 2 and report['resampled_vertices'] == len(rows2) and
+              report['resampled_faces'] == len(faces2),
               'the report gives resample, resampled_vertices, resampled_faces')
 
     # face properties: a new face has those of the input face it lies in
@@ -114,21 +118,27 @@ def test_resample(tool, data, work):
         tris = [(0, 2, 4), (2, 1, 4), (1, 3, 4), (3, 0, 4), (2, 0, 5), (1, 2, 5), (3, 1, 5), (0, 3, 5)]
         for i, t in enumerate(tris):
             f.write('3 %d %d %d %d %d %d 7\n' % (t + (100 + i, 10 * i, 255 - 10 * i)))
-    code, err = run(tool, ['octahedron.ply', 'octahedron_fine.ply', '--resample', '1', '--relative-time-step', '1e-3', '--steps', '1', '--quiet'], work)
+    code, err = run(tool, ['octahedron.ply', 'octahedron_fine.ply', '--resample', '1', '--relative-time-step', '1e-3',
+                           '--steps', '1', '--quiet'], work)
     if check(code == 0, '--resample 1 on a PLY with face properties (%s)' % err.strip()):
         header, _, face_rows, _ = read_ply(os.path.join(work, 'octahedron_fine.ply'))
-        expected = ['3 %s %d %d %d 7' % ('%d %d %d', 100 + k // 4, 10 * (k // 4), 255 - 10 * (k // 4)) for k in range(32)]
+        expected = ['3 %s %d %d %d 7' % ('%d %d %d', 100 + k // 4, 10 * (k // 4), 255 - 10 * (k // 4))
+                    for k in range(32)]
         got = [r.split()[:1] + r.split()[4:] for r in face_rows]
-        check(len(face_rows) == 32 and all(got[k] == expected[k].replace('%d %d %d ', '').split() for k in range(32)),
+        check(len(face_rows) == 32 and
+              all(got[k] == expected[k].replace('%d %d %d ', '').split() for k in range(32)),
               'each new face has the label and colour of its input face (%s ...)' % face_rows[:2])
-        check([h for h in header if h.startswith('property')][-4:] == ['property int label', 'property uchar red', 'property uchar green',
-                                                                       'property uchar blue'], 'the face properties are the input\'s')
+        check([h for h in header if h.startswith('property')][-4:] ==
+              ['property int label', 'property uchar red', 'property uchar green', 'property uchar blue'],
+              'the face properties are the input\'s')
 
     # usage errors, and the size budget before the fairing
-    for args, what in ((['--resample', '11'], 'above 10'), (['--resample', '1', '--element', 'linear'], 'with --element linear'),
+    for args, what in ((['--resample', '11'], 'above 10'),
+                       (['--resample', '1', '--element', 'linear'], 'with --element linear'),
                        (['--resample', '1', '--output', 'control'], 'with --output control')):
         code, err = run(tool, ['octahedron.ply', 'bad.ply'] + args, work)
-        check(code == 2 and err.startswith('anisotropic_fairing: ') and not os.path.exists(os.path.join(work, 'bad.ply')),
+        check(code == 2 and err.startswith('anisotropic_fairing: ') and
+              not os.path.exists(os.path.join(work, 'bad.ply')),
               '--resample %s: usage error, no output (%s)' % (what, err.strip()))
     code, err = run(tool, ['fandisk_q.ply', 'huge.ply', '--resample', '10', '--report', 'huge.json'], work)
     check(code == 1 and 'would write' in err and not os.path.exists(os.path.join(work, 'huge.ply')) and
@@ -144,8 +154,10 @@ def test_snapshot(tool, data, work):
     if check(code == 0, '--snapshot renders (%s)' % err.strip()):
         head = open(os.path.join(work, 'shot.png'), 'rb').read(24)
         width, height = int.from_bytes(head[16:20], 'big'), int.from_bytes(head[20:24], 'big')
-        check(head[:8] == b'\x89PNG\r\n\x1a\n' and width > height > 100, 'a PNG, wider than high (%dx%d)' % (width, height))
-        check(json.load(open(os.path.join(work, 'shot.json')))['snapshot'] == 'shot.png', 'the report names the snapshot')
+        check(head[:8] == b'\x89PNG\r\n\x1a\n' and width > height > 100,
+              'a PNG, wider than high (%dx%d)' % (width, height))
+        check(json.load(open(os.path.join(work, 'shot.json')))['snapshot'] == 'shot.png',
+              'the report names the snapshot')
     # a renderer that fails: one line with its message, no output, no picture
     failing = os.path.join(work, 'failing_renderer.py')
     with open(failing, 'w') as f:
@@ -153,7 +165,8 @@ def test_snapshot(tool, data, work):
     env = dict(os.environ, AF_RENDER_SCRIPT=failing)
     code, err = run(tool, [src, 'shot2.off', '--snapshot', 'shot2.png', '--report', 'shot2.json'] + steps, work, env)
     check(code == 1 and err.count('\n') == 1 and 'no VTK here' in err and
-          not os.path.exists(os.path.join(work, 'shot2.off')) and not os.path.exists(os.path.join(work, 'shot2.png')) and
+          not os.path.exists(os.path.join(work, 'shot2.off')) and
+          not os.path.exists(os.path.join(work, 'shot2.png')) and
           json.load(open(os.path.join(work, 'shot2.json')))['status'] == 'snapshot_error',
           'a failing renderer: one line with its message, status snapshot_error, no output (%s)' % err.strip())
     code, err = run(tool, [src, 'shot3.off', '--snapshot', 'shot3.jpg'], work)

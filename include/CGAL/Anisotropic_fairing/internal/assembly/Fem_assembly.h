@@ -194,7 +194,8 @@ public:
       const std::size_t begin = nf * std::size_t(k) / std::size_t(chunks_);
       const std::size_t end = nf * std::size_t(k + 1) / std::size_t(chunks_);
       for(std::size_t i = begin; i < end; ++i)
-        assemble_face(face(i), X, metric_columns, tensor, ws, with_matrices ? M.data() : nullptr, L.data(), stats[std::size_t(k)]);
+        assemble_face(face(i), X, metric_columns, tensor, ws, with_matrices ? M.data() : nullptr, L.data(),
+                      stats[std::size_t(k)]);
     };
 #ifdef CGAL_LINKED_WITH_TBB
     if(chunks_ > 1)
@@ -210,12 +211,17 @@ public:
           const double* pm = shared_values_[2 * std::size_t(k - 1)].data();
           const double* pl = shared_values_[2 * std::size_t(k - 1) + 1].data();
           const std::ptrdiff_t d = shift_[std::size_t(j)];
-          for(int p = pattern_.outerIndexPtr()[j]; p < pattern_.outerIndexPtr()[j + 1]; ++p) { M[std::size_t(p)] += pm[p + d]; L[std::size_t(p)] += pl[p + d]; }
+          for(int p = pattern_.outerIndexPtr()[j]; p < pattern_.outerIndexPtr()[j + 1]; ++p)
+          {
+            M[std::size_t(p)] += pm[p + d];
+            L[std::size_t(p)] += pl[p + d];
+          }
         }
     Assembly_statistics total;
     total.component_area.assign(context_.components, 0.0);
     for(const Assembly_statistics& s : stats) total.add(s);
-    if(!Cache::has_second_derivatives) total.bounded_H_integral = total.H_integral = discrete_H_integral(X, metric_columns, M, L);
+    if(!Cache::has_second_derivatives)
+      total.bounded_H_integral = total.H_integral = discrete_H_integral(X, metric_columns, M, L);
     return total;
   }
 
@@ -264,7 +270,8 @@ private:
     std::vector<int> owner(n, -2);   // -2: no face, -1: several chunks
     const std::size_t nf = assembled_faces();
     for(int k = 0; k < chunks_; ++k)
-      for(std::size_t i = nf * std::size_t(k) / std::size_t(chunks_); i < nf * std::size_t(k + 1) / std::size_t(chunks_); ++i)
+      for(std::size_t i = nf * std::size_t(k) / std::size_t(chunks_);
+          i < nf * std::size_t(k + 1) / std::size_t(chunks_); ++i)
         for(int r = 0; r < cache_.ring_size(face(i)); ++r)
         {
           int& o = owner[std::size_t(cache_.ring(face(i))[r])];
@@ -314,7 +321,8 @@ private:
     const bool prefiltered = load_face(b, f, X, kappa);
     b.Bm.resize(nq, m);
     b.Bl.resize(2 * nq, m);
-    if(ws.zeros.size() != std::size_t(kappa)) { ws.zeros.assign(std::size_t(kappa), 0.0); ws.mean_curvature.resize(std::size_t(kappa)); }
+    if(ws.zeros.size() != std::size_t(kappa)) { ws.zeros.assign(std::size_t(kappa),
+                                                                0.0); ws.mean_curvature.resize(std::size_t(kappa)); }
 
     Quadrature_point_geometry g;
     const Assembly_context& x = context_;
@@ -330,7 +338,8 @@ private:
     }
     Face_sums sums;
     if(component >= 0 && x.curvature_bound) sums.bound = (*x.curvature_bound)[std::size_t(component)];
-    for(Eigen::Index q = 0; q < nq; ++q) assemble_point(b, f, q, prefiltered, tensor, g, ws, mv != nullptr, sums, stats);
+    for(Eigen::Index q = 0; q < nq; ++q) assemble_point(b, f, q, prefiltered, tensor, g, ws, mv != nullptr, sums,
+                                                        stats);
     stats.area += sums.area;
     if(component >= 0) stats.component_area[std::size_t(component)] += sums.area;
     if(sums.lowest_dot < x.folded_turn) { ++stats.reversed_faces; stats.reversed_face_list.push_back(f); }
@@ -372,7 +381,8 @@ private:
   // Quadrature point q of face f: the metric, the tensor, the point's share of the sums and, `with_matrices`,
   // its rows of B_M and B_L (M = B_M^T B_M, L = B_L^T B_L); a degenerate metric gives zero rows
   template <typename Buffers, typename Tensor>
-  void assemble_point(Buffers& b, std::size_t f, Eigen::Index q, bool prefiltered, const Tensor& tensor, Quadrature_point_geometry& g,
+  void assemble_point(Buffers& b, std::size_t f, Eigen::Index q, bool prefiltered, const Tensor& tensor,
+                      Quadrature_point_geometry& g,
                       Workspace& ws, bool with_matrices, Face_sums& sums, Assembly_statistics& stats) const
   {
     typedef Eigen::Map<const typename Buffers::Stencil_rows> Rows;
@@ -459,7 +469,8 @@ private:
     const Local* const locals[2] = { &b.localM, &b.localL };
     double* const values[2] = { mv, lv };
     double* const shared[2] = { ws.shared_m, ws.shared_l };
-    scatter_local_matrices<2>(locals, ring, m, ws.order, pattern_.outerIndexPtr(), pattern_.innerIndexPtr(), values, shared, ws.shift);
+    scatter_local_matrices<2>(locals, ring, m, ws.order, pattern_.outerIndexPtr(), pattern_.innerIndexPtr(), values,
+                              shared, ws.shift);
   }
 
   // |H|^2, H the mean-curvature vector (Surface_curvature.h), written into h
@@ -488,7 +499,8 @@ private:
       }
     double s = 0;
     for(Eigen::Index i = 0; i < n; ++i)
-      if(area[i] > 0 && !(context_.border && (*context_.border)[std::size_t(i)])) s += LX.row(i).squaredNorm() / (4 * area[i]);
+      if(area[i] > 0 && !(context_.border && (*context_.border)[std::size_t(i)]))
+        s += LX.row(i).squaredNorm() / (4 * area[i]);
     return s;
   }
 

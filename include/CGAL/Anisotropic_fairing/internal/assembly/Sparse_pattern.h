@@ -24,7 +24,8 @@ namespace internal {
 /// `Cache` is any element cache (Patch_cache, Linear_element_cache) exposing faces and their rings;
 /// `faces`: only the rings of these faces (null: all).
 template <typename Cache>
-Sparse_structure ring_sparsity_pattern(const Cache& cache, std::size_t n, const std::vector<std::size_t>* faces = nullptr)
+Sparse_structure ring_sparsity_pattern(const Cache& cache, std::size_t n,
+                                       const std::vector<std::size_t>* faces = nullptr)
 {
   const std::size_t nf = faces ? faces->size() : cache.number_of_faces();
   auto face = [faces](std::size_t i) { return faces ? (*faces)[i] : i; };

@@ -2,7 +2,8 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 //
 // The Loop element on a mesh with borders, in the shape of Patch_cache but over the real vertices
-// only. A face whose ring holds ghosts (doc/Anisotropic_fairing/design/loop-fem.md section 6) has the ghosts substituted by their
+// only. A face whose ring holds ghosts (doc/Anisotropic_fairing/design/loop-fem.md section 6) has the ghosts
+// substituted by their
 // affine rows: with P the (ring x real ring) matrix of that substitution, its stencils become S P, so
 // the basis is phi~_i = phi_i + sum_g E_gi phi_g and every assembled matrix is E^T M_ext E without
 // ever forming the extended one. Faces away from the border keep their shared per-category stencils;
@@ -48,7 +49,13 @@ public:
       else
       {
         // the real ring: every real vertex of the ring or of a ghost's row, in first-seen order
-        auto add = [&](int v) { if(slot[std::size_t(v)] < 0) { slot[std::size_t(v)] = int(ring_.size() - begin); ring_.push_back(v); } };
+        auto add = [&](int v) {
+          if(slot[std::size_t(v)] < 0)
+          {
+            slot[std::size_t(v)] = int(ring_.size() - begin);
+            ring_.push_back(v);
+          }
+        };
         for(int k = 0; k < m; ++k)
           if(ext[k] < n) add(ext[k]);
           else for(const auto& w : gl.ghosts[std::size_t(ext[k] - n)]) add(w.first);
@@ -90,7 +97,8 @@ public:
   }
   const Eigen::VectorXd& quadrature_weights(int c) const
   {
-    return base_.quadrature_weights(c < base_categories_ ? c : ghosted_[std::size_t(c - base_categories_)].base_category);
+    return base_.quadrature_weights(c < base_categories_ ? c
+                                                         : ghosted_[std::size_t(c - base_categories_)].base_category);
   }
   /// faces whose ring holds ghosts
   std::size_t number_of_ghosted_faces() const { return ghosted_.size(); }

@@ -69,7 +69,8 @@ public:
     std::vector<Block> block(blocks);
     parallel_blocks(blocks, [&](std::size_t first, std::size_t last) {
       std::vector<int> label(topo.number_of_vertices(), -1);
-      for(std::size_t b = first; b < last; ++b) categorize(topo, b * nf / blocks, (b + 1) * nf / blocks, label, block[b]);
+      for(std::size_t b = first; b < last; ++b) categorize(topo, b * nf / blocks, (b + 1) * nf / blocks, label,
+                                                           block[b]);
     }, std::size_t(1), std::size_t(1));
     std::unordered_map<std::vector<int>, int, Signature_hash> index;
     for(std::size_t b = 0; b < blocks; ++b)
@@ -86,13 +87,15 @@ public:
         }
         global[k] = it->second;
       }
-      for(std::size_t f = b * nf / blocks; f < (b + 1) * nf / blocks; ++f) category_[f] = global[std::size_t(category_[f])];
+      for(std::size_t f = b * nf / blocks; f < (b + 1) * nf / blocks; ++f)
+        category_[f] = global[std::size_t(category_[f])];
     }
     for(std::size_t f = 0; f < nf; ++f) ring_offset_[f + 1] += ring_offset_[f];
     ring_ids_.resize(ring_offset_[nf]);
     parallel_blocks(blocks, [&](std::size_t first, std::size_t last) {
       for(std::size_t b = first; b < last; ++b)
-        std::copy(block[b].rings.begin(), block[b].rings.end(), ring_ids_.begin() + std::ptrdiff_t(ring_offset_[b * nf / blocks]));
+        std::copy(block[b].rings.begin(), block[b].rings.end(),
+                  ring_ids_.begin() + std::ptrdiff_t(ring_offset_[b * nf / blocks]));
     }, std::size_t(1), std::size_t(1));
   }
 
@@ -190,7 +193,8 @@ private:
 
   // faces [first, last): each face's ring (its vertices, labelled in the order met), its category in the
   // block's own table (in category_), its ring's size (in ring_offset_[f + 1])
-  void categorize(const Triangle_topology& topo, std::size_t first, std::size_t last, std::vector<int>& label, Block& block)
+  void categorize(const Triangle_topology& topo, std::size_t first, std::size_t last, std::vector<int>& label,
+                  Block& block)
   {
     std::vector<int> ring, fan_faces, signature;
     std::vector<Tri> local;

@@ -4,7 +4,8 @@
 // Which vertices a boundary holds fixed. Fixing the boundary vertices alone (the paper) lets the limit
 // boundary curve move wherever an interior basis function is non-zero on it (next to corners with
 // m = 2, to m >= 4 vertices, to extraordinary apexes): a planar grid then slides by 0.37 edge lengths
-// in 10 steps (doc/Anisotropic_fairing/design/loop-fem.md section 6). The default also fixes this influence set: every vertex whose
+// in 10 steps (doc/Anisotropic_fairing/design/loop-fem.md section 6). The default also fixes this influence set: every
+// vertex whose
 // (ghost-substituted) basis function is non-zero somewhere on the limit boundary curve.
 
 #ifndef CGAL_ANISOTROPIC_FAIRING_INTERNAL_FLOW_BOUNDARY_CONSTRAINTS_H

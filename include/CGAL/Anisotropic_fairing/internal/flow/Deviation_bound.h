@@ -47,8 +47,8 @@ inline double row_deviation(const Control_matrix& Y, const Control_matrix& Y0, E
 
 /// Puts each written row of Y (`written[i]`) whose columns of the bound lie farther than its radius from the
 /// input's on the bound, along the line to the input, and marks it in `moved`.
-inline void clamp_to_bound(Control_matrix& Y, const Control_matrix& input, const Column_bound& b, const std::vector<bool>& written,
-                           std::vector<bool>& moved)
+inline void clamp_to_bound(Control_matrix& Y, const Control_matrix& input, const Column_bound& b,
+                           const std::vector<bool>& written, std::vector<bool>& moved)
 {
   if(!b.active()) return;
   for(Eigen::Index i = 0; i < Y.rows(); ++i)
@@ -129,7 +129,8 @@ public:
   {
     bool exceeded = false;
     for_each_bounded(Y, input, free, [&](std::size_t r, int b, double radius, double d) {
-      if(d > 1.01 * radius && raise(r, d, row_deviation(previous_, input, Eigen::Index(r), bounds_[b]), radius, tau[r], 4))
+      if(d > 1.01 * radius &&
+         raise(r, d, row_deviation(previous_, input, Eigen::Index(r), bounds_[b]), radius, tau[r], 4))
         exceeded = true;
     });
     return exceeded;
@@ -138,8 +139,8 @@ public:
   /// The written positions of the accepted step: where the next step's motion starts. A row whose next
   /// step, as long as this one, would carry it past 0.9 of its bound is held before it gets there. `tau`:
   /// each row's time step of the next step; `taken`: the accepted step's, as a share of it.
-  void accept(const Control_matrix& Y, const Control_matrix& input, const std::vector<int>& free, const std::vector<double>& tau,
-              double taken)
+  void accept(const Control_matrix& Y, const Control_matrix& input, const std::vector<int>& free,
+              const std::vector<double>& tau, double taken)
   {
     double omega = 0;   // the uniform weight's new value
     bool halfway = false;
@@ -169,7 +170,10 @@ public:
   const std::vector<double>& weights() const { return weight_; }
   /// the largest weight a row was given of its own, and the rows given one
   double largest_weight() const { return own_.empty() ? 0.0 : *std::max_element(own_.begin(), own_.end()); }
-  std::size_t held_rows() const { return std::size_t(std::count_if(own_.begin(), own_.end(), [](double w) { return w > 0; })); }
+  std::size_t held_rows() const
+  {
+    return std::size_t(std::count_if(own_.begin(), own_.end(), [](double w) { return w > 0; }));
+  }
   /// the uniform weight of a run to a steady state, at its last value (0: none)
   double uniform_weight() const { return uniform_weight_; }
 
@@ -177,7 +181,8 @@ private:
   // body(row, bound, the row's radius, its deviation in Y) for each free row and each bound in force; a
   // row's radius is the bound, or where it starts if farther (set_start())
   template <typename Body>
-  void for_each_bounded(const Control_matrix& Y, const Control_matrix& input, const std::vector<int>& free, const Body& body) const
+  void for_each_bounded(const Control_matrix& Y, const Control_matrix& input, const std::vector<int>& free,
+                        const Body& body) const
   {
     for(int b = 0; b < 2; ++b)
       if(bounds_[b].active())

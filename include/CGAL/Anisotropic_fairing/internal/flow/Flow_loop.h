@@ -63,15 +63,17 @@ class Flow_loop
 public:
   Flow_loop(Operator& op, const Control_matrix& X, Control_matrix& Z, int metric_columns, const Tensor& tensor,
             const Stepper_settings& s, Callback& callback, bool fixed, Probe_request probe = Probe_request())
-    : op_(op), X_(X), Z_(Z), metric_columns_(metric_columns), tensor_(tensor), s_(s), callback_(callback), fixed_(fixed),
-      probe_request_(std::move(probe)) {}
+    : op_(op), X_(X), Z_(Z), metric_columns_(metric_columns), tensor_(tensor), s_(s), callback_(callback),
+      fixed_(fixed), probe_request_(std::move(probe))
+  {}
 
   Flow_result run()
   {
     total_.start();
     if(start())
     {
-      for(std::size_t step = 1; step <= s_.maximum_steps && nfree_ > 0 && report_.stop_reason != Stop_reason::NOISE_LEVEL;)
+      for(std::size_t step = 1;
+          step <= s_.maximum_steps && nfree_ > 0 && report_.stop_reason != Stop_reason::NOISE_LEVEL;)
       {
         const Outcome o = attempt(step);
         if(o == Outcome::FAILED) return result();
@@ -113,8 +115,8 @@ private:
     time_unit_ = s_.stopping.relative_units ? std::pow(report_.scale, s_.order) : 1.0;   // (28), steady speed
     start_surface(a);
     start_solver();
-    rules_.emplace(Stop_rule_setup{ s_, fixed_, noise_stop_, bound_->active(), fixed_ ? report_.initial.energy : a.H_integral,
-                                    op_.mesh().mean_edge });
+    rules_.emplace(Stop_rule_setup{ s_, fixed_, noise_stop_, bound_->active(),
+                                    fixed_ ? report_.initial.energy : a.H_integral, op_.mesh().mean_edge });
     const std::optional<double> before = Noise_level::before_first_step(first_discrepancy_, target_);
     if(nfree_ == 0) report_.stop_reason = Stop_reason::NO_FREE_VERTEX;
     else if(noise_stop_ && before)
@@ -185,7 +187,8 @@ private:
   {
     if(s_.maximum_deviation > 0)
     {
-      report_.absolute_maximum_deviation = s_.relative_deviation ? s_.maximum_deviation * op_.units().scale : s_.maximum_deviation;
+      report_.absolute_maximum_deviation =
+        s_.relative_deviation ? s_.maximum_deviation * op_.units().scale : s_.maximum_deviation;
       report_.maximum_deviation = report_.absolute_maximum_deviation;   // its deprecated name, still filled
     }
     const auto bounds = user_bounds(Z_.cols(), !fixed_, fixed_ ? 0 : 3, report_.absolute_maximum_deviation,
@@ -241,7 +244,8 @@ private:
       if(Y_.allFinite())
       {
         candidate_discrepancy_ = s_.noise->relative_displacement(Y_, Z0_, {});
-        const auto verdict = Noise_level::judge_candidate(control_, discrepancy_, candidate_discrepancy_, target_, cut_at);
+        const auto verdict =
+          Noise_level::judge_candidate(control_, discrepancy_, candidate_discrepancy_, target_, cut_at);
         if(verdict == Noise_level::Candidate::RETAKE) return Outcome::RETRY;
         if(verdict == Noise_level::Candidate::CUT)
         {
@@ -274,7 +278,8 @@ private:
     {
       candidate_discrepancy_ = s_.noise->relative_displacement(Y_, Z0_, {});
       double unused = 0;
-      if(Noise_level::judge_candidate(control_, discrepancy_, candidate_discrepancy_, target_, unused) == Noise_level::Candidate::RETAKE)
+      if(Noise_level::judge_candidate(control_, discrepancy_, candidate_discrepancy_, target_, unused) ==
+         Noise_level::Candidate::RETAKE)
       {
         restore_accepted();
         return true;
@@ -310,7 +315,8 @@ private:
     finite = op_.solution_finite(sol);
     if(!finite && fixed_)
     {
-      fail(report_, Fairing_status::NON_FINITE_VALUE, "step " + std::to_string(st.step) + ": the solution is not finite", total_);
+      fail(report_, Fairing_status::NON_FINITE_VALUE,
+           "step " + std::to_string(st.step) + ": the solution is not finite", total_);
       return false;
     }
     if(!sol.ok && finite)
@@ -373,9 +379,11 @@ private:
       if(candidate_.finite) op_.count_folds(Zc_, candidate_);
       const Known_fold_places known = [this](const Surface_soundness& c) {
         const Ghost_layer& layer = op_.mesh().layer;
-        return folds_at_known_places(*layer.topology, layer.real_faces, accepted_, input_fold_edges_, allowed_folds_, c);
+        return folds_at_known_places(*layer.topology, layer.real_faces, accepted_, input_fold_edges_, allowed_folds_,
+                                     c);
       };
-      if(candidate_.finite && edges_folded(accepted_, input_folds_, candidate_, why, known)) verdict = Step_verdict::UNSOUND;
+      if(candidate_.finite && edges_folded(accepted_, input_folds_, candidate_, why, known))
+        verdict = Step_verdict::UNSOUND;
       else
       {
         op_.save();
@@ -387,8 +395,10 @@ private:
     }
     if(verdict == Step_verdict::COLLAPSED)
     {
-      fail(report_, Fairing_status::COLLAPSED, "step " + std::to_string(step) + ": " + why +
-           ": mean-curvature flow shrinks closed surfaces to points; use fewer steps or a larger fidelity weight", total_);
+      fail(report_, Fairing_status::COLLAPSED,
+           "step " + std::to_string(step) + ": " + why +
+             ": mean-curvature flow shrinks closed surfaces to points; use fewer steps or a larger fidelity weight",
+           total_);
       return Outcome::FAILED;
     }
     if(verdict != Step_verdict::UNSOUND) return Outcome::NEXT;
@@ -415,7 +425,8 @@ private:
   {
     ++report_.rejected_steps;
     last_why_ = why;
-    if(s_.verbose) std::cerr << "step " << step << " rejected (" << why << "); retrying with a quarter of the time step\n";
+    if(s_.verbose)
+      std::cerr << "step " << step << " rejected (" << why << "); retrying with a quarter of the time step\n";
     if(control_.reject(s_.maximum_rejections)) return Outcome::RETRY;
     const std::string what = "step " + std::to_string(step) + ": " + why + " even with 1/" +
                              std::to_string(1 << (2 * s_.maximum_rejections)) + " of the time step";
@@ -461,8 +472,17 @@ private:
     const double previous_discrepancy = discrepancy_;
     if(noise_stop_) discrepancy_ = candidate_discrepancy_;
     st.noise_displacement = discrepancy_;
-    const Step_progress progress{ st, st.time_step / time_unit_, fixed_ ? st.energy : st.H_integral, max_relative_, moved_relative_,
-                                  previous_discrepancy, discrepancy_, target_, cut_at, control_, last_why_ };
+    const Step_progress progress{ st,
+                                  st.time_step / time_unit_,
+                                  fixed_ ? st.energy : st.H_integral,
+                                  max_relative_,
+                                  moved_relative_,
+                                  previous_discrepancy,
+                                  discrepancy_,
+                                  target_,
+                                  cut_at,
+                                  control_,
+                                  last_why_ };
     const std::optional<Stop> stop = rules_->after_step(progress);
     if(stop && stop->at >= 0) end_within_step(st, *stop);
     if(!fixed_) report_.noise_displacement = st.noise_displacement;
@@ -507,8 +527,8 @@ private:
   {
     Surface_soundness last;
     if(!fixed_) op_.count_folds(Z_, last);
-    const std::optional<Fold_verdict> folds = report_.succeeded() ? new_folds(last.folded_edges, allowed_folds_, unfolded_steps_)
-                                                                  : std::nullopt;
+    const std::optional<Fold_verdict> folds =
+      report_.succeeded() ? new_folds(last.folded_edges, allowed_folds_, unfolded_steps_) : std::nullopt;
     if(folds && folds->fails) { fail(report_, Fairing_status::FOLDED, folds->message, total_); return; }
     if(folds)
     {
@@ -517,7 +537,11 @@ private:
       report_.steps.resize(unfolded_steps_);
       report_.stop_reason = Stop_reason::STEP_REJECTED;
       report_.message = folds->message;
-      if(noise_stop_) { op_.measured_positions(Z_, Y_); report_.noise_displacement = s_.noise->relative_displacement(Y_, Z0_, {}); }
+      if(noise_stop_)
+      {
+        op_.measured_positions(Z_, Y_);
+        report_.noise_displacement = s_.noise->relative_displacement(Y_, Z0_, {});
+      }
     }
     report_.bound_fidelity_weight = bound_->largest_weight();
     report_.bound_held_vertices = bound_->held_rows();

@@ -45,7 +45,8 @@ struct Flow_mesh
 /// What the assembler of a flow is told besides the caller's `numbering`: the components, the curvature
 /// each component's edges can show (|H| up to 2 / h, a sphere of diameter h: `curvature_bound`, kept by the
 /// caller) and the turns that count as folded and bent.
-inline Assembly_context flow_context(const Assembly_context& numbering, const Flow_mesh& mesh, std::vector<double>& curvature_bound)
+inline Assembly_context flow_context(const Assembly_context& numbering, const Flow_mesh& mesh,
+                                     std::vector<double>& curvature_bound)
 {
   curvature_bound.clear();
   for(double h : mesh.component_edge) curvature_bound.push_back(2 / h);

@@ -28,12 +28,13 @@ namespace internal {
 /// their statistics in `a` and the report's initial values. False (and the report failed) when the input has
 /// no surface.
 template <typename Operator, typename Tensor>
-bool start_units(Operator& op, const Control_matrix& X, int metric_columns, const Stepper_settings& s,
-                                      Tensor& tensor, Fairing_report& report, Assembly_statistics& a, const CGAL::Real_timer& total)
+bool start_units(Operator& op, const Control_matrix& X, int metric_columns, const Stepper_settings& s, Tensor& tensor,
+                 Fairing_report& report, Assembly_statistics& a, const CGAL::Real_timer& total)
 {
   const Flow_mesh& mesh = op.mesh();
   const bool scaled_tensor = wants_length_scale(tensor);
-  std::vector<double> eps(std::size_t(X.rows()), scaled_tensor ? 0.0 : prefilter_time(tensor));   // the prefilter time per row
+  std::vector<double> eps(std::size_t(X.rows()),
+                          scaled_tensor ? 0.0 : prefilter_time(tensor)); // the prefilter time per row
   // a prefilter's time follows from the units: then the isotropic M and L of the units are its start
   if(scaled_tensor) a = op.assemble_isotropic(X, metric_columns, prefilter_time(tensor) > 0);
   else
@@ -45,10 +46,12 @@ bool start_units(Operator& op, const Control_matrix& X, int metric_columns, cons
     if(!(a.component_area[c] > 0) || !std::isfinite(a.component_area[c]) || !(mesh.component_edge[c] > 0))
     {
       op.discard_isotropic();
-      fail(report, Fairing_status::DEGENERATE_METRIC, "the input's limit surface has no area" +
-           (mesh.components.count > 1 ? " in connected component " + std::to_string(c) : std::string()) +
-           " (sqrt(det G) <= 0 on face " + std::to_string(a.degenerate_face) + "): its control points do not span a surface" +
-           op.where_face(a), total);
+      fail(report, Fairing_status::DEGENERATE_METRIC,
+           "the input's limit surface has no area" +
+             (mesh.components.count > 1 ? " in connected component " + std::to_string(c) : std::string()) +
+             " (sqrt(det G) <= 0 on face " + std::to_string(a.degenerate_face) +
+             "): its control points do not span a surface" + op.where_face(a),
+           total);
       return false;
     }
   const Length_unit tensor_unit = is_automatic_tensor(tensor) ? Length_unit::EDGE : Length_unit::SCALE;

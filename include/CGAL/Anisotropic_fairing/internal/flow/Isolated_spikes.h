@@ -6,9 +6,9 @@
 // then stops before its first step and the spikes stay. A spike is told from a feature by its
 // neighbourhood, not by its height: a crease or a corner stands out of its ring together with the
 // vertices along it, a spike alone (or with one other spike beside it). On clean meshes, features that
-// stand out alone (tips, cone points) are at most a few per thousand vertices, on quantised and scanned
-// ones up to 2%; impulsive noise makes them a population. So the spikes are put back at the centroid of
-// their ring only when they are at least one vertex in fifty, and only those.
+// stand out alone (tips, cone points) are rare; impulsive noise makes them a population. So the spikes
+// are put back at the centroid of their ring only when they are at least one vertex in fifty, and only
+// those (the shares measured on clean meshes: the manual's Parameters page, "Impulsive noise").
 
 #ifndef CGAL_ANISOTROPIC_FAIRING_INTERNAL_FLOW_ISOLATED_SPIKES_H
 #define CGAL_ANISOTROPIC_FAIRING_INTERNAL_FLOW_ISOLATED_SPIKES_H
@@ -43,8 +43,8 @@ struct Spike_test
 /// vertices X (first 3 columns) moved to the centroid of their ring (not along the ring's normal: next
 /// to other spikes that normal is tilted, and the move would fold thin triangles of a scan). Returns how
 /// many vertices were moved (0: too few to be noise, X unchanged).
-inline std::size_t remove_isolated_spikes(const Triangle_topology& topo, const std::vector<bool>& usable, Control_matrix& X,
-                                          const Spike_test& test = Spike_test())
+inline std::size_t remove_isolated_spikes(const Triangle_topology& topo, const std::vector<bool>& usable,
+                                          Control_matrix& X, const Spike_test& test = Spike_test())
 {
   const std::size_t n = std::size_t(X.rows());
   std::vector<double> height(n), centre(3 * n);
@@ -60,7 +60,8 @@ inline std::size_t remove_isolated_spikes(const Triangle_topology& topo, const s
         measured[i] = 0;
         if(!usable[i] || topo.outgoing(int(i)) < 0) continue;
         read_ring(topo, i, ring);
-        if(std::any_of(ring.begin(), ring.end(), [n](int j) { return std::size_t(j) >= n; }) || !measure_ring_plane(X, i, ring, r))
+        if(std::any_of(ring.begin(), ring.end(), [n](int j) { return std::size_t(j) >= n; }) ||
+           !measure_ring_plane(X, i, ring, r))
           continue;
         for(int a = 0; a < 3; ++a) centre[3 * i + std::size_t(a)] = r.centre[a];
         height[i] = r.height / r.spacing;
@@ -74,7 +75,8 @@ inline std::size_t remove_isolated_spikes(const Triangle_topology& topo, const s
     std::vector<int> ring;
     read_ring(topo, i, ring);
     for(int j : ring)
-      if(measured[std::size_t(j)] && height[std::size_t(j)] * height[i] > 0 && std::abs(height[std::size_t(j)]) > 0.5 * std::abs(height[i]))
+      if(measured[std::size_t(j)] && height[std::size_t(j)] * height[i] > 0 &&
+         std::abs(height[std::size_t(j)]) > 0.5 * std::abs(height[i]))
         out.push_back(j);
   };
   // the threshold: `outlier` robust deviations of the heights about their median (a curved surface's

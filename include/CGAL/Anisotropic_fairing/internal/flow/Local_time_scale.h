@@ -1,20 +1,17 @@
 // Copyright (c) 2026 Anisotropic_fairing developers.
 // SPDX-License-Identifier: GPL-3.0-or-later
 //
-// A time step that follows the mesh's density, for the automatic isotropic and uniform runs. A graded mesh is fine
-// where its surface has detail, and one global time step smooths over one distance everywhere: the
-// small ears and nostrils of a graded scan lose their shape while the coarse parts are still noisy
-// (camel head at 0.2 h of noise: the smallest fifth of the faces went from 12.4 to 23.8 degrees of normal
-// error over six steps while the largest fifth went from 5.1 to 2.9). Scaling the time at vertex i by
-// s_i = (h_i / h)^2, with h_i the edge length around it and h its component's mean, smooths over about the
-// same number of rings everywhere, as the umbrella operators do: on graded scans (camel head, rocker arm)
-// the error is lower than with one global step, and no case of bench_defaults is worse. The anisotropic
-// flow keeps one time step: it reads features from curvature, and a density-scaled step leaves the noise
-// on refined creases (SharpSphere0.3).
+// A time step that follows the mesh's density, for the automatic isotropic and uniform runs. A graded mesh
+// is fine where its surface has detail, and one global time step smooths over one distance everywhere:
+// the small parts of a graded scan lose their shape while the coarse parts are still noisy. Scaling the
+// time at vertex i by s_i = (h_i / h)^2, with h_i the edge length around it and h its component's mean,
+// smooths over about the same number of rings everywhere, as the umbrella operators do (the figures: the
+// manual's Validation page, "Figures behind the defaults"). The anisotropic flow keeps one time step: it
+// reads features from curvature, and a density-scaled step would leave the noise on refined creases.
 //
 // In the weak form, 1/tau becomes 1/(tau s(x)): the mass matrix M_ij becomes M_ij / sqrt(s_i s_j), which
-// keeps the system symmetric. h_i is read on the input, averaged with its ring three times: noise of
-// 0.35 h_i lengthens an edge by only 12%, and the averaging removes most of that.
+// keeps the system symmetric. h_i is read on the input, averaged with its ring three times: noise
+// lengthens an edge only a little, and the averaging removes most of that.
 
 #ifndef CGAL_ANISOTROPIC_FAIRING_INTERNAL_FLOW_LOCAL_TIME_SCALE_H
 #define CGAL_ANISOTROPIC_FAIRING_INTERNAL_FLOW_LOCAL_TIME_SCALE_H
@@ -32,8 +29,9 @@ namespace Anisotropic_fairing {
 namespace internal {
 
 /// s_i per vertex (1 for a vertex on no real face); `edge[c]` is the mean edge length of component c.
-inline std::vector<double> local_time_scale(const Triangle_topology& topo, std::size_t real_faces, const Control_matrix& X,
-                                            const Mesh_components& components, const std::vector<double>& edge)
+inline std::vector<double> local_time_scale(const Triangle_topology& topo, std::size_t real_faces,
+                                            const Control_matrix& X, const Mesh_components& components,
+                                            const std::vector<double>& edge)
 {
   const std::size_t n = std::size_t(X.rows());
   auto for_each_edge = [&](auto&& f) {   // each real face's three edges
@@ -50,7 +48,10 @@ inline std::vector<double> local_time_scale(const Triangle_topology& topo, std::
   for(int pass = 0; pass < 3; ++pass)
   {
     std::vector<double> ring(n, 0.0);
-    for_each_edge([&](int a, int b) { ring[std::size_t(a)] += h[std::size_t(b)]; ring[std::size_t(b)] += h[std::size_t(a)]; });
+    for_each_edge([&](int a, int b) {
+      ring[std::size_t(a)] += h[std::size_t(b)];
+      ring[std::size_t(b)] += h[std::size_t(a)];
+    });
     for(std::size_t i = 0; i < n; ++i)
       if(count[i] > 0) h[i] = 0.5 * (h[i] + ring[i] / count[i]);
   }
@@ -58,7 +59,8 @@ inline std::vector<double> local_time_scale(const Triangle_topology& topo, std::
   for(std::size_t i = 0; i < n; ++i)
   {
     const int c = components.of_vertex[i];
-    if(c >= 0 && h[i] > 0 && edge[std::size_t(c)] > 0) s[i] = (h[i] / edge[std::size_t(c)]) * (h[i] / edge[std::size_t(c)]);
+    if(c >= 0 && h[i] > 0 && edge[std::size_t(c)] > 0)
+      s[i] = (h[i] / edge[std::size_t(c)]) * (h[i] / edge[std::size_t(c)]);
   }
   return s;
 }

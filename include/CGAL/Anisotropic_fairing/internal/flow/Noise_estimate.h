@@ -123,7 +123,8 @@ public:
   /// With `rms`, the root mean square instead: it also sees the few vertices a feature's rounding
   /// moves far.
   template <typename MatrixY, typename Matrix0>
-  double relative_displacement(const MatrixY& Y, const Matrix0& X0, const std::vector<int>& row_of, bool rms = false) const
+  double relative_displacement(const MatrixY& Y, const Matrix0& X0, const std::vector<int>& row_of,
+                               bool rms = false) const
   {
     std::vector<double> v;
     v.reserve(edge_.size());

@@ -34,7 +34,8 @@ public:
   void remove(const Control_matrix& X, int columns, const std::vector<int>& free, Control_matrix& dX) const
   {
     const Control_matrix extended = layer_.has_boundary() ? layer_.extend(X) : Control_matrix();
-    const Control_matrix& E = layer_.has_boundary() ? extended : X;   // ghosts: the tangent masks of fans next to a border
+    // ghosts: the tangent masks of fans next to a border
+    const Control_matrix& E = layer_.has_boundary() ? extended : X;
     std::vector<double> tu(std::size_t(X.cols())), tv(std::size_t(X.cols()));
     for(std::size_t k = 0; k < free.size(); ++k)
     {

@@ -23,7 +23,14 @@ class Ride_along_probe
 {
 public:
   /// The probe starts from P (the run's start, moved); empty: no probe.
-  void start(const Control_matrix& P) { Z_ = P; Z0_ = P; candidate_.resize(0, 0); previous_.resize(0, 0); unfolded_ = P; }
+  void start(const Control_matrix& P)
+  {
+    Z_ = P;
+    Z0_ = P;
+    candidate_.resize(0, 0);
+    previous_.resize(0, 0);
+    unfolded_ = P;
+  }
   bool active() const { return Z_.size() > 0; }
   /// Where the probe is: its control points, after the run.
   const Control_matrix& result() const { return Z_; }

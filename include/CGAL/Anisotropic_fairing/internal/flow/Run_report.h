@@ -18,7 +18,8 @@ namespace Anisotropic_fairing {
 namespace internal {
 
 /// Ends a report as a failure.
-inline Fairing_report& fail(Fairing_report& r, Fairing_status status, const std::string& message, const CGAL::Real_timer& total)
+inline Fairing_report& fail(Fairing_report& r, Fairing_status status, const std::string& message,
+                            const CGAL::Real_timer& total)
 {
   r.status = status;
   r.stop_reason = Stop_reason::FAILURE;
@@ -31,9 +32,10 @@ inline Fairing_report& fail(Fairing_report& r, Fairing_status status, const std:
 inline void print(const Fairing_step& st)
 {
   char line[256];
-  std::snprintf(line, sizeof line, "step %zu  t=%.4g  area=%.6g  int|H|^2=%.6g  max disp=%.3g  %d its (res %.1e)  %.3fs + %.3fs\n",
-                st.step, st.time, st.area, st.H_integral, st.max_displacement, st.solver_iterations,
-                st.residual, st.assemble_seconds, st.solve_seconds);
+  std::snprintf(line, sizeof line,
+                "step %zu  t=%.4g  area=%.6g  int|H|^2=%.6g  max disp=%.3g  %d its (res %.1e)  %.3fs + %.3fs\n",
+                st.step, st.time, st.area, st.H_integral, st.max_displacement, st.solver_iterations, st.residual,
+                st.assemble_seconds, st.solve_seconds);
   std::cerr << line;
 }
 

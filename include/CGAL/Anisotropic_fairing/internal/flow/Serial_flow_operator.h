@@ -108,7 +108,10 @@ public:
   template <typename Tensor>
   void restore(const Control_matrix& X, int columns, const Tensor& tensor) { operator_.restore(X, columns, tensor); }
   const Control_matrix* prefiltered() const { return operator_.prefiltered(); }
-  double dirichlet_energy(const Control_matrix& Z) const { return internal::dirichlet_energy(operator_.pattern(), operator_.L(), Z); }
+  double dirichlet_energy(const Control_matrix& Z) const
+  {
+    return internal::dirichlet_energy(operator_.pattern(), operator_.L(), Z);
+  }
 
   // --- the step
   /// A run's solver for `columns` unknowns; `fixed`: one matrix for every step; `fidelity`, `anchor`: a
@@ -124,8 +127,8 @@ public:
     solver_.emplace(operator_.pattern(), block_, s, columns, fixed, fidelity, anchor);
   }
   /// The step of `factor` times the time step from Z (Z0: the input; `weights`: a bound's, per free row)
-  Solve_statistics solve(double factor, const Control_matrix& Z, const Control_matrix& Z0, const std::vector<double>& weights,
-                         bool& direct)
+  Solve_statistics solve(double factor, const Control_matrix& Z, const Control_matrix& Z0,
+                         const std::vector<double>& weights, bool& direct)
   {
     // (on a fixed surface the attributes are solved in their own units)
     const std::vector<double>& scale = fixed_ ? no_scale_ : unknown_scale_;
@@ -134,7 +137,10 @@ public:
     return solver_->solve(direct);
   }
   const Control_matrix& displacement() const { return solver_->displacement(); }
-  bool solution_finite(const Solve_statistics& s) const { return displacement().allFinite() && std::isfinite(s.residual); }
+  bool solution_finite(const Solve_statistics& s) const
+  {
+    return displacement().allFinite() && std::isfinite(s.residual);
+  }
   double solve_seconds() const { return solver_->solve_seconds(); }
 
   // --- the motion
@@ -183,7 +189,8 @@ public:
   /// the folds of X's surface (its limit points for the Loop element)
   void count_folds(const Control_matrix& X, Surface_soundness& s) const
   {
-    internal::count_folds(mesh_.layer, Cache::has_second_derivatives, mesh_.components.of_face, mesh_.component_edge, X, s);
+    internal::count_folds(mesh_.layer, Cache::has_second_derivatives, mesh_.components.of_face, mesh_.component_edge, X,
+                          s);
   }
   /// the folded edges of the mesh of X itself (the input's control mesh)
   void input_folds(const Control_matrix& X, Surface_soundness& s) const

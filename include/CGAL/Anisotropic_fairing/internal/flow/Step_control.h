@@ -53,7 +53,8 @@ public:
   /// it (the displacement grows fastest at first, so the secant undershoots and each retake comes closer).
   bool retake_for_noise_level(double current, double candidate, double target)
   {
-    if(!(candidate > target * (1 + step_control::noise_tolerance)) || retakes_ >= step_control::maximum_noise_retakes) return false;
+    if(!(candidate > target * (1 + step_control::noise_tolerance)) || retakes_ >= step_control::maximum_noise_retakes)
+      return false;
     ++retakes_;
     factor_ *= std::max(step_control::shortest_secant, (target - current) / (candidate - current));
     return true;

@@ -4,16 +4,15 @@
 // Whether a time step left a sound surface. A folded limit surface keeps sqrt(det G) > 0 almost
 // everywhere, so positivity of the metric alone does not see it; what does is the normal reversing
 // (between neighbouring faces of the written mesh, or between quadrature points of one face), and
-// int |H|^2 exploding. A step is judged against the last accepted state: it may not add degenerate
-// points, nor fold (turn by more than 120 degrees) in more places than that state was nearly folded
-// (110 degrees: a place on the brink may tip over by any small motion, which is no instability) or
-// the input mesh was folded (noise leaves folds that fairing takes a few steps to remove), unless they all
-// lie where that state or the input was folded (Fold_sites: a tangle of noise on small triangles that no
-// shorter step removes), nor raise
-// int min(|H|, 2/h)^2 above 4 times the lowest value reached (bounded: a cusp on a tiny face of a graded
-// scan is not a blow-up, and an unbounded test would end such a run short of the noise level) or
-// int |H|^2 above 100 times (cusps that keep growing, as in long runs with a strong fidelity term),
-// nor shrink a connected component to (almost) nothing.
+// int |H|^2 exploding. A step is judged against the last accepted state, and rejected if it
+//  - adds degenerate quadrature points;
+//  - folds (a turn of more than 120 degrees) in more places than that state was nearly folded (110
+//    degrees: a place on the brink may tip over by any small motion) or the input was folded (noise
+//    leaves folds that fairing takes a few steps to remove), unless all of them lie where that state or
+//    the input was folded (Fold_sites: a tangle of noise that no shorter step removes);
+//  - raises int min(|H|, 2/h)^2 above 4 times the lowest value reached (bounded, since a cusp on a tiny
+//    face is no blow-up) or int |H|^2 above 100 times (cusps that keep growing);
+//  - shrinks a connected component to (almost) nothing.
 
 #ifndef CGAL_ANISOTROPIC_FAIRING_INTERNAL_FLOW_STEP_SAFETY_H
 #define CGAL_ANISOTROPIC_FAIRING_INTERNAL_FLOW_STEP_SAFETY_H
@@ -126,7 +125,8 @@ inline void count_folds(const Ghost_layer& layer, bool loop, const std::vector<i
   if(loop) limit_points(layer, X, Y);
   const Control_matrix& P = loop ? Y : X;
   s.folded_edge_list.clear();
-  s.folded_edges = count_folded_edges(*layer.topology, layer.real_faces, P, face_component, edge, turn_120, nullptr, &s.folded_edge_list);
+  s.folded_edges = count_folded_edges(*layer.topology, layer.real_faces, P, face_component, edge, turn_120, nullptr,
+                                      &s.folded_edge_list);
   s.bent_edges = count_folded_edges(*layer.topology, layer.real_faces, P, face_component, edge, turn_110);
 }
 
@@ -169,7 +169,8 @@ public:
   {
     if(marked_.empty()) return s.folded_edges == 0 && s.statistics.reversed_faces == 0;
     for(int h : s.folded_edge_list)
-      if(!touches(std::size_t(topo_.face_of(h))) && !touches(std::size_t(topo_.face_of(topo_.opposite(h))))) return false;
+      if(!touches(std::size_t(topo_.face_of(h))) && !touches(std::size_t(topo_.face_of(topo_.opposite(h)))))
+        return false;
     for(std::size_t f : s.statistics.reversed_face_list)
       if(!touches(f)) return false;
     return true;
@@ -191,9 +192,9 @@ private:
 /// Whether the candidate's folds all lie where the accepted surface or the input mesh (`input_fold_edges`)
 /// was folded: there a shorter step would leave them too. Not beyond `allowed_folds` folded edges, the
 /// most a run may end with. Both flows (Flow_run, the distributed one) judge their steps with it.
-inline bool folds_at_known_places(const Triangle_topology& topo, std::size_t real_faces, const Surface_soundness& accepted,
-                                  const std::vector<int>& input_fold_edges, std::size_t allowed_folds,
-                                  const Surface_soundness& candidate)
+inline bool folds_at_known_places(const Triangle_topology& topo, std::size_t real_faces,
+                                  const Surface_soundness& accepted, const std::vector<int>& input_fold_edges,
+                                  std::size_t allowed_folds, const Surface_soundness& candidate)
 {
   if(candidate.folded_edges > allowed_folds) return false;
   Fold_sites sites(topo, real_faces);
@@ -210,7 +211,11 @@ struct Lowest_curvature
 {
   double full, bounded;
   explicit Lowest_curvature(const Assembly_statistics& a) : full(a.H_integral), bounded(a.bounded_H_integral) {}
-  void add(const Assembly_statistics& a) { full = std::min(full, a.H_integral); bounded = std::min(bounded, a.bounded_H_integral); }
+  void add(const Assembly_statistics& a)
+  {
+    full = std::min(full, a.H_integral);
+    bounded = std::min(bounded, a.bounded_H_integral);
+  }
 };
 
 /// Whether every fold of a candidate lies where the accepted surface or the input was folded (Fold_sites);
@@ -225,7 +230,8 @@ inline bool edges_folded(const Surface_soundness& accepted, std::size_t input_fo
   if(candidate.folded_edges <= std::max(accepted.near_folds(), input_folds)) return false;
   if(known && known(candidate)) return false;
   char text[160];
-  std::snprintf(text, sizeof text, "the surface folded (%zu edges where the normal turns by more than 120 degrees, %zu before)",
+  std::snprintf(text, sizeof text,
+                "the surface folded (%zu edges where the normal turns by more than 120 degrees, %zu before)",
                 candidate.folded_edges, accepted.folds());
   why = text;
   return true;
@@ -233,8 +239,9 @@ inline bool edges_folded(const Surface_soundness& accepted, std::size_t input_fo
 
 /// Compares `candidate` with the last accepted state (and the initial one for collapse); `input_folds`
 /// are the folds of the input mesh itself, `lowest` the lowest int |H|^2 reached so far. `why` names what failed.
-inline Step_verdict judge_step(const Surface_soundness& initial, const Surface_soundness& accepted, std::size_t input_folds,
-                               const Lowest_curvature& lowest, const Surface_soundness& candidate, std::string& why,
+inline Step_verdict judge_step(const Surface_soundness& initial, const Surface_soundness& accepted,
+                               std::size_t input_folds, const Lowest_curvature& lowest,
+                               const Surface_soundness& candidate, std::string& why,
                                const Known_fold_places& known = {})
 {
   const Assembly_statistics& c = candidate.statistics;
@@ -258,14 +265,18 @@ inline Step_verdict judge_step(const Surface_soundness& initial, const Surface_s
   }
   if(candidate.folds() > std::max(accepted.near_folds(), input_folds) && !(known && known(candidate)))
   {
-    std::snprintf(text, sizeof text, "the surface folded (%zu edges and %zu faces where the normal turns by more than 120 degrees, "
-                  "%zu before)", candidate.folded_edges, c.reversed_faces, accepted.folds());
+    std::snprintf(text, sizeof text,
+                  "the surface folded (%zu edges and %zu faces where the normal turns by more than 120 degrees, "
+                  "%zu before)",
+                  candidate.folded_edges, c.reversed_faces, accepted.folds());
     why = text;
     return Step_verdict::UNSOUND;
   }
-  if((c.bounded_H_integral > 4 * lowest.bounded && lowest.bounded > 0) || (c.H_integral > 100 * lowest.full && lowest.full > 0))
+  if((c.bounded_H_integral > 4 * lowest.bounded && lowest.bounded > 0) ||
+     (c.H_integral > 100 * lowest.full && lowest.full > 0))
   {
-    std::snprintf(text, sizeof text, "int |H|^2 exploded (%.4g, the lowest value reached %.4g; bounded by 2/h: %.4g, lowest %.4g)",
+    std::snprintf(text, sizeof text,
+                  "int |H|^2 exploded (%.4g, the lowest value reached %.4g; bounded by 2/h: %.4g, lowest %.4g)",
                   c.H_integral, lowest.full, c.bounded_H_integral, lowest.bounded);
     why = text;
     return Step_verdict::UNSOUND;

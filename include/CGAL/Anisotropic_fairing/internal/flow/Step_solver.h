@@ -34,10 +34,10 @@ class Step_solver
 public:
   /// `columns`: of the unknowns; `constant_matrix`: every step has the same system (a fixed surface).
   /// `fidelity`: what a vertex's own fidelity holds (null: no bound), at `anchor` (the input's written positions).
-  Step_solver(const Sparse_structure& pattern, const Free_block& block, const Stepper_settings& s,
-              Eigen::Index columns, bool constant_matrix, const Output_fidelity* fidelity = nullptr,
-              const Control_matrix* anchor = nullptr)
-    : pattern_(pattern), block_(block), fidelity_(fidelity), anchor_(anchor), cg_(s.solver_tolerance, s.solver_maximum_iterations),
+  Step_solver(const Sparse_structure& pattern, const Free_block& block, const Stepper_settings& s, Eigen::Index columns,
+              bool constant_matrix, const Output_fidelity* fidelity = nullptr, const Control_matrix* anchor = nullptr)
+    : pattern_(pattern), block_(block), fidelity_(fidelity), anchor_(anchor),
+      cg_(s.solver_tolerance, s.solver_maximum_iterations),
       choice_(s.solver, block.size(), constant_matrix, s.direct_solver), constant_(constant_matrix),
       dX_(Control_matrix::Zero(Eigen::Index(block.size()), columns))
   {
@@ -49,9 +49,9 @@ public:
   /// after this: the caller may free them first. `mass_weight`: the local time scale; `unknown_scale`: per
   /// row with several components; either empty: none. `mu`: each vertex's own fidelity (Deviation_bound.h;
   /// empty: none). M, L and mass_weight must stay unchanged until solve() returns.
-  void prepare(const Value_array& M, const Value_array& L, const Step_units& u,
-               const std::vector<double>& mass_weight, const std::vector<double>& unknown_scale, double factor, double sys,
-               const Control_matrix& X, const Control_matrix& X0, const std::vector<double>& mu)
+  void prepare(const Value_array& M, const Value_array& L, const Step_units& u, const std::vector<double>& mass_weight,
+               const std::vector<double>& unknown_scale, double factor, double sys, const Control_matrix& X,
+               const Control_matrix& X0, const std::vector<double>& mu)
   {
     const bool held_changed = mu != formed_mu_;
     const bool form = !(constant_ && formed_) || held_changed;
@@ -87,7 +87,7 @@ public:
         fill_step_matrix(A_, block_, M, L, u.tau, u.omega, factor, sys, unknown_scale, mass_weight);
         if(held)
           for(Eigen::Index k = 0; k < extra_.outerSize(); ++k)
-            for(Eigen::SparseMatrix<double>::InnerIterator it(extra_, k); it; ++it)   // a 1-ring's pairs: in the pattern
+            for(Eigen::SparseMatrix<double>::InnerIterator it(extra_, k); it; ++it) // a 1-ring's pairs: in the pattern
               A_[std::size_t(block_.structure().find(it.row(), it.col()))] += it.value();
       }
       R_.resize(X.rows(), X.cols());
@@ -104,7 +104,8 @@ public:
     Control_matrix& B = block_.whole() ? R_ : B_;
     if(!block_.whole()) block_.gather(R_, B_);
     if(!unknown_scale.empty())
-      for(Eigen::Index i = 0; i < B.rows(); ++i) B.row(i) /= std::pow(unknown_scale[std::size_t(block_.free[std::size_t(i)])], 3);
+      for(Eigen::Index i = 0; i < B.rows(); ++i)
+        B.row(i) /= std::pow(unknown_scale[std::size_t(block_.free[std::size_t(i)])], 3);
     choice_.set_step_factor(factor);
     unknown_scale_ = &unknown_scale;
   }
@@ -137,7 +138,8 @@ public:
     if(scaled_)
     {
       model_dX_ = dX_;
-      for(Eigen::Index i = 0; i < dX_.rows(); ++i) model_dX_.row(i) *= unknown_scale[std::size_t(block_.free[std::size_t(i)])];
+      for(Eigen::Index i = 0; i < dX_.rows(); ++i)
+        model_dX_.row(i) *= unknown_scale[std::size_t(block_.free[std::size_t(i)])];
     }
     return sol;
   }

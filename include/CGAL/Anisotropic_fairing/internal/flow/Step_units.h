@@ -29,7 +29,8 @@ struct Step_units
 {
   std::vector<double> tau, omega;   // per row, model units
   std::vector<double> length;       // per row: the length unit of the relative stopping thresholds (1 in model units)
-  std::vector<double> tensor_scale; // per component: its unit over the global one (Quadrature_point_geometry::component_scale)
+  std::vector<double>
+    tensor_scale; // per component: its unit over the global one (Quadrature_point_geometry::component_scale)
   std::vector<double> tensor_scale_of_row;
   double scale = 0;                 // l of the whole surface
   double tensor_unit = 1;           // the global unit given to the tensor's set_length_scale()
@@ -50,11 +51,11 @@ inline double system_scale(const Step_units& u, const std::vector<int>& free, do
   return largest > 1e6 ? largest : 1.0;
 }
 
-/// `time_step` in units of `time_unit`^order (the flow's order: 2 or 4), `fidelity` in 1/l^2 if relative; the tensor measured in
-/// `tensor_unit`. `edge[c]`: mean edge length of component c, `global_edge` of the whole mesh.
+/// `time_step` in units of `time_unit`^order (the flow's order: 2 or 4), `fidelity` in 1/l^2 if relative; the tensor
+/// measured in `tensor_unit`. `edge[c]`: mean edge length of component c, `global_edge` of the whole mesh.
 inline Step_units make_step_units(const Assembly_statistics& a0, const Mesh_components& comp, std::size_t rows,
-                                  double time_step, Length_unit time_unit, int order, double fidelity, bool relative_fidelity,
-                                  bool relative_stopping, Length_unit tensor_unit,
+                                  double time_step, Length_unit time_unit, int order, double fidelity,
+                                  bool relative_fidelity, bool relative_stopping, Length_unit tensor_unit,
                                   const std::vector<double>& edge, double global_edge)
 {
   Step_units u;

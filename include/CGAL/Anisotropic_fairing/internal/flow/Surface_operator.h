@@ -78,16 +78,19 @@ public:
       overwritten_ = true;
       if(!isotropic_ready) assembler_.assemble(X, metric_columns, Isotropic_diffusion_tensor(), M_, L_);
       Control_matrix& dX = prefilter_dX_;   // warm start: the last M_eps's displacement
-      const Solve_statistics sol = prefilter_step(assembler_.pattern(), M_, L_, eps_, *block_, prefilter_A_, X, metric_columns,
-                                                  prefilter_solver_, *prefilter_choice_, *prefilter_cg_, dX);
+      const Solve_statistics sol =
+        prefilter_step(assembler_.pattern(), M_, L_, eps_, *block_, prefilter_A_, X, metric_columns, prefilter_solver_,
+                       *prefilter_choice_, *prefilter_cg_, dX);
       Value_array().swap(prefilter_A_);   // not kept while the step's system is formed
       if(!sol.ok) dX.resize(0, 0);
       if(!sol.ok || !dX.allFinite())
-        error_ = "the prefiltered surface M_eps could not be computed: " + (sol.ok ? std::string("not finite") : sol.message);
+        error_ =
+          "the prefiltered surface M_eps could not be computed: " + (sol.ok ? std::string("not finite") : sol.message);
       else
       {
         prefiltered_X_ = X;
-        for(Eigen::Index i = 0; i < dX.rows(); ++i) prefiltered_X_.row(block_->free[std::size_t(i)]).head(metric_columns) += dX.row(i);
+        for(Eigen::Index i = 0; i < dX.rows(); ++i)
+          prefiltered_X_.row(block_->free[std::size_t(i)]).head(metric_columns) += dX.row(i);
         assembler_.set_prefiltered(&prefiltered_X_);
         prefiltered_valid_ = true;
       }

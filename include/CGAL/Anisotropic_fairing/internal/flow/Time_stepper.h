@@ -52,10 +52,12 @@ public:
   /// others are carried along with the same operator). On success X holds the faired control points.
   /// On failure X is unspecified and the report says why.
   template <typename Tensor, typename Callback>
-  Fairing_report run(Control_matrix& X, int metric_columns, const Tensor& tensor, const Stepper_settings& s, Callback& callback)
+  Fairing_report run(Control_matrix& X, int metric_columns, const Tensor& tensor, const Stepper_settings& s,
+                     Callback& callback)
   {
-    return kept(Flow_loop<Serial_flow_operator<Cache>, Tensor, Callback>(operator_, X, X, metric_columns, tensor, s, callback,
-                                                                          false, std::move(probe_)).run());
+    return kept(Flow_loop<Serial_flow_operator<Cache>, Tensor, Callback>(operator_, X, X, metric_columns, tensor, s,
+                                                                         callback, false, std::move(probe_))
+                  .run());
   }
 
   /// Attributes only (Bajaj & Xu's case c): the surface of the first 3 columns of X is fixed, so M
@@ -64,11 +66,12 @@ public:
   /// energy trace(A^T L A) in place of int |H|^2 (27, 28), and the steady-state speed in units of the
   /// attributes' spread; (29) and the noise criterion, which measure the surface, do not apply.
   template <typename Tensor, typename Callback>
-  Fairing_report run_on_fixed_surface(Control_matrix& X, const Tensor& tensor, const Stepper_settings& s, Callback& callback)
+  Fairing_report run_on_fixed_surface(Control_matrix& X, const Tensor& tensor, const Stepper_settings& s,
+                                      Callback& callback)
   {
     Control_matrix F = X.rightCols(X.cols() - 3);
-    const Fairing_report report =
-      kept(Flow_loop<Serial_flow_operator<Cache>, Tensor, Callback>(operator_, X, F, 3, tensor, s, callback, true).run());
+    const Fairing_report report = kept(
+      Flow_loop<Serial_flow_operator<Cache>, Tensor, Callback>(operator_, X, F, 3, tensor, s, callback, true).run());
     X.rightCols(F.cols()) = F;
     return report;
   }

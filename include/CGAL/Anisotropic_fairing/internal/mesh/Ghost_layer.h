@@ -3,7 +3,8 @@
 //
 // The ghost layer that closes the fans of boundary vertices, so that every real triangle of a mesh
 // with borders is an ordinary Loop patch (Bajaj & Xu 2003, section 4.3, completed as in
-// doc/Anisotropic_fairing/design/loop-fem.md section 6). It lives in a private index space: ghosts are numbered after the real
+// doc/Anisotropic_fairing/design/loop-fem.md section 6). It lives in a private index space: ghosts are numbered after
+// the real
 // vertices and are affine combinations of them (x_ghost = sum_j w_j x_j, sum w_j = 1), so they move
 // with the surface and X_ext = E X. The user's mesh is never touched.
 //
@@ -65,7 +66,8 @@ struct Ghost_layer
 
   /// The same mesh and ghost layer with real vertex v renamed new_of_old_vertex[v] and real face
   /// old_of_new_face[f] moved to position f; the ghosts and their faces keep their places after them.
-  Ghost_layer renumbered(const std::vector<int>& new_of_old_vertex, const std::vector<std::size_t>& old_of_new_face) const
+  Ghost_layer renumbered(const std::vector<int>& new_of_old_vertex,
+                         const std::vector<std::size_t>& old_of_new_face) const
   {
     Ghost_layer gl;
     gl.real_vertices = real_vertices;
@@ -98,7 +100,8 @@ inline void check_vertex_indices(std::size_t n, const std::vector<Triangle_topol
   for(std::size_t f = 0; f < faces.size(); ++f)
     for(int k = 0; k < 3; ++k)
       if(faces[f][k] < 0 || std::size_t(faces[f][k]) >= n)
-        throw Input_error(Input_error::INVALID_PARAMETER, f, "face " + std::to_string(f) + " has a vertex index out of range");
+        throw Input_error(Input_error::INVALID_PARAMETER, f,
+                          "face " + std::to_string(f) + " has a vertex index out of range");
 }
 
 /// Appends to gl.isolated_vertices, increasing, the real vertices without a face in gl.topology.

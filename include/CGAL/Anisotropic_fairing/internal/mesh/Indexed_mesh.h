@@ -136,16 +136,19 @@ public:
         if(std::abs(x) > coordinate_limit)
           throw Input_error(Input_error::COORDINATE_RANGE, i,
                             "vertex " + std::to_string(i) + " has a coordinate of " + to_text(x) +
-                            ": the fairing computes fourth powers of lengths, which overflow double precision beyond 1e70; scale the mesh down");
+                              ": the fairing computes fourth powers of lengths, which overflow double precision beyond "
+                              "1e70; scale the mesh down");
         X(Eigen::Index(i), c) = x;
       }
     }
     // the metric's determinant is a length to the fourth power: it underflows for a mesh of ~1e-77
-    const double span = X.rows() > 0 ? (X.colwise().maxCoeff() - X.colwise().minCoeff()).maxCoeff() : 0.0;   // not squared: 1e-170 must not vanish
+    // not squared: 1e-170 must not vanish
+    const double span = X.rows() > 0 ? (X.colwise().maxCoeff() - X.colwise().minCoeff()).maxCoeff() : 0.0;
     if(span > 0 && span < 1 / coordinate_limit)
       throw Input_error(Input_error::COORDINATE_RANGE, Input_error::no_element,
                         "the mesh spans only " + to_text(span) +
-                        ": the fairing computes fourth powers of lengths, which underflow double precision below 1e-70; scale the mesh up");
+                          ": the fairing computes fourth powers of lengths, which underflow double precision below "
+                          "1e-70; scale the mesh up");
     return X;
   }
 

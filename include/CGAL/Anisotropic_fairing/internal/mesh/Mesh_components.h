@@ -27,12 +27,17 @@ struct Mesh_components
 
 /// Components of the first `real_faces` faces of `topo` over its first `real_vertices` vertices
 /// (faces sharing a vertex are connected).
-inline Mesh_components make_mesh_components(const Triangle_topology& topo, std::size_t real_vertices, std::size_t real_faces)
+inline Mesh_components make_mesh_components(const Triangle_topology& topo, std::size_t real_vertices,
+                                            std::size_t real_faces)
 {
   std::vector<int> parent(real_vertices);
   std::iota(parent.begin(), parent.end(), 0);
   auto find = [&](int v) {
-    while(parent[std::size_t(v)] != v) { parent[std::size_t(v)] = parent[std::size_t(parent[std::size_t(v)])]; v = parent[std::size_t(v)]; }
+    while(parent[std::size_t(v)] != v)
+    {
+      parent[std::size_t(v)] = parent[std::size_t(parent[std::size_t(v)])];
+      v = parent[std::size_t(v)];
+    }
     return v;
   };
   for(std::size_t f = 0; f < real_faces; ++f)

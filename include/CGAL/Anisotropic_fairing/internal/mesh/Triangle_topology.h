@@ -78,7 +78,8 @@ public:
 
   /// The same topology with vertex v renamed new_of_old_vertex[v] and face old_of_new_face[f] moved to
   /// position f (each face keeps its vertex cycle): a permutation, no new linking or validation.
-  Triangle_topology renumbered(const std::vector<int>& new_of_old_vertex, const std::vector<std::size_t>& old_of_new_face) const
+  Triangle_topology renumbered(const std::vector<int>& new_of_old_vertex,
+                               const std::vector<std::size_t>& old_of_new_face) const
   {
     Triangle_topology t(*this);
     std::vector<int> new_of_old_face(faces_.size());

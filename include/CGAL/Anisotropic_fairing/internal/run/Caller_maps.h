@@ -42,9 +42,13 @@ struct Caller_hooks
   Direct_solver_factory direct_solver;                            // sparse_linear_solver (empty: the package's)
 };
 
+/// The hooks of a run on a mesh of type TriangleMesh.
+template <typename TriangleMesh>
+using Mesh_hooks = Caller_hooks<typename boost::graph_traits<TriangleMesh>::vertex_descriptor>;
+
 /// The hooks of the named parameters `np` for a run on `attributes`.
 template <typename TriangleMesh, typename AttributeMap, typename NamedParameters>
-Caller_hooks<typename boost::graph_traits<TriangleMesh>::vertex_descriptor> caller_hooks(AttributeMap attributes, const NamedParameters& np)
+Mesh_hooks<TriangleMesh> caller_hooks(AttributeMap attributes, const NamedParameters& np)
 {
   using parameters::get_parameter;
   using parameters::is_default_parameter;
@@ -83,19 +87,27 @@ Caller_hooks<typename boost::graph_traits<TriangleMesh>::vertex_descriptor> call
 template <typename Mesh>
 Control_matrix read_attribute_columns(const Indexed_mesh<Mesh>&, No_attributes) { return Control_matrix(); }
 template <typename Mesh, typename AttributeMap>
-Control_matrix read_attribute_columns(const Indexed_mesh<Mesh>& im, AttributeMap map) { return im.read_attributes(map); }
+Control_matrix read_attribute_columns(const Indexed_mesh<Mesh>& im, AttributeMap map)
+{
+  return im.read_attributes(map);
+}
 
 template <typename Mesh>
-void write_attribute_columns(const Indexed_mesh<Mesh>&, No_attributes, const Control_matrix&, Eigen::Index, const std::vector<bool>&) {}
+void write_attribute_columns(const Indexed_mesh<Mesh>&, No_attributes, const Control_matrix&, Eigen::Index,
+                             const std::vector<bool>&)
+{}
 template <typename Mesh, typename AttributeMap>
-void write_attribute_columns(const Indexed_mesh<Mesh>& im, AttributeMap map, const Control_matrix& X, Eigen::Index first,
-                             const std::vector<bool>& keep)
+void write_attribute_columns(const Indexed_mesh<Mesh>& im, AttributeMap map, const Control_matrix& X,
+                             Eigen::Index first, const std::vector<bool>& keep)
 {
   typedef typename boost::property_traits<AttributeMap>::value_type Value;
   std::vector<Value> values;
   values.reserve(im.number_of_vertices());
   for(std::size_t i = 0; i < im.number_of_vertices(); ++i)
-    values.push_back(Vector_attribute_traits<Value>::make(get(map, im.vertex(i)), X.row(Eigen::Index(i)).data() + first));
+  {
+    const double* row = X.row(Eigen::Index(i)).data() + first;
+    values.push_back(Vector_attribute_traits<Value>::make(get(map, im.vertex(i)), row));
+  }
   for(std::size_t i = 0; i < im.number_of_vertices(); ++i)
     if(!keep[i]) put(map, im.vertex(i), values[i]);
 }
@@ -103,8 +115,8 @@ void write_attribute_columns(const Indexed_mesh<Mesh>& im, AttributeMap map, con
 /// Writes the result X (rows in the order of vertices(tm)) into the caller's maps: the points (unless only
 /// attributes were faired) and the attribute columns, from column 3; not the rows `kept`.
 template <typename Mesh, typename VertexPointMap, typename AttributeMap>
-void write_back(const Indexed_mesh<Mesh>& im, const Control_matrix& X, Attribute_mode mode, const std::vector<bool>& kept,
-                VertexPointMap vpm, AttributeMap attributes)
+void write_back(const Indexed_mesh<Mesh>& im, const Control_matrix& X, Attribute_mode mode,
+                const std::vector<bool>& kept, VertexPointMap vpm, AttributeMap attributes)
 {
   typedef typename boost::property_traits<VertexPointMap>::value_type Point;
   for(std::size_t i = 0; i < im.number_of_vertices(); ++i)

@@ -15,13 +15,14 @@
 #include <CGAL/Anisotropic_fairing/Uniform_diffusion_tensor.h>
 #include <CGAL/Anisotropic_fairing/internal/run/Automatic_parameters.h>
 #include <CGAL/Anisotropic_fairing/internal/run/Fairing_parameters.h>
+#include <CGAL/Anisotropic_fairing/internal/run/Flow_candidates.h>
 #include <CGAL/Anisotropic_fairing/internal/run/Smoother_selection.h>
+#include <CGAL/Anisotropic_fairing/internal/run/Stepper_call.h>
 #include <CGAL/Anisotropic_fairing/internal/flow/Boundary_constraints.h>
 #include <CGAL/Anisotropic_fairing/internal/flow/Deviation_bound.h>
 #include <CGAL/Anisotropic_fairing/internal/flow/Isolated_spikes.h>
 #include <CGAL/Anisotropic_fairing/internal/flow/Noise_estimate.h>
 #include <CGAL/Anisotropic_fairing/internal/flow/Tensor_hooks.h>
-#include <CGAL/Anisotropic_fairing/internal/flow/Time_stepper.h>
 #include <CGAL/Anisotropic_fairing/internal/element/Ghosted_patch_cache.h>
 #include <CGAL/Anisotropic_fairing/internal/element/Linear_element_cache.h>
 #include <CGAL/Anisotropic_fairing/internal/loop/Vertex_limit_masks.h>
@@ -35,130 +36,14 @@
 #include <cmath>
 #include <cstdio>
 #include <functional>
-#include <limits>
 #include <memory>
 #include <string>
-#include <type_traits>
-#include <variant>
+#include <utility>
 #include <vector>
 
 namespace CGAL {
 namespace Anisotropic_fairing {
 namespace internal {
-
-/// The mean edge length of each connected component (`edge[c]`) and of the whole mesh (returned), over
-/// the real faces' edges (an interior edge is seen from both sides, a border edge from one).
-inline double component_mean_edges(const Triangle_topology& topo, std::size_t real_faces, const Mesh_components& components,
-                                   const Control_matrix& X, std::vector<double>& edge)
-{
-  edge.assign(components.count, 0.0);
-  std::vector<double> counted(components.count, 0.0);
-  for(std::size_t f = 0; f < real_faces; ++f)
-    for(int k = 0; k < 3; ++k)
-    {
-      const auto& t = topo.face(f);
-      edge[std::size_t(components.of_face[f])] += (X.row(t[k]).head(3) - X.row(t[(k + 1) % 3]).head(3)).norm();
-      counted[std::size_t(components.of_face[f])] += 1;
-    }
-  double sum = 0, count = 0;
-  for(std::size_t c = 0; c < components.count; ++c)
-  {
-    sum += edge[c];
-    count += counted[c];
-    edge[c] /= counted[c];
-  }
-  return count > 0 ? sum / count : 0.0;
-}
-
-/// The flow whose time step follows the mesh's density with automatic parameters (Local_time_scale.h):
-/// the isotropic or the uniform one; null for any other tensor.
-template <typename Tensor>
-const char* density_scaled_flow(const Tensor&)
-{
-  return std::is_same<Tensor, Isotropic_diffusion_tensor>::value ? "isotropic"
-         : std::is_same<Tensor, Uniform_diffusion_tensor>::value ? "uniform" : nullptr;
-}
-template <typename... Tensors>
-const char* density_scaled_flow(const std::variant<Tensors...>& t)
-{
-  return std::visit([](const auto& held) { return density_scaled_flow(held); }, t);
-}
-
-template <typename Cache, typename Tensor, typename Callback>
-Fairing_report run_stepper(const Cache& cache, const Locality_ordering& ordering, const Mesh_components& components,
-                           const std::vector<double>& component_edge, double mean_edge, Control_matrix& X, Attribute_mode mode,
-                           const std::vector<bool>& constrained, const std::vector<bool>& border,
-                           const Tensor& tensor, const Stepper_settings& s, Callback& callback, double& setup_seconds,
-                           double& limit_weight, const Control_matrix* probe_start = nullptr, Control_matrix* probe_end = nullptr,
-                           const std::function<Control_matrix(const Control_matrix&)>* probe_maker = nullptr)
-{
-  CGAL::Real_timer clock;
-  clock.start();
-  // with automatic parameters, the isotropic and the uniform flow's time step follows the mesh's density
-  // (Local_time_scale.h)
-  Stepper_settings settings = s;
-  settings.local_time_scale = s.local_time_scale && density_scaled_flow(tensor) != nullptr;
-  Assembly_context numbering;
-  numbering.original_vertex = &ordering.old_of_new_vertex;
-  numbering.original_face = &ordering.old_of_new_face;
-  numbering.border = &border;
-  Time_stepper<Cache> stepper(cache, std::size_t(X.rows()), constrained, ordering.layer, components, component_edge, mean_edge,
-                              numbering);
-  const Tangential_motion_filter filter(ordering.layer);
-  const bool normal_motion = wants_normal_motion(tensor) && mode != Attribute_mode::ATTRIBUTES_ONLY;
-  if(normal_motion) stepper.set_tangential_filter(&filter);
-  const int metric_columns = mode == Attribute_mode::COUPLED ? int(X.cols()) : 3;
-  setup_seconds += clock.time();
-  if(probe_end) probe_end->resize(0, 0);
-  if(mode == Attribute_mode::ATTRIBUTES_ONLY) return stepper.run_on_fixed_surface(X, tensor, settings, callback);
-  if(probe_start) stepper.set_probe(*probe_start);
-  if(probe_maker) stepper.set_probe_maker(*probe_maker);
-  Fairing_report report = stepper.run(X, metric_columns, tensor, settings, callback);
-  report.normal_motion_only = normal_motion;
-  limit_weight = stepper.limit_weight();
-  if(probe_end) *probe_end = stepper.probe_result();
-  return report;
-}
-
-/// The settings of a run of the given order; with automatic parameters, its time step too.
-inline Stepper_settings with_order(Stepper_settings s, int order)
-{
-  if(order != s.order && s.time_unit == Length_unit::EDGE)
-    s.time_step = order == 4 ? Automatic_parameters().time_step4 : Automatic_parameters().time_step;
-  s.order = order;
-  return s;
-}
-
-/// What the default run chose from the mesh: the start of the report's `choices`. `tensor_chosen`: the
-/// anisotropic tensor's threshold and prefilter were chosen; `scaled_flow`: the flow whose time step
-/// follows the mesh's density, if any. The target is that of `s` (its strength named when not 1).
-inline std::string automatic_choices(const Noise_estimate& noise, const Stepper_settings& s, bool tensor_chosen,
-                                     std::size_t removed_spikes, std::size_t n, const char* scaled_flow)
-{
-  const Automatic_parameters a;
-  char text[400];
-  char scaled[80] = "";
-  if(s.strength != 1) std::snprintf(scaled, sizeof scaled, " (strength %.6g)", s.strength);
-  std::snprintf(text, sizeof text, "noise %.3g h (robust estimate over %zu vertices); time step %.3g h^%d per step until the surface "
-                "has moved by %.3g x the noise%s%s", noise.relative_sigma(), noise.number_of_samples(), s.time_step, s.order,
-                s.stopping.noise_discrepancy * s.strength, scaled, tensor_chosen ? "" : "; the tensor given");
-  std::string choices = text;
-  if(removed_spikes > 0)
-  {
-    std::snprintf(text, sizeof text, "; first %zu isolated spikes (%.2g%% of the vertices: impulsive noise) moved to the centroids of "
-                  "their rings", removed_spikes, 100.0 * double(removed_spikes) / double(n));
-    choices += text;
-  }
-  if(tensor_chosen)
-  {
-    std::snprintf(text, sizeof text, "; anisotropic tensor: principal curvatures above %.3g / h are features, read on M_eps, "
-                  "the surface after an isotropic step of %.3g h^2", a.lambda, a.epsilon);
-    choices += text;
-  }
-  if(scaled_flow)
-    choices += std::string("; the ") + scaled_flow + " flow's time step follows the mesh's density (h: the edge length around each vertex)";
-  return choices;
-}
 
 /// What a run starts from: the mesh as a ghost layer and the input's matrices, in the caller's numbering.
 struct Fairing_input
@@ -187,20 +72,27 @@ class Fairing_core
 public:
   Fairing_core(const Fairing_input& in, const Fairing_parameters& given, const Tensor& tensor,
                const std::function<bool(const Fairing_step&)>& callback)
-    : in_(in), given_(given), s_(given.settings), tensor_(tensor), callback_(callback), n_(std::size_t(in.points.rows())),
-      setup_(started_timer()), ordering_(make_locality_ordering(in.layer)), layer_(ordering_.layer)
+    : in_(in), given_(given), s_(given.settings), tensor_(tensor), callback_(callback),
+      n_(std::size_t(in.points.rows())), setup_(started_timer()), ordering_(make_locality_ordering(in.layer)),
+      layer_(ordering_.layer)
   {
     number_rows();   // after this, the run reads neither in.layer nor in.points
+    mark_rows();
+    scale_attribute_bound();
   }
 
   Fairing_result run()
   {
+    measure_units();
+    remove_spikes();
     estimate_noise();
+    choose_measured_surface();
     choose_automatically();
     if(given_.element == Finite_element::LOOP)
     {
       Ghosted_patch_cache cache(layer_, given_.quadrature);
-      boundary_held_ = hold(boundary_constrained_vertices(layer_, cache, given_.boundary == Boundary_handling::HOLD_BOUNDARY_CURVE));
+      const bool curve = given_.boundary == Boundary_handling::HOLD_BOUNDARY_CURVE;
+      boundary_held_ = hold(boundary_constrained_vertices(layer_, cache, curve));
       setup_seconds_ = setup_.time();
       fair_with(cache, true);
     }
@@ -215,6 +107,21 @@ public:
   }
 
 private:
+  // the runs on one element's cache, as the comparison asks for them
+  template <typename Cache>
+  class Element_runner
+  {
+  public:
+    Element_runner(Fairing_core& core, const Cache& cache, bool loop) : core_(core), cache_(cache), loop_(loop) {}
+    Flow_outcome run(const Flow_request& request) { return core_.run_flow(cache_, loop_, request); }
+    std::size_t steps_left() const { return core_.steps_left_; }
+
+  private:
+    Fairing_core& core_;
+    const Cache& cache_;
+    bool loop_;
+  };
+
   static CGAL::Real_timer started_timer()
   {
     CGAL::Real_timer t;
@@ -230,8 +137,6 @@ private:
     const Eigen::Index d = in_.attributes.cols();
     X_.resize(Eigen::Index(n_), 3 + d);
     constrained_.assign(n_, false);
-    border_.assign(n_, false);
-    isolated_.assign(n_, false);
     for(std::size_t i = 0; i < n_; ++i)
     {
       const Eigen::Index old = ordering_.old_of_new_vertex[i];
@@ -240,42 +145,71 @@ private:
       if(d > 0) X_.row(Eigen::Index(i)).tail(d) = attribute_scale() * in_.attributes.row(old);
       constrained_[i] = in_.held[std::size_t(old)];
     }
+  }
+
+  // the layer's border and isolated rows; the rows written back: all but the user's held, border and
+  // isolated ones
+  void mark_rows()
+  {
+    border_.assign(n_, false);
+    isolated_.assign(n_, false);
     for(int v : layer_.boundary_vertices) border_[std::size_t(v)] = true;
     // on no surface: nothing to fair
     for(int v : layer_.isolated_vertices) isolated_[std::size_t(v)] = constrained_[std::size_t(v)] = true;
-    // the rows written back: the user's constrained, boundary and isolated vertices keep their values
     written_.resize(n_);
     for(std::size_t i = 0; i < n_; ++i) written_[i] = !constrained_[i] && !border_[i];
-    // a bound on the attributes, in the units the stepper holds them in
-    s_.attribute_maximum_deviation *= attribute_scale();
   }
 
-  // the units of relative parameters, per connected component; the noise, from the mesh itself
-  void estimate_noise()
+  // a bound on the attributes, in the units the stepper holds them in
+  void scale_attribute_bound() { s_.attribute_maximum_deviation *= attribute_scale(); }
+
+  // the units of relative parameters, per connected component
+  void measure_units()
   {
     components_ = make_mesh_components(*layer_.topology, n_, layer_.real_faces);
     mean_edge_ = component_mean_edges(*layer_.topology, layer_.real_faces, components_, X_, component_edge_);
+  }
+
+  // the rows that sample the noise: neither held nor on the border
+  std::vector<bool> sampled_rows() const
+  {
     std::vector<bool> sampled(n_);
     for(std::size_t i = 0; i < n_; ++i) sampled[i] = !constrained_[i] && !border_[i];
-    // impulsive noise: with the automatic stopping rule, isolated spikes go back to their rings' centroids
-    // before the noise is estimated (Isolated_spikes.h); a bound on the motion leaves them as they are
-    removed_spikes_ = given_.automatic && given_.mode != Attribute_mode::ATTRIBUTES_ONLY && s_.stopping.noise_discrepancy > 0 &&
-                      !(s_.maximum_deviation > 0) ? remove_isolated_spikes(*layer_.topology, sampled, X_) : 0;
-    noise_.reset(new Noise_estimate(*layer_.topology, X_, sampled));
+    return sampled;
+  }
+
+  // impulsive noise: with the automatic stopping rule, isolated spikes go back to their rings' centroids
+  // before the noise is estimated (Isolated_spikes.h); a bound on the motion leaves them as they are
+  void remove_spikes()
+  {
+    const bool removes = given_.automatic && given_.mode != Attribute_mode::ATTRIBUTES_ONLY &&
+                         s_.stopping.noise_discrepancy > 0 && !(s_.maximum_deviation > 0);
+    removed_spikes_ = removes ? remove_isolated_spikes(*layer_.topology, sampled_rows(), X_) : 0;
+  }
+
+  // the noise, from the mesh itself, and its deviation at each vertex in model units
+  void estimate_noise()
+  {
+    noise_.reset(new Noise_estimate(*layer_.topology, X_, sampled_rows()));
     s_.noise = noise_.get();
-    noise_sigma_.assign(n_, 0.0);   // the noise's deviation at each vertex, in model units
+    noise_sigma_.assign(n_, 0.0);
     for(std::size_t i = 0; i < n_; ++i)
-      if(components_.of_vertex[i] >= 0) noise_sigma_[i] = noise_->relative_sigma() * component_edge_[std::size_t(components_.of_vertex[i])];
+      if(components_.of_vertex[i] >= 0)
+        noise_sigma_[i] = noise_->relative_sigma() * component_edge_[std::size_t(components_.of_vertex[i])];
+  }
+
+  // the noise stop measures the limit surface, the surface faired, whichever positions are written: a
+  // run that writes control points (the tool does, to give exact limit normals) then stops where the
+  // limit-surface run stops, and `limit_weight` says how far toward the limit points the latter writes
+  void choose_measured_surface()
+  {
+    const bool loop = given_.element == Finite_element::LOOP, limit = given_.output == Output_positions::LIMIT_SURFACE;
+    s_.limit_written = loop && limit;
+    s_.measure_limit_surface = loop && (limit || s_.stopping.noise_discrepancy > 0);
   }
 
   void choose_automatically()
   {
-    // the noise stop measures the limit surface, the surface faired, whichever positions are written: a
-    // run that writes control points (the tool does, to give exact limit normals) then stops where the
-    // limit-surface run stops, and `limit_weight` says how far toward the limit points the latter writes
-    const bool loop = given_.element == Finite_element::LOOP, limit = given_.output == Output_positions::LIMIT_SURFACE;
-    s_.limit_written = loop && limit;
-    s_.measure_limit_surface = loop && (limit || s_.stopping.noise_discrepancy > 0);
     if(given_.automatic)
     {
       const Automatic_parameters a;
@@ -289,7 +223,7 @@ private:
       if(compares_flows()) s_.strength = 1;
       choices_ = automatic_choices(*noise_, s_, tensor_chosen, removed_spikes_, n_, scaled_flow);
     }
-    // the automatic tensor's result is compared with the isotropic one's at the same discrepancy
+    // the automatic tensor's result is compared with the other flows' at the same discrepancy
     // (Tensor_selection.h): when both stop at the noise level
     select_tensor_ = compares_flows();
   }
@@ -300,6 +234,9 @@ private:
     return given_.automatic && is_automatic_tensor(tensor_) && given_.mode != Attribute_mode::ATTRIBUTES_ONLY &&
            s_.stopping.noise_discrepancy > 0;
   }
+
+  // a bound on the motion: no probe rides along (Ride_along_probe.h)
+  bool bounded() const { return s_.maximum_deviation > 0 || s_.attribute_maximum_deviation > 0; }
 
   // what the borders hold: the boundary vertices, and the influence set of the limit boundary curve
   std::size_t hold(const std::vector<bool>& held)
@@ -313,121 +250,154 @@ private:
     return count;
   }
 
-  // the runs on one element's cache: the default run's first, then its comparison (Smoother_selection.h)
+  // the runs on one element's cache: the run's own flow, then the default run's comparison and strength
   template <typename Cache>
   void fair_with(const Cache& cache, bool loop)
   {
     input_ = X_;
     steps_left_ = s_.maximum_steps;
-    // (the three flows and two probe runs; the uniform flow's probe rides along, not under a deviation bound)
-    const bool bounded = s_.maximum_deviation > 0 || s_.attribute_maximum_deviation > 0;
-    planned_runs_ = (select_tensor_ ? (bounded ? 6 : 5) : 1) + (strength_run() ? 1 : 0);
-    auto run = [&](const char* name, const auto& t, Control_matrix& Y, int order, const Control_matrix& start, Control_matrix* control,
-                   std::size_t fixed_steps = 0, Control_matrix* probe = nullptr) {
-      return run_flow(cache, loop, name, t, Y, order, start, control, fixed_steps, probe);
-    };
-    Control_matrix* control = in_.wants_control ? &control_points_ : nullptr;
-    Control_matrix anisotropic_probe;   // empty: made by the run itself (make_probe)
-    report_ = run(select_tensor_ ? "anisotropic flow" : "", tensor_, X_, s_.order, input_, control, 0,
-                  select_tensor_ ? &anisotropic_probe : nullptr);
-    if(select_tensor_)
-      select_smoother(run, tensor_, layer_, input_, noise_sigma_, X_, control, report_, choices_, steps_left_, estimate_normals_,
-                      anisotropic_probe);
-    if(strength_run()) run_kept_flow_to_strength(run, control);
+    Candidate_list candidates = default_candidates(s_.order);
+    planned_runs_ = (select_tensor_ ? planned_runs(candidates, bounded()) : 1) + (strength_run() ? 1 : 0);
+    Element_runner<Cache> runner(*this, cache, loop);
+    if(!select_tensor_)
+    {
+      keep(runner.run(Flow_request{ Flow_settings{ Candidate_tensor::RUN_TENSOR, s_.order }, "", input_ }));
+      return;
+    }
+    Smoother_choice choice = compare_flows(std::move(candidates), runner);
+    choices_ += choice.choices;
+    keep(std::move(choice.kept.result));
+    if(strength_run()) run_kept_flow_to_strength(runner, choice.kept);
   }
 
-  // The default run with a strength S other than 1. Its flows are compared at the noise level itself, where
-  // the risk estimate measures what it is made for, the error of a denoised surface (sigma is the noise's,
-  // whatever the target); then the flow kept runs again from the input, to S times the noise, and the run
-  // keeps the flow the default run keeps. Running every candidate to S times the noise and comparing there
-  // lost the creases of the Block CAD pair at S = 2: its anisotropic flow cannot reach twice the noise without
-  // folding (it ends at 0.59 of 0.70 h, step_rejected), a candidate that stops early is not preferred, and the
-  // isotropic result was kept, 21.4 degrees of mean face-normal error against 7.95 for the anisotropic one.
-  // (On the Julius face it kept the anisotropic result, 10.8 degrees against the uniform flow's 11.9; on the
-  // Fandisk pair the same as here.)
+  // the run's own flow, its probe made of its prefiltered input (make_probe), then the other candidates
+  template <typename Runner>
+  Smoother_choice compare_flows(Candidate_list candidates, Runner& runner)
+  {
+    for(Flow_candidate& own : candidates)
+      if(own.settings.tensor == Candidate_tensor::RUN_TENSOR)
+      {
+        Flow_request request{ own.settings, own.flow, input_ };
+        request.make_probe = true;
+        own.result = runner.run(request);
+        own.made = true;
+        break;
+      }
+    return select_smoother(std::move(candidates), Selection_context{ layer_, input_, noise_sigma_, estimate_normals_ },
+                           runner);
+  }
+
+  void keep(Flow_outcome&& outcome)
+  {
+    X_ = std::move(outcome.Y);
+    control_points_ = std::move(outcome.Z);
+    report_ = std::move(outcome.report);
+  }
+
+  // A strength S other than 1: the flows are compared at the noise level, where the risk estimate measures
+  // what it is made for, and the flow kept runs again to S times the noise. Compared at S times the noise,
+  // a flow that cannot get there without folding stops early and loses its creases to a smoother one.
   bool strength_run() const { return select_tensor_ && given_.settings.strength != 1; }
 
-  template <typename Run>
-  void run_kept_flow_to_strength(Run& run, Control_matrix* control)
+  template <typename Runner>
+  void run_kept_flow_to_strength(Runner& runner, const Flow_candidate& kept)
   {
     const double strength = given_.settings.strength;
     char text[160];
     if(!report_.succeeded() || report_.stop_reason == Stop_reason::CALLBACK || steps_left_ == 0)
     {
       std::snprintf(text, sizeof text, "; strength %.6g not applied (%s)", strength,
-                    !report_.succeeded() ? "no flow succeeded" : steps_left_ == 0 ? "the step budget is spent" : "the callback ended the run");
+                    !report_.succeeded() ? "no flow succeeded"
+                    : steps_left_ == 0   ? "the step budget is spent" : "the callback ended the run");
       choices_ += text;
       return;
     }
     s_.strength = strength;
-    const std::string kept = report_.selected_tensor;
-    std::snprintf(text, sizeof text, "%s flow at strength %.6g", kept == "uniform" ? "uniform fourth-order" : kept.c_str(), strength);
+    std::snprintf(text, sizeof text, "%s flow at strength %.6g", kept.label, strength);
     const std::string name = text;
-    Control_matrix Y, Z;
-    Control_matrix* Zp = control ? &Z : nullptr;
-    const Fairing_report r = kept == "isotropic" ? run(name.c_str(), Isotropic_diffusion_tensor(), Y, 2, input_, Zp)
-                             : kept == "uniform" ? run(name.c_str(), Uniform_diffusion_tensor(), Y, 4, input_, Zp)
-                                                 : run(name.c_str(), tensor_, Y, report_.flow_order, input_, Zp);
-    if(!r.succeeded())
+    Flow_outcome r = runner.run(Flow_request{ kept.settings, name, input_ });
+    if(!r.report.succeeded())
     {
       // the result at the noise level stays; the report says why the strength's run was not kept
-      std::snprintf(text, sizeof text, "; the %s failed (%s): the result at the noise level is kept", name.c_str(), to_string(r.status));
+      std::snprintf(text, sizeof text, "; the %s failed (%s): the result at the noise level is kept", name.c_str(),
+                    to_string(r.report.status));
       choices_ += text;
       return;
     }
-    X_.swap(Y);
-    if(control) control->swap(Z);
-    report_ = r;
-    report_.selected_tensor = kept;
-    std::snprintf(text, sizeof text, "; then that flow ran again from the input to %.3g x the noise (strength %.6g): %zu steps, %s",
-                  s_.stopping.noise_discrepancy * strength, strength, r.steps.size(), to_string(r.stop_reason));
+    keep(std::move(r));
+    report_.selected_tensor = kept.name;
+    std::snprintf(text, sizeof text, "; then that flow ran again from the input to %.3g x the noise (strength %.6g): "
+                  "%zu steps, %s", s_.stopping.noise_discrepancy * strength, strength, report_.steps.size(),
+                  to_string(report_.stop_reason));
     choices_ += text;
   }
 
-  // One flow from `start` into Y, with tensor `t`. `probe`: a probed start carried along (Ride_along_probe.h;
-  // empty: made by make_probe), replaced by the probe's written positions (empty when it could not ride
-  // along). The linear element writes its control points: no limit surface to approach
-  template <typename Cache, typename T>
-  Fairing_report run_flow(const Cache& cache, bool loop, const char* name, const T& t, Control_matrix& Y, int order,
-                          const Control_matrix& start, Control_matrix* control, std::size_t fixed_steps, Control_matrix* probe)
+  // the tensor of a candidate's flow
+  template <typename F>
+  Stepper_outcome with_candidate_tensor(Candidate_tensor which, F&& f) const
   {
-    Y = start;
-    double limit_weight = 1;
-    const bool make = probe && probe->size() == 0;
-    Control_matrix probe_start;   // the probe's start, taken out of *probe, which receives its end
-    if(probe && !make) probe_start.swap(*probe);
-    const std::function<Control_matrix(const Control_matrix&)> make_probe = [this](const Control_matrix& surface) {
-      return this->make_probe(surface);
-    };
+    switch(which)
+    {
+      case Candidate_tensor::ISOTROPIC: return f(Isotropic_diffusion_tensor());
+      case Candidate_tensor::UNIFORM: return f(Uniform_diffusion_tensor());
+      case Candidate_tensor::RUN_TENSOR: break;
+    }
+    return f(tensor_);
+  }
+
+  // One flow as `request` asks, on the given element's cache; the step budget pays for its steps.
+  template <typename Cache>
+  Flow_outcome run_flow(const Cache& cache, bool loop, const Flow_request& request)
+  {
+    Probe_plan probe;
+    probe.start = request.probe_start;
+    if(request.make_probe) probe.make = [this](const Control_matrix& surface) { return this->make_probe(surface); };
     auto tagged = [this](const Fairing_step& step) { return this->tagged_callback(step); };
-    Fairing_report r = with_tensor(t, [&](const auto& held) {
-      return run_stepper(cache, ordering_, components_, component_edge_, mean_edge_, Y, given_.mode, constrained_, border_, held,
-                         begin_run(name, order, fixed_steps), tagged, setup_seconds_, limit_weight,
-                         probe && !make ? &probe_start : nullptr, probe, make ? &make_probe : nullptr);
+    const Stepper_settings settings = begin_run(request.name, request.flow.order, request.fixed_steps);
+    const Flow_context<Cache> context{ cache,       ordering_,   components_, component_edge_,
+                                       mean_edge_,  given_.mode, constrained_, border_ };
+    Stepper_outcome o = with_candidate_tensor(request.flow.tensor, [&](const auto& t) {
+      return with_tensor(t, [&](const auto& held) {
+        return run_stepper(context, held, settings, request.start, probe, tagged);
+      });
     });
-    if(make) probe_start.swap(made_probe_);
-    steps_left_ -= (std::min)(steps_left_, r.steps.size());
-    if(!loop)
+    setup_seconds_ += o.setup_seconds;
+    steps_left_ -= (std::min)(steps_left_, o.report.steps.size());
+    return written_outcome(std::move(o), request, loop);
+  }
+
+  // What a run writes: with the Loop element its limit points, `limit_weight` of the way (and its probe's,
+  // which is written as the run is), within the bounds. The linear element writes its control points.
+  Flow_outcome written_outcome(Stepper_outcome&& o, const Flow_request& request, bool loop) const
+  {
+    Flow_outcome out;
+    out.report = std::move(o.report);
+    out.Y = std::move(o.Y);
+    out.probe = std::move(o.probe);
+    const bool control = in_.wants_control && request.may_be_kept;
+    const Control_matrix& start = request.start;
+    if(loop) out.report.limit_weight = o.limit_weight;
+    if(control && loop) out.Z = out.Y;
+    if(loop && out.report.succeeded() && given_.output == Output_positions::LIMIT_SURFACE)
     {
-      bound_written(Y, start, r);
-      if(control) *control = Y;
-      return r;
+      write_limit(out.Y, start, o.limit_weight);
+      if(out.probe.size() > 0) write_limit(out.probe, probe_start(request), o.limit_weight);
     }
-    r.limit_weight = limit_weight;
-    if(control) *control = Y;
-    if(r.succeeded() && given_.output == Output_positions::LIMIT_SURFACE)
-    {
-      write_limit(Y, start, limit_weight);
-      if(probe && probe->size() > 0) write_limit(*probe, probe_start, limit_weight);
-    }
-    bound_written(Y, start, r);
-    if(control && given_.output == Output_positions::CONTROL_POINTS) *control = Y;   // as written, within the bounds
-    return r;
+    bound_written(out.Y, start, out.report);
+    // the linear element's control points are its written positions; the Loop element's, when written
+    if(control && (!loop || given_.output == Output_positions::CONTROL_POINTS)) out.Z = out.Y;
+    return out;
+  }
+
+  // where the probe carried along a run started
+  const Control_matrix& probe_start(const Flow_request& request) const
+  {
+    return request.make_probe ? made_probe_ : *request.probe_start;
   }
 
   // `fixed_steps` > 0: exactly that many steps, no stopping rule (a probe replaying a run: Smoother_selection.h);
   // number_of_iterations bounds the steps of the whole call, the comparison's runs included
-  Stepper_settings begin_run(const char* name, int order, std::size_t fixed_steps)
+  Stepper_settings begin_run(const std::string& name, int order, std::size_t fixed_steps)
   {
     run_name_ = name;
     ++run_number_;
@@ -477,7 +447,8 @@ private:
   void bound_written(Control_matrix& Y, const Control_matrix& start, Fairing_report& r) const
   {
     if(!r.succeeded()) return;
-    const auto bounds = user_bounds(Y.cols(), given_.mode != Attribute_mode::ATTRIBUTES_ONLY, 3, r.absolute_maximum_deviation,
+    const bool moves_geometry = given_.mode != Attribute_mode::ATTRIBUTES_ONLY;
+    const auto bounds = user_bounds(Y.cols(), moves_geometry, 3, r.absolute_maximum_deviation,
                                     s_.attribute_maximum_deviation);
     const Column_bound& geometry = bounds[0];
     const Column_bound& values = bounds[1];

@@ -39,8 +39,9 @@ struct is_named_parameters : decltype(named_parameters_test(static_cast<const X*
 /// The run of anisotropic_fairing() on `options` with `tensor` (a package tensor chosen at run time, or a
 /// tensor type of the caller's own).
 template <typename TriangleMesh, typename VertexPointMap, typename AttributeMap, typename Tensor>
-Fairing_report fair_with_options(TriangleMesh& tm, VertexPointMap vpm, AttributeMap attributes, const Fairing_options& options,
-                                 const Caller_hooks<typename boost::graph_traits<TriangleMesh>::vertex_descriptor>& hooks, const Tensor& tensor)
+Fairing_report fair_with_options(TriangleMesh& tm, VertexPointMap vpm, AttributeMap attributes,
+                                 const Fairing_options& options,
+                                 const Mesh_hooks<TriangleMesh>& hooks, const Tensor& tensor)
 {
   typedef Indexed_mesh<TriangleMesh> Mesh;
   CGAL::Real_timer total;
@@ -55,13 +56,15 @@ Fairing_report fair_with_options(TriangleMesh& tm, VertexPointMap vpm, Attribute
   // input, read and checked before anything is touched
   Mesh im(tm, Borders::GHOSTED, true);   // isolated vertices: held, never written
   Control_matrix P = im.read_points(vpm);
-  const Control_matrix A = mode == Attribute_mode::GEOMETRY_ONLY ? Control_matrix() : read_attribute_columns(im, attributes);
+  const Control_matrix A =
+    mode == Attribute_mode::GEOMETRY_ONLY ? Control_matrix() : read_attribute_columns(im, attributes);
   const double largest = A.size() > 0 ? A.cwiseAbs().maxCoeff() : 0.0;
   // coupled, the weighted attributes are coordinates of the manifold: the same range as the points
   if(mode == Attribute_mode::COUPLED && weight * largest > Mesh::coordinate_limit)
     throw Input_error(Input_error::INVALID_PARAMETER, Input_error::no_element,
-                      "the attribute weight " + Mesh::to_text(weight) + " times the largest attribute value " + Mesh::to_text(largest) +
-                      " is a coordinate beyond 1e70 in the coupled manifold, where the fairing's fourth powers of lengths overflow; "
+                      "the attribute weight " + Mesh::to_text(weight) + " times the largest attribute value " +
+                      Mesh::to_text(largest) + " is a coordinate beyond 1e70 in the coupled manifold, where the "
+                      "fairing's fourth powers of lengths overflow; "
                       "give a weight of at most " + Mesh::to_text(Mesh::coordinate_limit / largest));
   std::vector<bool> held(im.number_of_vertices(), false);
   if(hooks.constrained)
@@ -76,8 +79,9 @@ Fairing_report fair_with_options(TriangleMesh& tm, VertexPointMap vpm, Attribute
   Fairing_report& report = result.report;
   report.input_seconds = input_seconds;
   if(mode == Attribute_mode::COUPLED && A.cols() > 0 && report.status == Fairing_status::DEGENERATE_METRIC)
-    report.message += "; in the coupled mode the surface is that of the points and the attributes times the attribute weight (" +
-                      Mesh::to_text(weight) + "): a weight that makes the attributes dwarf or drown the coordinates leaves no "
+    report.message += "; in the coupled mode the surface is that of the points and the attributes times the "
+                      "attribute weight (" + Mesh::to_text(weight) + "): a weight that makes the attributes dwarf or "
+                      "drown the coordinates leaves no "
                       "surface, try a weight near 1 / (the attributes' range per edge length)";
   report.faces = im.number_of_faces();
   if(report.succeeded())
@@ -100,10 +104,12 @@ Fairing_report fair(TriangleMesh& tm, VertexPointMap vpm, AttributeMap attribute
   const Fairing_options options = read_fairing_options(np);
   const auto hooks = caller_hooks<TriangleMesh>(attributes, np);
   typedef typename std::decay<decltype(parameters::get_parameter(np, internal_np::diffusion_tensor))>::type Tensor;
-  if constexpr(parameters::is_default_parameter<NamedParameters, internal_np::diffusion_tensor_t>::value || is_package_tensor<Tensor>::value)
+  if constexpr(parameters::is_default_parameter<NamedParameters, internal_np::diffusion_tensor_t>::value ||
+               is_package_tensor<Tensor>::value)
     return fair_with_options(tm, vpm, attributes, options, hooks, options.diffusion_tensor_or_default());
   else
-    return fair_with_options(tm, vpm, attributes, options, hooks, parameters::get_parameter(np, internal_np::diffusion_tensor));
+    return fair_with_options(tm, vpm, attributes, options, hooks,
+                             parameters::get_parameter(np, internal_np::diffusion_tensor));
 }
 
 } // namespace internal

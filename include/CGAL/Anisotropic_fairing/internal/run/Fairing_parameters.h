@@ -49,18 +49,26 @@ Direct_solver_factory direct_solver_of(const SolverTraits& traits) { return user
 /// The tensors a `Package_diffusion_tensor` holds (and that value itself).
 template <typename T>
 struct is_package_tensor
-  : std::integral_constant<bool, std::is_same<T, Anisotropic_diffusion_tensor>::value || std::is_same<T, Isotropic_diffusion_tensor>::value ||
-                                 std::is_same<T, Uniform_diffusion_tensor>::value || std::is_same<T, Package_diffusion_tensor>::value>
+  : std::integral_constant<bool, std::is_same<T, Anisotropic_diffusion_tensor>::value ||
+                                 std::is_same<T, Isotropic_diffusion_tensor>::value ||
+                                 std::is_same<T, Uniform_diffusion_tensor>::value ||
+                                 std::is_same<T, Package_diffusion_tensor>::value>
 {};
 
 template <typename T, typename V> void assign_option(T& field, const V& value) { field = T(value); }
 template <typename T, typename V> void assign_option(std::optional<T>& field, const V& value) { field = T(value); }
+// a tensor of a type of one's own is read by fair() itself: the value holds the package's only
+template <typename V> void assign_option(std::optional<Package_diffusion_tensor>& field, const V& value)
+{
+  if constexpr(is_package_tensor<V>::value) field = Package_diffusion_tensor(value);
+}
 
 /// `field` = the named parameter `tag`, if it is given.
 template <typename NamedParameters, typename Tag, typename T>
 void take_option(const NamedParameters& np, Tag tag, T& field)
 {
-  if constexpr(!parameters::is_default_parameter<NamedParameters, Tag>::value) assign_option(field, parameters::get_parameter(np, tag));
+  if constexpr(!parameters::is_default_parameter<NamedParameters, Tag>::value)
+    assign_option(field, parameters::get_parameter(np, tag));
 }
 
 /// The options of a run: the named parameter `fairing_options` (or the defaults), and on top of it every
@@ -69,39 +77,59 @@ template <typename NamedParameters>
 Fairing_options read_fairing_options(const NamedParameters& np)
 {
   using parameters::is_default_parameter;
-  Fairing_options o = parameters::choose_parameter(parameters::get_parameter(np, internal_np::fairing_options), Fairing_options());
-  take_option(np, internal_np::time_step, o.time_step);
-  take_option(np, internal_np::relative_time_step, o.relative_time_step);
-  take_option(np, internal_np::flow_order, o.flow_order);
-  take_option(np, CGAL::internal_np::number_of_iterations, o.number_of_iterations);
-  take_option(np, internal_np::stopping_criteria, o.stopping_criteria);
-  take_option(np, internal_np::strength, o.strength);
-  take_option(np, internal_np::fidelity_weight, o.fidelity_weight);
-  take_option(np, internal_np::relative_fidelity_weight, o.relative_fidelity_weight);
+  Fairing_options o =
+    parameters::choose_parameter(parameters::get_parameter(np, internal_np::fairing_options), Fairing_options());
   // relative_maximum_deviation, or its deprecated spelling maximum_deviation; or absolute_maximum_deviation
   check_parameter(int(!is_default_parameter<NamedParameters, internal_np::relative_maximum_deviation_t>::value) +
                   int(!is_default_parameter<NamedParameters, internal_np::maximum_deviation_t>::value) +
                   int(!is_default_parameter<NamedParameters, internal_np::absolute_maximum_deviation_t>::value) <= 1,
-                  "give one of relative_maximum_deviation and absolute_maximum_deviation (maximum_deviation: the relative one's "
-                  "deprecated spelling), not more");
-  take_option(np, internal_np::relative_maximum_deviation, o.relative_maximum_deviation);
+                  "give one of relative_maximum_deviation and absolute_maximum_deviation (maximum_deviation: "
+                  "the relative one's deprecated spelling), not more");
+#define AF_TAG_OWN(name) internal_np::name
+#define AF_TAG_CGAL(name) CGAL::internal_np::name
+#define AF_PARAMETER(name, type, default_value, named, ...) take_option(np, AF_TAG_##named(name), o.name);
+#define AF_TENSOR_SETTING(...)
+#include <CGAL/Anisotropic_fairing/internal/parameter_table.h>
+#undef AF_PARAMETER
+#undef AF_TENSOR_SETTING
+#undef AF_TAG_OWN
+#undef AF_TAG_CGAL
   take_option(np, internal_np::maximum_deviation, o.relative_maximum_deviation);
-  take_option(np, internal_np::absolute_maximum_deviation, o.absolute_maximum_deviation);
-  take_option(np, internal_np::attribute_maximum_deviation, o.attribute_maximum_deviation);
-  typedef typename std::decay<decltype(parameters::get_parameter(np, internal_np::diffusion_tensor))>::type Tensor;
-  if constexpr(is_package_tensor<Tensor>::value) take_option(np, internal_np::diffusion_tensor, o.diffusion_tensor);
-  take_option(np, internal_np::finite_element, o.finite_element);
-  take_option(np, internal_np::output_positions, o.output_positions);
-  take_option(np, internal_np::attribute_mode, o.attribute_mode);
-  take_option(np, internal_np::attribute_weight, o.attribute_weight);
-  take_option(np, internal_np::boundary_handling, o.boundary_handling);
-  take_option(np, internal_np::linear_solver, o.linear_solver);
-  take_option(np, internal_np::solver_tolerance, o.solver_tolerance);
-  take_option(np, internal_np::solver_maximum_iterations, o.solver_maximum_iterations);
-  take_option(np, internal_np::quadrature_degree, o.quadrature_degree);
-  take_option(np, internal_np::quadrature_tiling_depth, o.quadrature_tiling_depth);
-  take_option(np, CGAL::internal_np::verbose, o.verbose);
   return o;
+}
+
+// The checks of the table's column `check`: whether a value holds, and what the message says if not.
+struct Unchecked
+{
+  template <typename T> bool holds(const T&) const { return true; }
+  const char* says() const { return ""; }
+};
+struct Finite_non_negative
+{
+  bool holds(double x) const { return std::isfinite(x) && x >= 0; }
+  const char* says() const { return " must be finite and >= 0"; }
+};
+struct Open_unit_interval
+{
+  bool holds(double x) const { return x > 0 && x < 1; }
+  const char* says() const { return " must lie in (0, 1)"; }
+};
+struct At_least_one
+{
+  bool holds(int n) const { return n >= 1; }
+  const char* says() const { return " must be at least 1"; }
+};
+
+/// A parameter that the stepper takes as it is: checked, then copied into its field (nullptr: resolved by hand).
+template <typename T, typename Check>
+void resolve_setting(Stepper_settings&, std::nullptr_t, const T&, const char*, const Check&)
+{}
+template <typename Field, typename T, typename Check>
+void resolve_setting(Stepper_settings& s, Field Stepper_settings::*field, const T& value, const char* name,
+                     const Check& check)
+{
+  check_parameter(check.holds(value), std::string(name) + check.says());
+  s.*field = Field(value);
 }
 
 /// Checks the options of a run and resolves what was not given (`has_attributes`: an attribute map is
@@ -116,39 +144,41 @@ inline Fairing_parameters resolve_fairing_parameters(const Fairing_options& o, b
   s.time_step = o.time_step ? *o.time_step : o.relative_time_step.value_or(1e-3);
   check_parameter(std::isfinite(s.time_step) && s.time_step > 0,
                   std::string(o.time_step ? "time_step" : "relative_time_step") + " must be positive and finite");
-  check_parameter(!(o.fidelity_weight && o.relative_fidelity_weight), "give either fidelity_weight or relative_fidelity_weight, not both");
+  check_parameter(!(o.fidelity_weight && o.relative_fidelity_weight),
+                  "give either fidelity_weight or relative_fidelity_weight, not both");
   s.relative_fidelity = !o.fidelity_weight;
   s.fidelity_weight = o.fidelity_weight ? *o.fidelity_weight : o.relative_fidelity_weight.value_or(0.0);
   check_parameter(std::isfinite(s.fidelity_weight) && s.fidelity_weight >= 0,
-                  std::string(o.fidelity_weight ? "fidelity_weight" : "relative_fidelity_weight") + " must be finite and >= 0");
+                  std::string(o.fidelity_weight ? "fidelity_weight" : "relative_fidelity_weight") +
+                    " must be finite and >= 0");
   check_parameter(!(o.relative_maximum_deviation && o.absolute_maximum_deviation),
-                  "give one of relative_maximum_deviation and absolute_maximum_deviation (maximum_deviation: the relative one's "
-                  "deprecated spelling), not more");
+                  "give one of relative_maximum_deviation and absolute_maximum_deviation (maximum_deviation: "
+                  "the relative one's deprecated spelling), not more");
   s.relative_deviation = !o.absolute_maximum_deviation;
-  s.maximum_deviation = o.absolute_maximum_deviation ? *o.absolute_maximum_deviation : o.relative_maximum_deviation.value_or(0.0);
+  s.maximum_deviation =
+    o.absolute_maximum_deviation ? *o.absolute_maximum_deviation : o.relative_maximum_deviation.value_or(0.0);
   // 0: no bound
   check_parameter(std::isfinite(s.maximum_deviation) && s.maximum_deviation >= 0,
-                  std::string(o.absolute_maximum_deviation ? "absolute" : "relative") + "_maximum_deviation must be finite and >= 0");
-  s.attribute_maximum_deviation = o.attribute_maximum_deviation;
-  check_parameter(std::isfinite(s.attribute_maximum_deviation) && s.attribute_maximum_deviation >= 0,
-                  "attribute_maximum_deviation must be finite and >= 0");
+                  std::string(o.absolute_maximum_deviation ? "absolute" : "relative") +
+                    "_maximum_deviation must be finite and >= 0");
+  // the plain ones, in the table's order: attribute_maximum_deviation, the solver's, verbose
+#define AF_PARAMETER(name, type, default_value, named, setting, check, ...) \
+  resolve_setting(s, setting, o.name, #name, check);
+#define AF_TENSOR_SETTING(...)
+#include <CGAL/Anisotropic_fairing/internal/parameter_table.h>
+#undef AF_PARAMETER
+#undef AF_TENSOR_SETTING
   s.maximum_steps = o.maximum_steps();
   s.order = o.flow_order;
   check_parameter(s.order == 2 || s.order == 4, "flow_order must be 2 (diffusion) or 4");
-  s.solver = o.linear_solver;
-  s.solver_tolerance = o.solver_tolerance;
-  check_parameter(s.solver_tolerance > 0 && s.solver_tolerance < 1, "solver_tolerance must lie in (0, 1)");
-  s.solver_maximum_iterations = o.solver_maximum_iterations;
-  check_parameter(s.solver_maximum_iterations >= 1, "solver_maximum_iterations must be at least 1");
-  s.verbose = o.verbose;
   p.element = o.finite_element;
   p.output = o.output_positions;
   p.mode = o.attribute_mode.value_or(has_attributes ? Attribute_mode::SEPARATE : Attribute_mode::GEOMETRY_ONLY);
   check_parameter(has_attributes || p.mode == Attribute_mode::GEOMETRY_ONLY || p.mode == Attribute_mode::SEPARATE,
                   "attribute_mode: the coupled and attributes-only modes need an attribute map");
   // (the noise criterion measures the geometry: with the geometry fixed, the paper's criteria)
-  s.stopping = o.stopping_criteria.value_or(p.automatic && p.mode != Attribute_mode::ATTRIBUTES_ONLY ? Stopping_criteria::automatic()
-                                                                                                     : Stopping_criteria());
+  const bool noise_default = p.automatic && p.mode != Attribute_mode::ATTRIBUTES_ONLY;
+  s.stopping = o.stopping_criteria.value_or(noise_default ? Stopping_criteria::automatic() : Stopping_criteria());
   check_parameter(std::isfinite(s.stopping.curvature_rate_ratio) && std::isfinite(s.stopping.curvature_rate) &&
                   std::isfinite(s.stopping.displacement) && std::isfinite(s.stopping.steady_speed) &&
                   std::isfinite(s.stopping.noise_discrepancy), "stopping_criteria: the thresholds must be finite");
@@ -159,13 +189,15 @@ inline Fairing_parameters resolve_fairing_parameters(const Fairing_options& o, b
   const bool noise_criterion = s.stopping.noise_discrepancy > 0 && p.mode != Attribute_mode::ATTRIBUTES_ONLY;
   check_parameter(o.strength == 1 || noise_criterion,
                   "strength scales the noise criterion's target, and this run does not stop at the noise level (" +
-                  std::string(p.mode == Attribute_mode::ATTRIBUTES_ONLY ? "the attributes-only mode fairs on a fixed surface"
+                  std::string(p.mode == Attribute_mode::ATTRIBUTES_ONLY
+                                ? "the attributes-only mode fairs on a fixed surface"
                               : o.stopping_criteria ? "stopping_criteria has no noise_discrepancy"
                                                     : "a time step is given: the paper's criteria") +
                   "); leave strength at 1, or give the noise criterion (Stopping_criteria::automatic())");
   s.strength = o.strength;
   p.attribute_weight = o.attribute_weight;
-  check_parameter(std::isfinite(p.attribute_weight) && p.attribute_weight > 0, "attribute_weight must be positive and finite");
+  check_parameter(std::isfinite(p.attribute_weight) && p.attribute_weight > 0,
+                  "attribute_weight must be positive and finite");
   p.boundary = o.boundary_handling;
   p.quadrature.degree = o.quadrature_degree;
   p.quadrature.tiling_depth = o.quadrature_tiling_depth;

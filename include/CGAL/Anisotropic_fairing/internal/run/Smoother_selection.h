@@ -1,100 +1,93 @@
 // Copyright (c) 2026 Anisotropic_fairing developers.
 // SPDX-License-Identifier: GPL-3.0-or-later
 //
-// The default run's choice among its flows: the anisotropic result is compared with the isotropic and
-// the uniform fourth-order flow's by the risk estimate of Tensor_selection.h, and the lowest kept.
-// Every candidate is judged by the same estimate. One that ends at the noise level is estimated as it
-// runs (its stopping rule is part of the estimator); one that ends short of it (its later steps rejected,
-// the budget spent, a steady state) is estimated at the state it reached: its probe run replays the
-// same number of steps with no stopping rule, since a probe that stopped elsewhere would measure the
-// stopping rule's jump instead of the flow. A candidate that stops early is judged, never preferred: it
-// is kept only when no candidate reached the noise level, and only then is its estimate made. Its flow
-// could not go on without folding the surface (or ran out of steps), and on noise that is not Gaussian
-// (quantised coordinates) its estimate came out far below the others' while its error was three times theirs.
-// Every probe rides along its candidate's run (Ride_along_probe.h), one solve with more columns instead
-// of a second run, once the normals are known: the anisotropic run makes them first, from its input's
-// prefiltered surface. The uniform flow's stiffness depends on the connectivity alone, so its steps are
-// linear in the data but for the mass matrix, and its carried estimate is its estimate (within 0.022 per
-// vertex of a run of its own on 26 cases, median 0.004, the same choices). The other two flows' operators
-// follow the surface, and that dependence is part of their divergence: carried along, their estimates
-// came out lower than by a run of their own, by 0.046 per vertex (median, up to 0.09: the anisotropic
-// flow) and 0.010 (up to 0.04: the isotropic). So they are run again on the probed input only when their
-// carried estimate is below the lowest estimate so far.
+// The default run's choice among its candidate flows (Flow_candidates.h): each is judged by the same risk
+// estimate (Tensor_selection.h) and the lowest kept. A candidate that ends short of the noise level (steps
+// rejected, budget spent, steady state) is estimated at the state it reached, its probe run replaying its
+// steps with no stopping rule, and kept only when none reached the noise level: its flow could not go on,
+// and on noise that is not Gaussian its estimate can be far too low. Probes ride along their candidate's run
+// (Ride_along_probe.h); a candidate whose operator follows the surface is run again on the probed input only
+// when its carried estimate could be the lowest. The figures behind these rules: the manual's Validation page.
 
 #ifndef CGAL_ANISOTROPIC_FAIRING_INTERNAL_RUN_SMOOTHER_SELECTION_H
 #define CGAL_ANISOTROPIC_FAIRING_INTERNAL_RUN_SMOOTHER_SELECTION_H
 
 #include <CGAL/Anisotropic_fairing/Fairing_report.h>
-#include <CGAL/Anisotropic_fairing/Isotropic_diffusion_tensor.h>
-#include <CGAL/Anisotropic_fairing/Uniform_diffusion_tensor.h>
 #include <CGAL/Anisotropic_fairing/internal/mesh/Ghost_layer.h>
+#include <CGAL/Anisotropic_fairing/internal/run/Flow_candidates.h>
 #include <CGAL/Anisotropic_fairing/internal/run/Tensor_selection.h>
 
 #include <cmath>
 #include <cstdio>
+#include <optional>
 #include <string>
+#include <tuple>
+#include <utility>
 #include <vector>
 
 namespace CGAL {
 namespace Anisotropic_fairing {
 namespace internal {
 
-/// Whether a run ended where its own stopping rule wanted it: at the noise level.
-inline bool ended_at_noise_level(const Fairing_report& r)
+/// What the comparison reads besides its candidates.
+struct Selection_context
 {
-  return r.succeeded() && (r.stop_reason == Stop_reason::NOISE_LEVEL || r.stop_reason == Stop_reason::NOISE_REMOVED ||
-                           r.stop_reason == Stop_reason::DEVIATION_BOUND);
-}
-
-/// Whether a run is judged: it ran to its end, whatever stopped it, but the user's callback.
-inline bool judged_run(const Fairing_report& r) { return r.succeeded() && r.stop_reason != Stop_reason::CALLBACK; }
-
-/// One flow of the comparison, its result and its estimates.
-struct Smoother_candidate
-{
-  const char* name; const char* label; const char* flow;
-  Fairing_report report;
-  Control_matrix Y, Z, probe;   // probe: the result of the probed input, when it rode along
-  double risk = std::nan(""), carried = std::nan("");   // the estimate, and the one its probe carried along gave
-
-  /// Compared: judged, and at the noise level unless none of the candidates reached it.
-  bool compared(bool any_at_noise) const { return judged_run(report) && (ended_at_noise_level(report) || !any_at_noise); }
+  const Ghost_layer& layer;
+  const Control_matrix& input;          // the start of every candidate
+  const std::vector<double>& sigma;     // the noise's deviation at each vertex (0: none to estimate)
+  const Control_matrix& normals;        // those the estimate measures along, made by the first run (empty: none)
 };
 
-/// A failed report for a run the step budget cannot pay for: never kept.
-inline Fairing_report run_not_made()
+/// What the comparison gives back: the candidate kept, whose report's selected_tensor names it, and what
+/// the report's `choices` adds.
+struct Smoother_choice
 {
-  Fairing_report r;
-  r.status = Fairing_status::SOLVER_FAILED;
-  r.stop_reason = Stop_reason::FAILURE;
-  r.message = "not run: the call's step budget (number_of_iterations) was spent";
-  return r;
+  Flow_candidate kept;
+  std::string choices;
+};
+
+/// Where the estimate measures: the normals of the input's prefiltered surface (`given`), else of the
+/// result of the candidate that gives them, else of the first sound result, else of the input.
+inline Control_matrix estimate_normals(const Candidate_list& c, const Selection_context& context)
+{
+  const Flow_candidate* base = nullptr;
+  for(const Flow_candidate& x : c)
+    if(x.made && x.gives_normals && x.result.report.succeeded()) base = &x;
+  for(const Flow_candidate& x : c)
+    if(!base && x.made && x.result.report.succeeded()) base = &x;
+  const Ghost_layer& layer = context.layer;
+  return vertex_normals(*layer.topology, layer.real_faces, base ? base->result.Y : context.input);
 }
 
-/// True, and why in `choices`, when the anisotropic run leaves nothing to compare.
-inline bool nothing_to_compare(const Fairing_report& report, std::size_t steps_left, std::string& choices)
+/// Why the run's own result is kept with nothing compared (empty when its failed run says why itself), or
+/// nothing when the other candidates are to run.
+inline std::optional<std::string> nothing_to_compare(const Flow_candidate& own, std::size_t steps_left)
 {
-  if(report.succeeded() && report.stop_reason == Stop_reason::CALLBACK)
-  {
-    choices += "; kept the anisotropic result (the callback ended the run)";
-    return true;
-  }
-  if(report.succeeded() && report.stop_reason == Stop_reason::NOISE_LEVEL && report.steps.empty())
-  {
-    // every flow stops there before its first step, with the same result: nothing to compare
-    choices += "; kept the anisotropic result (the input's limit surface is at the noise level already: every flow stops before its first step)";
-    return true;
-  }
+  const Fairing_report& r = own.result.report;
+  const std::string kept = std::string("; kept the ") + own.name + " result (";
+  if(r.succeeded() && r.stop_reason == Stop_reason::CALLBACK) return kept + "the callback ended the run)";
+  // every flow stops there before its first step, with the same result: nothing to compare
+  if(r.succeeded() && r.stop_reason == Stop_reason::NOISE_LEVEL && r.steps.empty())
+    return kept + "the input's limit surface is at the noise level already: every flow stops before its first step)";
   if(steps_left == 0)
-  {
-    if(report.succeeded()) choices += "; kept the anisotropic result (the step budget, number_of_iterations, is spent: no other flow runs)";
-    return true;
-  }
-  return false;
+    return r.succeeded() ? kept + "the step budget, number_of_iterations, is spent: no other flow runs)"
+                         : std::string();
+  return std::nullopt;
+}
+
+/// A failed outcome for a run the step budget cannot pay for: never kept.
+inline Flow_outcome run_not_made()
+{
+  Flow_outcome o;
+  o.report.status = Fairing_status::SOLVER_FAILED;
+  o.report.stop_reason = Stop_reason::FAILURE;
+  o.report.message = "not run: the call's step budget (number_of_iterations) was spent";
+  return o;
 }
 
 /// The sum of the risk terms of result Y whose probed input ended at Yp (Tensor_selection.h).
-inline double risk_of(const Control_matrix& input, const Control_matrix& Y, const Control_matrix& Yp, const Control_matrix& N,
+inline double risk_of(const Control_matrix& input, const Control_matrix& Y, const Control_matrix& Yp,
+                      const Control_matrix& N,
                       const std::vector<double>& sigma, const std::vector<double>& b)
 {
   double risk = 0;
@@ -102,149 +95,189 @@ inline double risk_of(const Control_matrix& input, const Control_matrix& Y, cons
   return risk;
 }
 
-/// The estimates: the uniform flow's carried one is its own; the other two are run again on the `probed`
-/// input (lowest carried estimate first) only when theirs is below the lowest estimate of their kind so far.
-/// `run_candidate(k, Y, start, Z, steps, name)` runs candidate k.
-template <typename RunCandidate>
-void estimate_risks(std::vector<Smoother_candidate>& c, const RunCandidate& run_candidate, const Control_matrix& input,
-                    const Control_matrix& probed, const Control_matrix& N, const std::vector<double>& sigma,
-                    const std::vector<double>& b, const std::size_t& steps_left, bool any_at_noise)
+/// What the estimates read: the input, its probed copy, the normals, the noise and the probe's values.
+struct Estimate_context
 {
-  for(Smoother_candidate& x : c)
-    if(x.compared(any_at_noise) && x.probe.size() > 0) x.carried = risk_of(input, x.Y, x.probe, N, sigma, b);
-  c[2].risk = c[2].carried;
-  std::vector<std::size_t> order{ 2, 0, 1 };
-  if(c[1].carried < c[0].carried) std::swap(order[1], order[2]);
-  for(std::size_t k : order)
+  const Control_matrix& input;
+  const Control_matrix& probed;
+  const Control_matrix& normals;
+  const std::vector<double>& sigma;
+  const std::vector<double>& b;
+  double risk_of(const Control_matrix& Y, const Control_matrix& Yp) const
   {
-    if(!c[k].compared(any_at_noise) || std::isfinite(c[k].risk)) continue;
-    const bool at_noise = ended_at_noise_level(c[k].report);
-    double lowest = std::nan("");
-    for(const Smoother_candidate& x : c)
-      if(std::isfinite(x.risk) && ended_at_noise_level(x.report) == at_noise && !(x.risk >= lowest)) lowest = x.risk;
-    if(c[k].carried >= lowest || steps_left == 0) continue;
-    // a candidate that ended short of the noise level: its probe takes exactly its steps
-    const std::size_t replay = at_noise ? 0 : c[k].report.steps.size();
-    if(!at_noise && replay == 0) continue;   // it took no step: nothing to estimate
-    const std::string probe_name = std::string(c[k].flow) + " on the probed input";
-    Control_matrix Yp;
-    const Fairing_report rp = run_candidate(k, Yp, probed, nullptr, replay, probe_name.c_str());
-    if(!rp.succeeded() || (rp.stop_reason == Stop_reason::MAXIMUM_STEPS && steps_left == 0 && replay == 0)) continue;   // cut short by the budget
-    if(replay > 0 && rp.steps.size() != replay) continue;   // the probe could not take the same steps
-    c[k].risk = risk_of(input, c[k].Y, Yp, N, sigma, b);
+    return internal::risk_of(input, Y, Yp, normals, sigma, b);
+  }
+};
+
+/// The order in which candidates are estimated: those whose carried estimate is their estimate first, then
+/// the others, the lower carried estimate first (the list's order between those that do not compare).
+inline std::vector<std::size_t> estimate_order(const Candidate_list& c)
+{
+  std::vector<std::size_t> order, rest;
+  for(std::size_t k = 0; k < c.size(); ++k) (c[k].carried_is_estimate ? order : rest).push_back(k);
+  for(std::size_t i = 1; i < rest.size(); ++i)
+    for(std::size_t j = i; j > 0 && c[rest[j]].carried < c[rest[j - 1]].carried; --j) std::swap(rest[j], rest[j - 1]);
+  order.insert(order.end(), rest.begin(), rest.end());
+  return order;
+}
+
+/// The lowest estimate among the candidates that ended as `x` did (at the noise level or short of it).
+inline double lowest_estimate_like(const Candidate_list& c, const Flow_candidate& x)
+{
+  const bool at_noise = ended_at_noise_level(x.result.report);
+  double lowest = std::nan("");
+  for(const Flow_candidate& y : c)
+    if(std::isfinite(y.risk) && ended_at_noise_level(y.result.report) == at_noise && !(y.risk >= lowest))
+      lowest = y.risk;
+  return lowest;
+}
+
+/// The estimate of candidate `x` by a run of its own on the probed input (NaN when it cannot be made); one
+/// that ended short of the noise level has its probe take exactly its steps.
+template <typename Runner>
+double estimate_by_probe_run(const Flow_candidate& x, const Estimate_context& e, Runner& runner)
+{
+  const bool at_noise = ended_at_noise_level(x.result.report);
+  const std::size_t replay = at_noise ? 0 : x.result.report.steps.size();
+  if(!at_noise && replay == 0) return std::nan("");   // it took no step: nothing to estimate
+  Flow_request request{ x.settings, std::string(x.flow) + " on the probed input", e.probed };
+  request.may_be_kept = false;
+  request.fixed_steps = replay;
+  const Flow_outcome probe = runner.run(request);
+  const Fairing_report& rp = probe.report;
+  if(!rp.succeeded() || (rp.stop_reason == Stop_reason::MAXIMUM_STEPS && runner.steps_left() == 0 && replay == 0))
+    return std::nan("");   // cut short by the budget
+  if(replay > 0 && rp.steps.size() != replay) return std::nan("");   // the probe could not take the same steps
+  return e.risk_of(x.result.Y, probe.Y);
+}
+
+/// The estimates: a carried one is the candidate's own when its flow says so; the others are run again on
+/// the probed input (lowest carried estimate first) only when theirs is below the lowest estimate so far.
+template <typename Runner>
+void estimate_risks(Candidate_list& c, const Estimate_context& e, Runner& runner, bool any_at_noise)
+{
+  for(Flow_candidate& x : c)
+  {
+    if(x.compared(any_at_noise) && x.result.probe.size() > 0) x.carried = e.risk_of(x.result.Y, x.result.probe);
+    if(x.carried_is_estimate) x.risk = x.carried;
+  }
+  for(std::size_t k : estimate_order(c))
+  {
+    Flow_candidate& x = c[k];
+    if(!x.compared(any_at_noise) || std::isfinite(x.risk)) continue;
+    if(x.carried >= lowest_estimate_like(c, x) || runner.steps_left() == 0) continue;
+    x.risk = estimate_by_probe_run(x, e, runner);
   }
 }
 
 /// The candidate kept: the lowest estimate among the runs that reached the noise level, among those that
 /// stopped early only when none reached it; c.size() when none has an estimate.
-inline std::size_t lowest_estimate(const std::vector<Smoother_candidate>& c)
+inline std::size_t lowest_estimate(const Candidate_list& c)
 {
   const auto lowest_of = [&c](bool at_noise) {
     std::size_t best = c.size();
     for(std::size_t k = 0; k < c.size(); ++k)
-      if(std::isfinite(c[k].risk) && ended_at_noise_level(c[k].report) == at_noise && (best == c.size() || c[k].risk < c[best].risk)) best = k;
+      if(std::isfinite(c[k].risk) && ended_at_noise_level(c[k].result.report) == at_noise &&
+         (best == c.size() || c[k].risk < c[best].risk))
+        best = k;
     return best;
   };
   const std::size_t kept = lowest_of(true);
   return kept < c.size() ? kept : lowest_of(false);
 }
 
-/// What `choices` says of the comparison that kept candidate `kept`, the estimates per vertex in units of the noise.
-inline std::string describe_choice(const std::vector<Smoother_candidate>& c, std::size_t kept, bool any_at_noise, Eigen::Index rows)
+/// One candidate's entry in the list of estimates, per vertex in units of the noise.
+inline std::string described_estimate(const Flow_candidate& x, bool any_at_noise, Eigen::Index rows)
+{
+  const Fairing_report& r = x.result.report;
+  char text[160];
+  const std::string early = std::string(" (stopped early: ") + to_string(r.stop_reason) + ")";
+  if(std::isfinite(x.risk))
+    std::snprintf(text, sizeof text, "%s %.4g%s", x.label, x.risk / double(rows) - 1,
+                  ended_at_noise_level(r) ? "" : early.c_str());
+  else if(std::isfinite(x.carried))
+    std::snprintf(text, sizeof text, "%s %.4g or more (carried along: it cannot be the lowest)", x.label,
+                  x.carried / double(rows) - 1);
+  else if(judged_run(r) && !ended_at_noise_level(r) && any_at_noise)
+    std::snprintf(text, sizeof text, "%s not estimated (stopped early: %s)", x.label, to_string(r.stop_reason));
+  else
+    std::snprintf(text, sizeof text, "%s not compared (%s)", x.label,
+                  r.succeeded() ? to_string(r.stop_reason) : to_string(r.status));
+  return text;
+}
+
+/// What `choices` says of the comparison that kept candidate `kept`.
+inline std::string describe_choice(const Candidate_list& c, std::size_t kept, bool any_at_noise, Eigen::Index rows)
 {
   std::string list;
-  for(const Smoother_candidate& x : c)
-  {
-    char text[160];
-    if(std::isfinite(x.risk))
-      std::snprintf(text, sizeof text, "%s %.4g%s", x.label, x.risk / double(rows) - 1,
-                    ended_at_noise_level(x.report) ? "" : (std::string(" (stopped early: ") + to_string(x.report.stop_reason) + ")").c_str());
-    else if(std::isfinite(x.carried))
-      std::snprintf(text, sizeof text, "%s %.4g or more (carried along: it cannot be the lowest)", x.label, x.carried / double(rows) - 1);
-    else if(judged_run(x.report) && !ended_at_noise_level(x.report) && any_at_noise)
-      std::snprintf(text, sizeof text, "%s not estimated (stopped early: %s)", x.label, to_string(x.report.stop_reason));
-    else
-      std::snprintf(text, sizeof text, "%s not compared (%s)", x.label,
-                    x.report.succeeded() ? to_string(x.report.stop_reason) : to_string(x.report.status));
-    list += (list.empty() ? "" : ", ") + std::string(text);
-  }
+  for(const Flow_candidate& x : c) list += (list.empty() ? "" : ", ") + described_estimate(x, any_at_noise, rows);
   bool lowest = true;
-  for(const Smoother_candidate& x : c)
-    lowest = lowest && !(x.risk < c[kept].risk) && !(judged_run(x.report) && !ended_at_noise_level(x.report) && any_at_noise);
+  for(const Flow_candidate& x : c)
+    lowest = lowest && !(x.risk < c[kept].risk) &&
+             !(judged_run(x.result.report) && !ended_at_noise_level(x.result.report) && any_at_noise);
   return std::string("; kept the ") + c[kept].name +
-         (lowest ? " result, whose estimated error is the lowest" : " result, whose estimated error is the lowest of the runs that "
-          "reached the noise level; a run that stopped early is not preferred to them") +
+         (lowest ? " result, whose estimated error is the lowest"
+                 : " result, whose estimated error is the lowest of the runs that reached the noise level; a run that "
+                   "stopped early is not preferred to them") +
          " (Stein's unbiased risk estimate per vertex, in units of the noise: " + list + ")";
 }
 
-/// Runs the isotropic and the uniform fourth-order flow too (`run(name, tensor, Y, order, start, Z, steps,
-/// probe)` runs from `start` and writes Y, and its control points in *Z unless null; `steps` > 0: exactly
-/// that many steps, no stopping rule; `probe` not null: carries that start along and replaces it by where
-/// it ends, written as Y is, or by nothing when it cannot ride along) and keeps, in X, *control and
-/// `report`, the result whose estimated error is lowest, or the first that succeeded. `steps_left` is the
-/// call's step budget: a run it cannot pay for is not made. `sigma`: the noise's deviation at each vertex
-/// (0 where there is none to estimate). `normals`: those the estimate measures along, when the anisotropic
-/// run made them (empty: the isotropic result's), and `anisotropic_probe` the probe it carried along them.
-/// Says which in `choices`. (The user's callback sees every run.)
-template <typename Run, typename Tensor>
-void select_smoother(Run& run, const Tensor& tensor, const Ghost_layer& layer, const Control_matrix& input,
-                     const std::vector<double>& sigma, Control_matrix& X, Control_matrix* control, Fairing_report& report,
-                     std::string& choices, const std::size_t& steps_left, const Control_matrix& normals = Control_matrix(),
-                     const Control_matrix& anisotropic_probe = Control_matrix())
+/// Runs the candidates not made yet, in the list's order, from the input. A candidate's probe rides along
+/// once the normals are known (given, or made after the candidate that gives them); returns the normals.
+template <typename Runner>
+Control_matrix run_candidates(Candidate_list& c, const Selection_context& context, const std::vector<double>& b,
+                              Runner& runner)
 {
-  report.selected_tensor = "anisotropic";
-  if(nothing_to_compare(report, steps_left, choices)) return;
-  std::vector<Smoother_candidate> c(3);
-  c[0].name = c[0].label = "anisotropic"; c[0].flow = "anisotropic flow"; c[0].report = report;
-  c[0].Y.swap(X);   // the anisotropic result (and its control points): c[0]'s until the choice is made
-  c[0].probe = anisotropic_probe;
-  if(control) c[0].Z.swap(*control);
-  c[1].name = c[1].label = "isotropic"; c[1].flow = "isotropic flow";
-  c[2].name = "uniform"; c[2].label = "uniform fourth-order"; c[2].flow = "uniform fourth-order flow";
-  const auto run_candidate = [&](std::size_t k, Control_matrix& Y, const Control_matrix& start, Control_matrix* Z, std::size_t steps,
-                                 const char* name, Control_matrix* probe = nullptr) {
-    if(k == 0) return run(name, tensor, Y, c[0].report.flow_order, start, Z, steps, probe);
-    if(k == 1) return run(name, Isotropic_diffusion_tensor(), Y, 2, start, Z, steps, probe);
-    return run(name, Uniform_diffusion_tensor(), Y, 4, start, Z, steps, probe);
-  };
-  // the normals of the risk: the anisotropic run's (its prefiltered input's), else the isotropic result's,
-  // or the first sound one's
-  const std::vector<double> b = risk_probe_values(std::size_t(input.rows()));
-  const bool known = normals.size() > 0;
-  if(known) c[1].probe = probed_input(input, normals, sigma, b);
-  c[1].report = steps_left > 0 ? run_candidate(1, c[1].Y, input, control ? &c[1].Z : nullptr, 0, c[1].flow, known ? &c[1].probe : nullptr)
-                               : run_not_made();
-  const Smoother_candidate* base = c[1].report.succeeded() ? &c[1] : &c[0];
-  Control_matrix made_normals;
-  if(!known) made_normals = vertex_normals(*layer.topology, layer.real_faces, base->report.succeeded() ? base->Y : input);
-  const Control_matrix& N = known ? normals : made_normals;
-  const Control_matrix probed = probed_input(input, N, sigma, b);
-  c[2].probe = probed;
-  c[2].report = steps_left > 0 ? run_candidate(2, c[2].Y, input, control ? &c[2].Z : nullptr, 0, c[2].flow, &c[2].probe) : run_not_made();
+  Control_matrix N = context.normals;
+  Control_matrix probed = N.size() > 0 ? probed_input(context.input, N, context.sigma, b) : Control_matrix();
+  for(Flow_candidate& x : c)
+  {
+    if(x.made) continue;
+    Flow_request request{ x.settings, x.flow, context.input };
+    request.probe_start = probed.size() > 0 ? &probed : nullptr;
+    x.result = runner.steps_left() > 0 ? runner.run(request) : run_not_made();
+    x.made = true;
+    if(N.size() > 0 || !x.gives_normals) continue;
+    N = estimate_normals(c, context);
+    probed = probed_input(context.input, N, context.sigma, b);
+  }
+  return N.size() > 0 ? N : estimate_normals(c, context);
+}
+
+/// The candidate kept when none has an estimate: the first that succeeded (the run's own when all failed),
+/// and what `choices` says of it.
+inline std::pair<std::size_t, std::string> first_sound(const Candidate_list& c, std::size_t own)
+{
+  for(std::size_t k = 0; k < c.size(); ++k)
+    if(c[k].result.report.succeeded())
+      return { k, std::string("; kept the ") + c[k].name + " result (no other could be compared)" };
+  return { own, std::string() };   // all failed: the run's own report says why
+}
+
+/// Runs the candidates of `c` not made yet (the run's own flow is: its result, and the probe it carried along
+/// the given normals) through `runner` (`run(Flow_request)`, `steps_left()`: the call's step budget; a run
+/// it cannot pay for is not made) and keeps the one whose estimated error is lowest, or the first that
+/// succeeded. (The user's callback sees every run.)
+template <typename Runner>
+Smoother_choice select_smoother(Candidate_list c, const Selection_context& context, Runner& runner)
+{
+  const std::size_t own = made_candidate(c);
+  c[own].result.report.selected_tensor = c[own].name;
+  const std::optional<std::string> why_not = nothing_to_compare(c[own], runner.steps_left());
+  if(why_not) return { std::move(c[own]), *why_not };
+  std::string choices;
+  const std::vector<double> b = risk_probe_values(std::size_t(context.input.rows()));
+  const Control_matrix N = run_candidates(c, context, b, runner);
+  const Control_matrix probed = probed_input(context.input, N, context.sigma, b);
   // a candidate that stopped early is estimated only when none reached the noise level
   bool any_at_noise = false;
-  for(const Smoother_candidate& x : c) any_at_noise = any_at_noise || (judged_run(x.report) && ended_at_noise_level(x.report));
-  estimate_risks(c, run_candidate, input, probed, N, sigma, b, steps_left, any_at_noise);
+  for(const Flow_candidate& x : c) any_at_noise = any_at_noise || ended_at_noise_level(x.result.report);
+  estimate_risks(c, Estimate_context{ context.input, probed, N, context.sigma, b }, runner, any_at_noise);
   std::size_t kept = lowest_estimate(c);
-  if(kept < c.size()) choices += describe_choice(c, kept, any_at_noise, input.rows());
-  else
-  {
-    // nothing to compare: the first result that succeeded
-    for(std::size_t k = 0; k < c.size() && kept == c.size(); ++k)
-      if(c[k].report.succeeded()) kept = k;
-    if(kept == c.size())   // all failed: the anisotropic report says why
-    {
-      X.swap(c[0].Y);
-      if(control) control->swap(c[0].Z);
-      return;
-    }
-    choices += std::string("; kept the ") + c[kept].name + " result (no other could be compared)";
-  }
-  X.swap(c[kept].Y);
-  if(control) control->swap(c[kept].Z);
-  if(kept == 0) return;
-  report = c[kept].report;
-  report.selected_tensor = c[kept].name;
+  if(kept < c.size()) choices = describe_choice(c, kept, any_at_noise, context.input.rows());
+  else std::tie(kept, choices) = first_sound(c, own);
+  c[kept].result.report.selected_tensor = c[kept].name;
+  return { std::move(c[kept]), choices };
 }
 
 } // namespace internal

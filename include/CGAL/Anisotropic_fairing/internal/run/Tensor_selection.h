@@ -1,19 +1,16 @@
 // Copyright (c) 2026 Anisotropic_fairing developers.
 // SPDX-License-Identifier: GPL-3.0-or-later
 //
-// Which result the default run keeps. The anisotropic, the isotropic and the uniform fourth-order flow
-// each run to the noise level, and the one with the lowest estimated error to the unknown clean surface
-// is kept: Stein's unbiased risk estimate (SURE; Stein 1981, by Monte Carlo as Ramani, Blu and Unser
-// 2008). For noise of deviation sigma along the normals n, a result f(y) of the data y has the expected
-// squared error along the normals
+// Which result the default run keeps. The candidate flows each run to the noise level, and the one with the
+// lowest estimated error to the unknown clean surface is kept: Stein's unbiased risk estimate (SURE; Stein
+// 1981, by Monte Carlo as Ramani, Blu and Unser 2008). For noise of deviation sigma along the normals n, a
+// result f(y) of the data y has the expected squared error along the normals
 //   sum_i (n_i . (y_i - f_i))^2 - N sigma^2 + 2 sigma^2 div f,   div f ~ b . (f(y + e b) - f(y)) / e,
 // b standard normal along each normal, e small: f is also made from the input moved by e b.
 // The error counts along the normals only, so a flow's tangential drift (the uniform weights move vertices
-// along the surface) costs nothing. sigma is the package's own noise estimate; n, the normals of the
-// input's prefiltered surface M_eps, or else of the isotropic result (the noisy mesh's own normals are too
-// far off at high noise; the two gave the same choices on 15 cases). Measured on 20 cases, CAD
-// parts and organic scans, this picks the better of the anisotropic and the uniform result on every one
-// (bench/README.md); no measure of one result at a time does.
+// along the surface) costs nothing. sigma is the package's own noise estimate; n, the normals of the input's
+// prefiltered surface M_eps, or else of a candidate's result: the noisy mesh's own normals are too far off at
+// high noise. No measure of one result at a time tells the better result apart (the manual's Validation page).
 
 #ifndef CGAL_ANISOTROPIC_FAIRING_INTERNAL_RUN_TENSOR_SELECTION_H
 #define CGAL_ANISOTROPIC_FAIRING_INTERNAL_RUN_TENSOR_SELECTION_H
@@ -74,7 +71,8 @@ inline Control_matrix probed_input(const Control_matrix& Y, const Control_matrix
 /// sigma_i^2, without the constant -1 per vertex: ((n_i . (y_i - f_i)) / sigma_i)^2 + 2 div_i (0 where
 /// sigma_i is 0). Their sum is the estimate.
 inline std::vector<double> risk_terms(const Control_matrix& y, const Control_matrix& f, const Control_matrix& f_probed,
-                                      const Control_matrix& N, const std::vector<double>& sigma, const std::vector<double>& b)
+                                      const Control_matrix& N, const std::vector<double>& sigma,
+                                      const std::vector<double>& b)
 {
   std::vector<double> t(std::size_t(y.rows()), 0.0);
   for(Eigen::Index i = 0; i < y.rows(); ++i)
@@ -82,7 +80,8 @@ inline std::vector<double> risk_terms(const Control_matrix& y, const Control_mat
     const double s = sigma[std::size_t(i)];
     if(!(s > 0)) continue;
     const double residual = N.row(i).dot(y.row(i).head(3) - f.row(i).head(3)) / s;
-    const double divergence = b[std::size_t(i)] * N.row(i).dot(f_probed.row(i).head(3) - f.row(i).head(3)) / (risk_probe * s);
+    const double along = N.row(i).dot(f_probed.row(i).head(3) - f.row(i).head(3));
+    const double divergence = b[std::size_t(i)] * along / (risk_probe * s);
     t[std::size_t(i)] = residual * residual + 2 * divergence;
   }
   return t;

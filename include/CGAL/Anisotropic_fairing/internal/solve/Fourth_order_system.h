@@ -10,7 +10,7 @@
 // partition of unity), positive on a surface. M carries the local time scale as in Step_system.h.
 // Conjugate gradients use the system through its product, M x and L (D^-1 (L x)) on the 3-ring pattern:
 // three sparse products cost less than one with the 6-ring Q, and Q is never formed unless the system is
-// factorised (forming it costs about 80% of a step).
+// factorised (forming it costs most of a step).
 
 #ifndef CGAL_ANISOTROPIC_FAIRING_INTERNAL_SOLVE_FOURTH_ORDER_SYSTEM_H
 #define CGAL_ANISOTROPIC_FAIRING_INTERNAL_SOLVE_FOURTH_ORDER_SYSTEM_H
@@ -35,7 +35,8 @@ class Fourth_order_system
 public:
   /// `pattern`: the n x n symmetric pattern of M and L; `free`: the unknowns' rows (increasing).
   Fourth_order_system(const Sparse_structure& pattern, const std::vector<int>& free)
-    : pattern_(pattern), select_(Eigen::Index(free.size()), pattern.rows()), is_free_(std::size_t(pattern.rows()), false), free_(free)
+    : pattern_(pattern), select_(Eigen::Index(free.size()), pattern.rows()), is_free_(std::size_t(pattern.rows()),
+                                                                                      false), free_(free)
   {
     for(int i : free) is_free_[std::size_t(i)] = true;
     std::vector<Eigen::Triplet<double>> t;
@@ -67,7 +68,9 @@ public:
       {
         const double l = L[std::size_t(p)];
         q_diagonal_[inner[p]] += l * l * d[j];
-        if(inner[p] == j) m_diagonal_[j] = M[std::size_t(p)] * (mass_weight.empty() ? 1.0 : mass_weight[std::size_t(j)] * mass_weight[std::size_t(j)]);
+        if(inner[p] == j)
+          m_diagonal_[j] =
+            M[std::size_t(p)] * (mass_weight.empty() ? 1.0 : mass_weight[std::size_t(j)] * mass_weight[std::size_t(j)]);
       }
     Q_formed_ = A_formed_ = false;
   }
@@ -173,7 +176,8 @@ public:
   }
 
   /// R = f tau_i (w_i M (X0 - X) - Q X)_i for all rows.
-  void residual(const std::vector<double>& tau, const std::vector<double>& omega, const Control_matrix& X, const Control_matrix& X0,
+  void residual(const std::vector<double>& tau, const std::vector<double>& omega, const Control_matrix& X,
+                const Control_matrix& X0,
                 double f, Control_matrix& R) const
   {
     Eigen::VectorXd w(X.rows()), t(X.rows());

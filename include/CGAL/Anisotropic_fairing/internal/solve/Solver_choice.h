@@ -21,9 +21,8 @@ namespace Anisotropic_fairing {
 namespace internal {
 
 /// Which solver runs each step. AUTOMATIC starts with conjugate gradients; when a step needs many
-/// iterations it times one factorised step and keeps whichever was faster (bench_step_speed: CG wins
-/// per step on every mesh tried at tau/h^2 <= 1, the factorisation wins by up to 5x once CG needs
-/// hundreds of iterations on a few thousand vertices).
+/// iterations it times one factorised step and keeps whichever was faster: CG wins at small steps, the
+/// factorisation once CG needs hundreds of iterations (the manual's Validation page, bench_step_speed).
 class Solver_choice
 {
 public:
@@ -64,14 +63,16 @@ public:
   /// Solves A X = B the chosen way (X holds the initial guess of conjugate gradients), A given by its
   /// structure and values; a conjugate-gradient solve that fails is retried by the factorisation when
   /// allowed. `direct`: how it was solved.
-  Solve_statistics solve(const Sparse_structure& S, const Value_array& values, const Control_matrix& B, Control_matrix& X,
+  Solve_statistics solve(const Sparse_structure& S, const Value_array& values, const Control_matrix& B,
+                         Control_matrix& X,
                          Block_conjugate_gradient& cg, bool& direct)
   {
     Eigen::VectorXd diagonal;
     if(!factorise_now()) diagonal = S.diagonal(values.data());
     Eigen::SparseMatrix<double> formed;   // a copy for the factorisation only, gone after the solve
     return solve([&](const Control_matrix& P, Control_matrix& AP) { symmetric_product(S, values, P, AP); }, diagonal,
-                 [&]() -> const Eigen::SparseMatrix<double>& { formed = S.matrix(values); return formed; }, B, X, cg, direct);
+                 [&]() -> const Eigen::SparseMatrix<double>& { formed = S.matrix(values); return formed; }, B, X, cg,
+                     direct);
   }
 
   /// The same for a matrix that conjugate gradients use through its product (`product(P, AP)`: AP = A P)
@@ -101,11 +102,12 @@ public:
 
   /// Iterations after which conjugate gradients give way to the factorisation: as many as cost what one
   /// factorised step costs, once both were timed; before that ten times the trial threshold (a step
-  /// that needs more is factorised faster on every mesh of bench_step_speed). Where a limit surface is
+  /// that needs more is factorised faster). Where a limit surface is
   /// nearly singular (quantised scans) the iterations stall, and would otherwise run to the user's maximum.
   int fall_back_iterations() const
   {
-    if(!(seconds_per_iteration_ > 0) || !std::isfinite(factorised_seconds_)) return 10 * automatic_cholesky_trial_iterations;
+    if(!(seconds_per_iteration_ > 0) || !std::isfinite(factorised_seconds_))
+      return 10 * automatic_cholesky_trial_iterations;
     const double worth = factorised_seconds_ / seconds_per_iteration_;
     return int(std::min(1e9, std::max(double(automatic_cholesky_trial_iterations), worth)));
   }
@@ -148,7 +150,8 @@ private:
   bool constant_;
   bool tried_ = false;
   double factor_ = 1, gave_way_factor_ = 0;   // of the step solved, and of the last whose iterations gave way
-  double predicted_iterate_seconds_ = 0, factorised_seconds_ = HUGE_VAL, seconds_per_iteration_ = 0, failed_iterate_seconds_ = 0;
+  double predicted_iterate_seconds_ = 0, factorised_seconds_ = HUGE_VAL, seconds_per_iteration_ = 0,
+      failed_iterate_seconds_ = 0;
   int previous_iterations_ = 0, failures_in_a_row_ = 0;
   Direct_solver_factory make_direct_;
   std::unique_ptr<Direct_solver> direct_;

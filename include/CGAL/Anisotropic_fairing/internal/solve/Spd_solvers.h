@@ -46,7 +46,8 @@ struct Solve_statistics
 /// registers: the product is the solvers' main cost, and writing through Y's row at every non-zero (which
 /// may alias X as far as the compiler knows) makes it about twice as slow.
 template <int K, bool Weighted>
-void sparse_rows_product(const int* outer, const int* rows, const double* values, const double* w, const double* X, double* Y,
+void sparse_rows_product(const int* outer, const int* rows, const double* values, const double* w, const double* X,
+                         double* Y,
                          Eigen::Index begin, Eigen::Index end)
 {
   for(Eigen::Index i = begin; i < end; ++i)
@@ -63,7 +64,8 @@ void sparse_rows_product(const int* outer, const int* rows, const double* values
 }
 
 template <bool Weighted>
-void sparse_rows_product(const int* outer, const int* rows, const double* values, const double* w, const Control_matrix& X,
+void sparse_rows_product(const int* outer, const int* rows, const double* values, const double* w,
+                         const Control_matrix& X,
                          Control_matrix& Y, Eigen::Index begin, Eigen::Index end)
 {
   const Eigen::Index k = X.cols();
@@ -91,7 +93,8 @@ void sparse_rows_product(const int* outer, const int* rows, const double* values
 
 /// Y = A X for a symmetric matrix stored in full (column j = row j), A given by its structure and
 /// values, X and Y with one row per unknown; with `weights` (not null), Y = W A W X, W = diag(weights).
-inline void symmetric_product(const int* outer, const int* rows, const double* values, const Control_matrix& X, Control_matrix& Y,
+inline void symmetric_product(const int* outer, const int* rows, const double* values, const Control_matrix& X,
+                              Control_matrix& Y,
                               const double* weights = nullptr)
 {
   Y.resize(X.rows(), X.cols());
@@ -103,10 +106,12 @@ inline void symmetric_product(const int* outer, const int* rows, const double* v
 }
 
 /// The same with A's structure and values; `weights` empty: none.
-inline void symmetric_product(const Sparse_structure& S, const Value_array& values, const Control_matrix& X, Control_matrix& Y,
+inline void symmetric_product(const Sparse_structure& S, const Value_array& values, const Control_matrix& X,
+                              Control_matrix& Y,
                               const std::vector<double>& weights = std::vector<double>())
 {
-  symmetric_product(S.outerIndexPtr(), S.innerIndexPtr(), values.data(), X, Y, weights.empty() ? nullptr : weights.data());
+  symmetric_product(S.outerIndexPtr(), S.innerIndexPtr(), values.data(), X, Y,
+                    weights.empty() ? nullptr : weights.data());
 }
 
 inline void symmetric_product(const Eigen::SparseMatrix<double>& A, const Control_matrix& X, Control_matrix& Y)
@@ -134,7 +139,8 @@ public:
   /// and fewer when the rate of convergence so far says that the limit would not be enough (something
   /// faster stands by: a factorisation).
   template <typename Product>
-  Solve_statistics solve(const Product& product, const Eigen::VectorXd& diagonal, const Control_matrix& B, Control_matrix& X,
+  Solve_statistics solve(const Product& product, const Eigen::VectorXd& diagonal, const Control_matrix& B,
+                         Control_matrix& X,
                          int iteration_limit)
   {
     const int kept = max_iterations_;
@@ -147,7 +153,8 @@ public:
   }
 
   template <typename Product>
-  Solve_statistics solve(const Product& product, const Eigen::VectorXd& diagonal, const Control_matrix& B, Control_matrix& X)
+  Solve_statistics solve(const Product& product, const Eigen::VectorXd& diagonal, const Control_matrix& B,
+                         Control_matrix& X)
   {
     Solve_statistics st;
     if(!start(product, diagonal, B, X, st)) return st;
@@ -236,7 +243,8 @@ private:
       if(slow)
       {
         st.ok = false;
-        st.message = "conjugate gradients would not converge in " + std::to_string(max_iterations_) + " iterations at their rate";
+        st.message =
+          "conjugate gradients would not converge in " + std::to_string(max_iterations_) + " iterations at their rate";
         return true;
       }
     }
@@ -357,7 +365,8 @@ protected:
 typedef std::function<std::unique_ptr<Direct_solver>()> Direct_solver_factory;
 
 /// The largest relative residual |b - A x| / |b| over the columns (A: the lower triangle is read)
-inline double relative_residual(const Eigen::SparseMatrix<double>& A, const Eigen::MatrixXd& b, const Eigen::MatrixXd& x)
+inline double relative_residual(const Eigen::SparseMatrix<double>& A, const Eigen::MatrixXd& b,
+                                const Eigen::MatrixXd& x)
 {
   const Eigen::MatrixXd r = b - A.selfadjointView<Eigen::Lower>() * x;
   double largest = 0;

@@ -30,7 +30,8 @@ namespace internal {
 /// cannot overflow), and with several components the unknowns of row i are in units of unknown_scale[i]
 /// (empty: none).
 inline void fill_step_matrix(Value_array& A, const Free_block& block, const Value_array& M, const Value_array& L,
-                             const std::vector<double>& tau, const std::vector<double>& omega, double factor, double sys,
+                             const std::vector<double>& tau, const std::vector<double>& omega, double factor,
+                                 double sys,
                              const std::vector<double>& unknown_scale, const std::vector<double>& mass_weight)
 {
   const Sparse_structure& S = block.structure();
@@ -61,7 +62,8 @@ inline void fill_step_matrix(Value_array& A, const Free_block& block, const Valu
 /// displacement.
 inline void step_residual(const Sparse_structure& pattern, const Value_array& M, const Value_array& L,
                           const std::vector<double>& tau, const std::vector<double>& omega, const Control_matrix& X,
-                          const Control_matrix& X0, double f, Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, Eigen::RowMajor>& R,
+                          const Control_matrix& X0, double f, Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic,
+                              Eigen::RowMajor>& R,
                           const std::vector<double>& mass_weight = std::vector<double>())
 {
   const int* outer = pattern.outerIndexPtr();
@@ -96,7 +98,8 @@ inline Eigen::VectorXd lumped_mass(const Sparse_structure& pattern, const Value_
   Eigen::VectorXd d = Eigen::VectorXd::Zero(pattern.rows());
   for(Eigen::Index j = 0; j < pattern.cols(); ++j)
     for(int p = outer[j]; p < outer[j + 1]; ++p)
-      d[inner[p]] += M[std::size_t(p)] * (mass_weight.empty() ? 1.0 : mass_weight[std::size_t(inner[p])] * mass_weight[std::size_t(j)]);
+      d[inner[p]] += M[std::size_t(p)] *
+                     (mass_weight.empty() ? 1.0 : mass_weight[std::size_t(inner[p])] * mass_weight[std::size_t(j)]);
   return d;
 }
 

@@ -55,7 +55,8 @@ struct Vertex_curvature_value
 /// Curvatures of the first `vertices` vertices of `topo` (the real ones; X holds the extended
 /// geometry, 3 columns) from the quadrature points of the faces of `cache`. Vertices on no face get zeros.
 inline std::vector<Vertex_curvature_value>
-averaged_vertex_curvatures(const Triangle_topology& topo, const Patch_cache& cache, std::size_t vertices, const Control_matrix& X)
+averaged_vertex_curvatures(const Triangle_topology& topo, const Patch_cache& cache, std::size_t vertices,
+                           const Control_matrix& X)
 {
   std::vector<Eigen::Matrix3d> S(vertices, Eigen::Matrix3d::Zero());   // int xi_v S dA
   std::vector<double> W(vertices, 0.0);                              // int xi_v dA

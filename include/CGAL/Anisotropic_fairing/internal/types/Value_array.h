@@ -28,7 +28,10 @@ struct Unwritten_allocator : std::allocator<T>
   Unwritten_allocator() noexcept = default;
   template <typename U> Unwritten_allocator(const Unwritten_allocator<U>&) noexcept {}
   template <typename U> void construct(U* p) noexcept { ::new(static_cast<void*>(p)) U; }
-  template <typename U, typename... Args> void construct(U* p, Args&&... args) { ::new(static_cast<void*>(p)) U(std::forward<Args>(args)...); }
+  template <typename U, typename... Args> void construct(U* p, Args&&... args)
+  {
+    ::new(static_cast<void*>(p)) U(std::forward<Args>(args)...);
+  }
 };
 
 template <typename T, typename U>

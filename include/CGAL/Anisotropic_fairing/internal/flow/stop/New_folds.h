@@ -28,9 +28,11 @@ struct Fold_verdict
 inline std::optional<Fold_verdict> new_folds(std::size_t folds, std::size_t allowed, std::size_t unfolded_steps)
 {
   if(folds <= allowed) return std::nullopt;
-  const std::string counts = "the surface folded at " + std::to_string(folds) + " edges (the input at " + std::to_string(allowed) + ")";
+  const std::string counts =
+    "the surface folded at " + std::to_string(folds) + " edges (the input at " + std::to_string(allowed) + ")";
   if(unfolded_steps == 0) return Fold_verdict{ true, counts + " from the first step on, even with smaller time steps" };
-  return Fold_verdict{ false, counts + "; the run ends on the last surface without new folds (step " + std::to_string(unfolded_steps) + ")" };
+  return Fold_verdict{ false, counts + "; the run ends on the last surface without new folds (step " +
+                                std::to_string(unfolded_steps) + ")" };
 }
 
 } // namespace internal

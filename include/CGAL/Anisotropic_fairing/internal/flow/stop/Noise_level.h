@@ -32,7 +32,8 @@ public:
   /// What the step to a candidate at `candidate` (from `current`) does: RETAKE it shorter (the controller's
   /// factor is shortened), CUT it at `fraction` of its length, or GO on.
   enum class Candidate { GO, RETAKE, CUT };
-  static Candidate judge_candidate(Step_controller& control, double current, double candidate, double target, double& fraction)
+  static Candidate judge_candidate(Step_controller& control, double current, double candidate, double target,
+                                   double& fraction)
   {
     if(control.retake_for_noise_level(current, candidate, target)) return Candidate::RETAKE;
     if(!(candidate >= target)) return Candidate::GO;

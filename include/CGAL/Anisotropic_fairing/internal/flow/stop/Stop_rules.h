@@ -41,7 +41,8 @@ private:
 };
 
 // the noise level first: a step cut to end there ends the run whatever else holds
-typedef Ordered_stop_rules<Noise_level, Noise_removed, Held_by_bound, Cramped_flow, Paper_criteria, Steady_state> Stop_rules;
+typedef Ordered_stop_rules<Noise_level, Noise_removed, Held_by_bound, Cramped_flow, Paper_criteria, Steady_state>
+  Stop_rules;
 
 } // namespace internal
 } // namespace Anisotropic_fairing

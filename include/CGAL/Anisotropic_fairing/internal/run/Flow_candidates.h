@@ -1,0 +1,125 @@
+// Copyright (c) 2026 Anisotropic_fairing developers.
+// SPDX-License-Identifier: GPL-3.0-or-later
+//
+// The flows the default run compares, as a list of named entries: each says which flow it runs and at which
+// order, how its risk estimate is made, and holds its result and estimate once run. The selection
+// (Smoother_selection.h) reads the list; the run (Fairing_core.h) counts its planned runs from it.
+
+#ifndef CGAL_ANISOTROPIC_FAIRING_INTERNAL_RUN_FLOW_CANDIDATES_H
+#define CGAL_ANISOTROPIC_FAIRING_INTERNAL_RUN_FLOW_CANDIDATES_H
+
+#include <CGAL/Anisotropic_fairing/Fairing_report.h>
+#include <CGAL/Anisotropic_fairing/internal/types/Control_matrix.h>
+
+#include <cmath>
+#include <cstddef>
+#include <string>
+#include <vector>
+
+namespace CGAL {
+namespace Anisotropic_fairing {
+namespace internal {
+
+/// The tensor of a candidate's flow: the run's own (the tensor given or chosen), or one of the package's.
+enum class Candidate_tensor { RUN_TENSOR, ISOTROPIC, UNIFORM };
+
+/// Which flow a run makes: its tensor and its order (2: diffusion, 4: the fourth-order flow).
+struct Flow_settings
+{
+  Candidate_tensor tensor = Candidate_tensor::RUN_TENSOR;
+  int order = 2;
+};
+
+/// What one run gives back, in the run's numbering.
+struct Flow_outcome
+{
+  Fairing_report report;
+  Control_matrix Y;       // the written positions (and attribute values)
+  Control_matrix Z;       // its control points, when asked for (empty otherwise)
+  Control_matrix probe;   // where the probe carried along ended, written as Y is (empty: none rode along)
+};
+
+/// One run the default run asks for: which flow, from where, for how long, and what rides along.
+struct Flow_request
+{
+  Flow_settings flow;
+  std::string name;                         // the run's name, which the user's callback sees
+  const Control_matrix& start;
+  bool may_be_kept = true;                  // its control points are made too (a probe run's are not)
+  std::size_t fixed_steps = 0;              // > 0: exactly that many steps, no stopping rule
+  const Control_matrix* probe_start = nullptr;   // a probed start carried along (Ride_along_probe.h)
+  bool make_probe = false;                  // carried along from one made of the run's prefiltered surface
+};
+
+/// Whether a run ended where its own stopping rule wanted it: at the noise level.
+inline bool ended_at_noise_level(const Fairing_report& r)
+{
+  return r.succeeded() && (r.stop_reason == Stop_reason::NOISE_LEVEL || r.stop_reason == Stop_reason::NOISE_REMOVED ||
+                           r.stop_reason == Stop_reason::DEVIATION_BOUND);
+}
+
+/// Whether a run is judged: it ran to its end, whatever stopped it, but the user's callback.
+inline bool judged_run(const Fairing_report& r) { return r.succeeded() && r.stop_reason != Stop_reason::CALLBACK; }
+
+/// One flow of the comparison: its names, its settings, how its estimate is made, and once run its result
+/// and its estimate.
+struct Flow_candidate
+{
+  const char* name;    // in the report's selected_tensor and in "kept the ... result"
+  const char* label;   // in the list of estimates
+  const char* flow;    // its runs' name, which the callback sees
+  Flow_settings settings;
+  // its operator depends on the connectivity alone, so the probe carried along its run is linear in the
+  // data and gives its estimate; the others' estimates need a run of their own on the probed input
+  bool carried_is_estimate = false;
+  // without the first run's normals, the estimate measures along this candidate's result
+  bool gives_normals = false;
+  bool made = false;   // its run is made (the run's own flow is, before the selection)
+  Flow_outcome result;
+  double risk = std::nan(""), carried = std::nan("");   // the estimate, and the one its probe carried along gave
+
+  /// Compared: judged, and at the noise level unless none of the candidates reached it.
+  bool compared(bool any_at_noise) const
+  {
+    return judged_run(result.report) && (ended_at_noise_level(result.report) || !any_at_noise);
+  }
+};
+
+typedef std::vector<Flow_candidate> Candidate_list;
+
+/// The default run's candidates, in the order they run: the run's own (anisotropic) flow at `order`, the
+/// isotropic flow and the uniform fourth-order flow.
+inline Candidate_list default_candidates(int order)
+{
+  Candidate_list list(3);
+  list[0] = Flow_candidate{ "anisotropic", "anisotropic", "anisotropic flow", { Candidate_tensor::RUN_TENSOR, order } };
+  list[1] = Flow_candidate{ "isotropic", "isotropic", "isotropic flow", { Candidate_tensor::ISOTROPIC, 2 } };
+  list[1].gives_normals = true;
+  list[2] = Flow_candidate{ "uniform", "uniform fourth-order", "uniform fourth-order flow",
+                            { Candidate_tensor::UNIFORM, 4 } };
+  list[2].carried_is_estimate = true;
+  return list;
+}
+
+/// The most runs a comparison of `list` makes: each candidate's own, and its run on the probed input unless
+/// its carried probe is its estimate; under a deviation bound (`bounded`) no probe rides along.
+inline std::size_t planned_runs(const Candidate_list& list, bool bounded)
+{
+  std::size_t runs = 0;
+  for(const Flow_candidate& c : list) runs += c.carried_is_estimate && !bounded ? 1 : 2;
+  return runs;
+}
+
+/// The candidate whose run is made before the selection: the run's own flow (list.size() if none).
+inline std::size_t made_candidate(const Candidate_list& list)
+{
+  for(std::size_t k = 0; k < list.size(); ++k)
+    if(list[k].made) return k;
+  return list.size();
+}
+
+} // namespace internal
+} // namespace Anisotropic_fairing
+} // namespace CGAL
+
+#endif // CGAL_ANISOTROPIC_FAIRING_INTERNAL_RUN_FLOW_CANDIDATES_H

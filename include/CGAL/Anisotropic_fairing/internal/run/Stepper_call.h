@@ -1,0 +1,144 @@
+// Copyright (c) 2026 Anisotropic_fairing developers.
+// SPDX-License-Identifier: GPL-3.0-or-later
+//
+// One call of the time stepper (flow/Time_stepper.h) on the run's mesh: what every flow of a call of
+// anisotropic_fairing() shares is one context value, what a flow gives back one return value.
+
+#ifndef CGAL_ANISOTROPIC_FAIRING_INTERNAL_RUN_STEPPER_CALL_H
+#define CGAL_ANISOTROPIC_FAIRING_INTERNAL_RUN_STEPPER_CALL_H
+
+#include <CGAL/Anisotropic_fairing/Fairing_report.h>
+#include <CGAL/Anisotropic_fairing/Fairing_settings.h>
+#include <CGAL/Anisotropic_fairing/Isotropic_diffusion_tensor.h>
+#include <CGAL/Anisotropic_fairing/Uniform_diffusion_tensor.h>
+#include <CGAL/Anisotropic_fairing/internal/flow/Tensor_hooks.h>
+#include <CGAL/Anisotropic_fairing/internal/flow/Time_stepper.h>
+#include <CGAL/Anisotropic_fairing/internal/mesh/Locality_ordering.h>
+#include <CGAL/Anisotropic_fairing/internal/mesh/Mesh_components.h>
+
+#include <CGAL/Real_timer.h>
+
+#include <functional>
+#include <type_traits>
+#include <variant>
+#include <vector>
+
+namespace CGAL {
+namespace Anisotropic_fairing {
+namespace internal {
+
+/// The mean edge length of each connected component (`edge[c]`) and of the whole mesh (returned), over
+/// the real faces' edges (an interior edge is seen from both sides, a border edge from one).
+inline double component_mean_edges(const Triangle_topology& topo, std::size_t real_faces,
+                                   const Mesh_components& components, const Control_matrix& X,
+                                   std::vector<double>& edge)
+{
+  edge.assign(components.count, 0.0);
+  std::vector<double> counted(components.count, 0.0);
+  for(std::size_t f = 0; f < real_faces; ++f)
+    for(int k = 0; k < 3; ++k)
+    {
+      const auto& t = topo.face(f);
+      edge[std::size_t(components.of_face[f])] += (X.row(t[k]).head(3) - X.row(t[(k + 1) % 3]).head(3)).norm();
+      counted[std::size_t(components.of_face[f])] += 1;
+    }
+  double sum = 0, count = 0;
+  for(std::size_t c = 0; c < components.count; ++c)
+  {
+    sum += edge[c];
+    count += counted[c];
+    edge[c] /= counted[c];
+  }
+  return count > 0 ? sum / count : 0.0;
+}
+
+/// The flow whose time step follows the mesh's density with automatic parameters (Local_time_scale.h):
+/// the isotropic or the uniform one; null for any other tensor.
+template <typename Tensor>
+const char* density_scaled_flow(const Tensor&)
+{
+  return std::is_same<Tensor, Isotropic_diffusion_tensor>::value ? "isotropic"
+         : std::is_same<Tensor, Uniform_diffusion_tensor>::value ? "uniform" : nullptr;
+}
+template <typename... Tensors>
+const char* density_scaled_flow(const std::variant<Tensors...>& t)
+{
+  return std::visit([](const auto& held) { return density_scaled_flow(held); }, t);
+}
+
+/// What every flow of one call shares: the element's cache and the mesh in the solver's numbering, its
+/// units per connected component, the attribute mode and the rows the flows hold.
+template <typename Cache>
+struct Flow_context
+{
+  const Cache& cache;
+  const Locality_ordering& ordering;
+  const Mesh_components& components;
+  const std::vector<double>& component_edge;
+  double mean_edge;
+  Attribute_mode mode;
+  const std::vector<bool>& constrained;
+  const std::vector<bool>& border;
+};
+
+/// The risk estimate's probe carried along a flow (Ride_along_probe.h): from `start`, or from the start
+/// `make` makes of the surface the flow prefilters before its first step; neither: no probe.
+struct Probe_plan
+{
+  const Control_matrix* start = nullptr;
+  std::function<Control_matrix(const Control_matrix&)> make;
+  bool carried() const { return start != nullptr || bool(make); }
+};
+
+/// What one call of the stepper gives back.
+struct Stepper_outcome
+{
+  Fairing_report report;
+  Control_matrix Y;            // the control points (and attribute values) the flow ends at
+  Control_matrix probe;        // where the probe ended (empty: none rode along)
+  double limit_weight = 1;     // how far toward their limit points the written positions go
+  double setup_seconds = 0;    // spent before the stepper's run
+};
+
+/// One flow from `start` with `tensor` and `settings`; the user's `callback` sees every step.
+template <typename Cache, typename Tensor, typename Callback>
+Stepper_outcome run_stepper(const Flow_context<Cache>& context, const Tensor& tensor, const Stepper_settings& settings,
+                            const Control_matrix& start, const Probe_plan& probe, Callback& callback)
+{
+  CGAL::Real_timer clock;
+  clock.start();
+  // with automatic parameters, only the isotropic and the uniform flow's time step follows the mesh's density
+  Stepper_settings s = settings;
+  s.local_time_scale = settings.local_time_scale && density_scaled_flow(tensor) != nullptr;
+  Assembly_context numbering;
+  numbering.original_vertex = &context.ordering.old_of_new_vertex;
+  numbering.original_face = &context.ordering.old_of_new_face;
+  numbering.border = &context.border;
+  Time_stepper<Cache> stepper(context.cache, std::size_t(start.rows()), context.constrained, context.ordering.layer,
+                              context.components, context.component_edge, context.mean_edge, numbering);
+  const Tangential_motion_filter filter(context.ordering.layer);
+  const bool normal_motion = wants_normal_motion(tensor) && context.mode != Attribute_mode::ATTRIBUTES_ONLY;
+  if(normal_motion) stepper.set_tangential_filter(&filter);
+  const int metric_columns = context.mode == Attribute_mode::COUPLED ? int(start.cols()) : 3;
+  Stepper_outcome out;
+  out.Y = start;
+  out.setup_seconds = clock.time();
+  if(context.mode == Attribute_mode::ATTRIBUTES_ONLY)
+  {
+    out.report = stepper.run_on_fixed_surface(out.Y, tensor, s, callback);
+    return out;
+  }
+  if(probe.start) stepper.set_probe(*probe.start);
+  if(probe.make) stepper.set_probe_maker(probe.make);
+  out.report = stepper.run(out.Y, metric_columns, tensor, s, callback);
+  out.report.normal_motion_only = normal_motion;
+  out.limit_weight = stepper.limit_weight();
+  if(probe.carried()) out.probe = stepper.probe_result();
+  return out;
+}
+
+} // namespace internal
+} // namespace Anisotropic_fairing
+} // namespace CGAL
+
+#endif // CGAL_ANISOTROPIC_FAIRING_INTERNAL_RUN_STEPPER_CALL_H
