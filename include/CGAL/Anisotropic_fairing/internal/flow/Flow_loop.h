@@ -97,7 +97,6 @@ private:
     return r;
   }
 
-
   // the units, the input's operator, the criteria's measures and the soundness and noise level of the start
   bool start()
   {
@@ -472,17 +471,9 @@ private:
     const double previous_discrepancy = discrepancy_;
     if(noise_stop_) discrepancy_ = candidate_discrepancy_;
     st.noise_displacement = discrepancy_;
-    const Step_progress progress{ st,
-                                  st.time_step / time_unit_,
-                                  fixed_ ? st.energy : st.H_integral,
-                                  max_relative_,
-                                  moved_relative_,
-                                  previous_discrepancy,
-                                  discrepancy_,
-                                  target_,
-                                  cut_at,
-                                  control_,
-                                  last_why_ };
+    const double value = fixed_ ? st.energy : st.H_integral;
+    const Step_progress progress{ st, st.time_step / time_unit_, value, max_relative_, moved_relative_,
+                                  previous_discrepancy, discrepancy_, target_, cut_at, control_, last_why_ };
     const std::optional<Stop> stop = rules_->after_step(progress);
     if(stop && stop->at >= 0) end_within_step(st, *stop);
     if(!fixed_) report_.noise_displacement = st.noise_displacement;

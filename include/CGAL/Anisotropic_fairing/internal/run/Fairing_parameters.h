@@ -22,6 +22,7 @@
 #include <optional>
 #include <string>
 #include <type_traits>
+#include <variant>
 
 namespace CGAL {
 namespace Anisotropic_fairing {
@@ -46,12 +47,15 @@ inline Direct_solver_factory direct_solver_of(CGAL::internal_np::Param_not_found
 template <typename SolverTraits>
 Direct_solver_factory direct_solver_of(const SolverTraits& traits) { return user_direct_solver(traits); }
 
-/// The tensors a `Package_diffusion_tensor` holds (and that value itself).
+/// Whether T is one of a std::variant's alternatives.
+template <typename T, typename Variant> struct is_alternative_of : std::false_type {};
+template <typename T, typename... A>
+struct is_alternative_of<T, std::variant<A...>> : std::disjunction<std::is_same<T, A>...> {};
+
+/// The tensors a `Package_diffusion_tensor` holds (and that value itself): a tensor added to the variant is one.
 template <typename T>
 struct is_package_tensor
-  : std::integral_constant<bool, std::is_same<T, Anisotropic_diffusion_tensor>::value ||
-                                 std::is_same<T, Isotropic_diffusion_tensor>::value ||
-                                 std::is_same<T, Uniform_diffusion_tensor>::value ||
+  : std::integral_constant<bool, is_alternative_of<T, Package_diffusion_tensor>::value ||
                                  std::is_same<T, Package_diffusion_tensor>::value>
 {};
 
