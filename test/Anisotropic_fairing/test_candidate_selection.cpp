@@ -21,6 +21,7 @@
 
 #include "test_support/check.h"
 #include "test_support/mesh_generators.h"
+#include "test_support/unit_sphere.h"
 
 #include <cmath>
 #include <random>
@@ -35,13 +36,7 @@ namespace AFI = CGAL::Anisotropic_fairing::internal;
 
 namespace {
 
-// the point moved a fraction `w` of the way onto the unit sphere
-AFI::Control_matrix toward_sphere(const AFI::Control_matrix& Y, double w)
-{
-  AFI::Control_matrix Z = Y;
-  for(Eigen::Index i = 0; i < Y.rows(); ++i) Z.row(i) = Y.row(i) + w * (Y.row(i) / Y.row(i).norm() - Y.row(i));
-  return Z;
-}
+using AF_test::toward_sphere;
 
 struct Stand_in_flows
 {
@@ -82,19 +77,22 @@ struct Selection
   std::string choices;
 };
 
-// `normals` not empty: known before the first run, which carries its probe along them
+// `surface` not empty: the estimate's surface, known before the first run, which carries its probe along its
+// normals.
 Selection select(Stand_in_flows& flows, const AFI::Ghost_layer& layer, const AFI::Control_matrix& input,
-                 const std::vector<double>& sigmas, const AFI::Control_matrix& normals = AFI::Control_matrix())
+                 const std::vector<double>& sigmas, const AFI::Control_matrix& surface = AFI::Control_matrix())
 {
   AFI::Candidate_list candidates = AFI::default_candidates(2);
   AFI::Control_matrix probe;
-  if(normals.size() > 0) probe = AFI::probed_input(input, normals, sigmas, AFI::risk_probe_values(std::size_t(input.rows())));
+  if(surface.size() > 0)
+    probe = AFI::probed_input(input, AFI::vertex_normals(*layer.topology, layer.real_faces, surface), sigmas,
+                              AFI::risk_probe_values(std::size_t(input.rows())));
   AFI::Flow_request first{ candidates[0].settings, "", input };
-  first.probe_start = normals.size() > 0 ? &probe : nullptr;
+  first.probe_start = surface.size() > 0 ? &probe : nullptr;
   candidates[0].result = flows.run(first);
   candidates[0].made = true;
   AFI::Smoother_choice choice =
-    AFI::select_smoother(std::move(candidates), AFI::Selection_context{ layer, input, sigmas, normals }, flows);
+    AFI::select_smoother(std::move(candidates), AFI::Selection_context{ layer, input, sigmas, surface }, flows);
   Selection s;
   s.report = choice.kept.result.report;
   s.X = choice.kept.result.Y;
@@ -177,16 +175,14 @@ int main()
     AF_CHECK(chosen.choices.find("anisotropic not estimated") == std::string::npos, "and its estimate is shown: " + chosen.choices);
   }
 
-  // the normals known first: the isotropic stand-in (the truth, its estimate about 0) and the anisotropic
-  // one (a tenth of the way: a hundredth of the noise's square left and a divergence of 0.9 per vertex,
-  // about 0.8) both carry their probes, below the uniform one's 1; the isotropic, the lower, is run again
+  // the estimate's surface known first: the isotropic stand-in (the truth, its estimate about 0) and the
+  // anisotropic one (a tenth of the way: a hundredth of the noise's square left and a divergence of 0.9 per
+  // vertex, about 0.8) both carry their probes, below the uniform one's 1; the isotropic, the lower, is run again
   // first, and the anisotropic is then above its estimate and is not
   {
     Stand_in_flows flows{AF::Stop_reason::NOISE_LEVEL, 0.1, 1.0, {}};
     flows.all_ride = true;
-    AFI::Control_matrix normals = input;
-    for(Eigen::Index i = 0; i < normals.rows(); ++i) normals.row(i).normalize();
-    const Selection chosen = select(flows, layer, input, sigmas, normals);
+    const Selection chosen = select(flows, layer, input, sigmas, toward_sphere(input, 1.0));
     std::printf("normals known first: kept the %s result; runs:", chosen.report.selected_tensor.c_str());
     for(const std::string& c : flows.calls) std::printf(" [%s]", c.c_str());
     std::printf("\n  choices%s\n", chosen.choices.c_str());

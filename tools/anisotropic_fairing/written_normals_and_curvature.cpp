@@ -68,7 +68,9 @@ bool writes_exact_limit_normals(const Options& o, const Input_info& info, bool f
 void write_normals_and_curvature(const Options& o, const Input_info& info, bool fair_geometry,
                                  const std::vector<Point>& control_points, Mesh& mesh, Run_record& r)
 {
-  const bool exact_limit_normals = writes_exact_limit_normals(o, info, fair_geometry);
+  // a kept normal-field result writes its vertices, which lie on no limit surface: its normals are the mesh's
+  const bool exact_limit_normals =
+    writes_exact_limit_normals(o, info, fair_geometry) && r.report.selected_tensor != "normal field";
   if(o.curvature || exact_limit_normals) write_limit_quantities(o, exact_limit_normals, control_points, mesh, r);
   if(!info.has_normals) return;
   Normal_map normals = mesh.property_map<Vertex_index, Vector>("v:normal").first;

@@ -52,7 +52,10 @@ enum class Stop_reason {
   NOISE_REMOVED,
   /// the noise criterion with a maximum deviation (`maximum_deviation`): the written surface's displacement off the
   /// input grew by less than 1% in a step, short of the estimated noise: the bound holds it there
-  DEVIATION_BOUND
+  DEVIATION_BOUND,
+  /// the normal-field candidate (not yet compared by the default run; measured by `bench/bench_estimate_soundness`):
+  /// the pass whose estimated error of the face normals is the lowest (the estimate stopped falling)
+  LOWEST_ESTIMATE
 };
 
 /// \ingroup PkgAnisotropicFairingFunctions
@@ -71,6 +74,7 @@ inline const char* to_string(Stop_reason r)
     case Stop_reason::NOISE_LEVEL: return "noise_level";
     case Stop_reason::NOISE_REMOVED: return "noise_removed";
     case Stop_reason::DEVIATION_BOUND: return "deviation_bound";
+    case Stop_reason::LOWEST_ESTIMATE: return "lowest_estimate";
     case Stop_reason::STEP_REJECTED: return "step_rejected";
     case Stop_reason::FAILURE: return "failure";
   }

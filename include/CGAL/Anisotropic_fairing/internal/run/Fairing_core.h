@@ -16,6 +16,7 @@
 #include <CGAL/Anisotropic_fairing/internal/run/Automatic_parameters.h>
 #include <CGAL/Anisotropic_fairing/internal/run/Fairing_parameters.h>
 #include <CGAL/Anisotropic_fairing/internal/run/Flow_candidates.h>
+#include <CGAL/Anisotropic_fairing/internal/run/Normal_field_run.h>
 #include <CGAL/Anisotropic_fairing/internal/run/Smoother_selection.h>
 #include <CGAL/Anisotropic_fairing/internal/run/Stepper_call.h>
 #include <CGAL/Anisotropic_fairing/internal/flow/Boundary_constraints.h>
@@ -104,6 +105,16 @@ public:
       fair_with(cache, false);
     }
     return finish();
+  }
+
+  /// Benchmarks: every candidate of the default run once estimated, with the face normals' error estimated
+  /// beside (rows in the run's numbering: row i is the caller's vertex old_of_new[i]); with `normal_field`,
+  /// the normal-field candidate compared too (Normal_field_run.h).
+  void observe_candidates(std::function<void(const Candidate_list&, const std::vector<int>& old_of_new)> f,
+                          bool normal_field = false)
+  {
+    observer_ = std::move(f);
+    normal_field_ = normal_field;
   }
 
 private:
@@ -256,7 +267,7 @@ private:
   {
     input_ = X_;
     steps_left_ = s_.maximum_steps;
-    Candidate_list candidates = default_candidates(s_.order);
+    Candidate_list candidates = default_candidates(s_.order, normal_field_);
     planned_runs_ = (select_tensor_ ? planned_runs(candidates, bounded()) : 1) + (strength_run() ? 1 : 0);
     Element_runner<Cache> runner(*this, cache, loop);
     if(!select_tensor_)
@@ -283,8 +294,11 @@ private:
         own.made = true;
         break;
       }
-    return select_smoother(std::move(candidates), Selection_context{ layer_, input_, noise_sigma_, estimate_normals_ },
-                           runner);
+    Selection_context context{ layer_, input_, noise_sigma_, estimate_surface_ };
+    context.measure_normal_error = bool(observer_);
+    if(observer_)
+      context.observe = [this](const Candidate_list& c) { observer_(c, ordering_.old_of_new_vertex); };
+    return select_smoother(std::move(candidates), context, runner);
   }
 
   void keep(Flow_outcome&& outcome)
@@ -304,11 +318,14 @@ private:
   {
     const double strength = given_.settings.strength;
     char text[160];
-    if(!report_.succeeded() || report_.stop_reason == Stop_reason::CALLBACK || steps_left_ == 0)
+    const bool field = kept.settings.stage == Candidate_stage::NORMAL_FIELD;
+    if(!report_.succeeded() || report_.stop_reason == Stop_reason::CALLBACK || steps_left_ == 0 || field)
     {
       std::snprintf(text, sizeof text, "; strength %.6g not applied (%s)", strength,
                     !report_.succeeded() ? "no flow succeeded"
-                    : steps_left_ == 0   ? "the step budget is spent" : "the callback ended the run");
+                    : steps_left_ == 0   ? "the step budget is spent"
+                    : field              ? "the normal field kept stops at its lowest estimated error, not at the noise"
+                                         : "the callback ended the run");
       choices_ += text;
       return;
     }
@@ -349,6 +366,7 @@ private:
   template <typename Cache>
   Flow_outcome run_flow(const Cache& cache, bool loop, const Flow_request& request)
   {
+    if(request.flow.stage == Candidate_stage::NORMAL_FIELD) return run_normal_field_candidate(request);
     Probe_plan probe;
     probe.start = request.probe_start;
     if(request.make_probe) probe.make = [this](const Control_matrix& surface) { return this->make_probe(surface); };
@@ -364,6 +382,20 @@ private:
     setup_seconds_ += o.setup_seconds;
     steps_left_ -= (std::min)(steps_left_, o.report.steps.size());
     return written_outcome(std::move(o), request, loop);
+  }
+
+  // The normal field's passes (Normal_field_run.h): it writes its vertices, which are their own control points
+  Flow_outcome run_normal_field_candidate(const Flow_request& request)
+  {
+    const std::size_t fixed = request.fixed_steps;
+    begin_run(request.name, 2, fixed);
+    auto tagged = [this](const Fairing_step& step) { return this->tagged_callback(step); };
+    const Normal_field_context context{ layer_, written_, components_.of_face, component_edge_, steps_left_, tagged };
+    Flow_outcome out = run_normal_field(request, context);
+    steps_left_ -= (std::min)(steps_left_, out.report.steps.size());
+    if(in_.wants_control && request.may_be_kept) out.Z = out.Y;
+    bound_written(out.Y, request.start, out.report);
+    return out;
   }
 
   // What a run writes: with the Loop element its limit points, `limit_weight` of the way (and its probe's,
@@ -428,8 +460,9 @@ private:
   // first run makes before its first step, so that every candidate's probe can ride along from the start
   Control_matrix make_probe(const Control_matrix& surface)
   {
-    estimate_normals_ = vertex_normals(*layer_.topology, layer_.real_faces, surface);
-    made_probe_ = probed_input(input_, estimate_normals_, noise_sigma_, risk_probe_values(n_));
+    estimate_surface_ = surface;
+    made_probe_ = probed_input(input_, vertex_normals(*layer_.topology, layer_.real_faces, surface), noise_sigma_,
+                               risk_probe_values(n_));
     return made_probe_;
   }
 
@@ -505,7 +538,7 @@ private:
   CGAL::Real_timer setup_;   // from before the numbering to the element's cache
   const Locality_ordering ordering_;
   const Ghost_layer& layer_;
-  Control_matrix X_, input_, control_points_, estimate_normals_, made_probe_;
+  Control_matrix X_, input_, control_points_, estimate_surface_, made_probe_;
   std::vector<bool> constrained_, border_, isolated_, written_;
   Mesh_components components_;
   std::vector<double> component_edge_, noise_sigma_;
@@ -518,6 +551,8 @@ private:
   double setup_seconds_ = 0;
   std::size_t boundary_held_ = 0, steps_left_ = 0, run_number_ = 0, planned_runs_ = 1;
   std::string run_name_;
+  std::function<void(const Candidate_list&, const std::vector<int>&)> observer_;
+  bool normal_field_ = false;
 };
 
 } // namespace internal

@@ -23,14 +23,20 @@ namespace internal {
 /// The tensor of a candidate's flow: the run's own (the tensor given or chosen), or one of the package's.
 enum class Candidate_tensor { RUN_TENSOR, ISOTROPIC, UNIFORM };
 
-/// Which flow a run makes: its tensor and its order (2: diffusion, 4: the fourth-order flow).
+/// How a candidate smooths: a flow of the surface, or its normal field filtered and the vertices fitted to it.
+enum class Candidate_stage { FLOW, NORMAL_FIELD };
+
+/// Which flow a run makes: its tensor and its order (2: diffusion, 4: the fourth-order flow), or the normal field.
 struct Flow_settings
 {
   Candidate_tensor tensor = Candidate_tensor::RUN_TENSOR;
   int order = 2;
+  Candidate_stage stage = Candidate_stage::FLOW;
 };
 
 /// What one run gives back, in the run's numbering.
+class Normal_error_estimate;
+
 struct Flow_outcome
 {
   Fairing_report report;
@@ -49,13 +55,16 @@ struct Flow_request
   std::size_t fixed_steps = 0;              // > 0: exactly that many steps, no stopping rule
   const Control_matrix* probe_start = nullptr;   // a probed start carried along (Ride_along_probe.h)
   bool make_probe = false;                  // carried along from one made of the run's prefiltered surface
+  const Normal_error_estimate* estimate = nullptr;   // the comparison's estimate, once known
 };
 
-/// Whether a run ended where its own stopping rule wanted it: at the noise level.
+/// Whether a run ended where its own stopping rule wanted it: at the noise level (the normal field: at its
+/// lowest estimate).
 inline bool ended_at_noise_level(const Fairing_report& r)
 {
-  return r.succeeded() && (r.stop_reason == Stop_reason::NOISE_LEVEL || r.stop_reason == Stop_reason::NOISE_REMOVED ||
-                           r.stop_reason == Stop_reason::DEVIATION_BOUND);
+  const Stop_reason s = r.stop_reason;
+  return r.succeeded() && (s == Stop_reason::NOISE_LEVEL || s == Stop_reason::NOISE_REMOVED ||
+                           s == Stop_reason::DEVIATION_BOUND || s == Stop_reason::LOWEST_ESTIMATE);
 }
 
 /// Whether a run is judged: it ran to its end, whatever stopped it, but the user's callback.
@@ -77,6 +86,8 @@ struct Flow_candidate
   bool made = false;   // its run is made (the run's own flow is, before the selection)
   Flow_outcome result;
   double risk = std::nan(""), carried = std::nan("");   // the estimate, and the one its probe carried along gave
+  // the face normals' error estimated beside (benchmarks: Normal_error_estimate.h), and carried along
+  double normal_error = std::nan(""), normal_carried = std::nan("");
 
   /// Compared: judged, and at the noise level unless none of the candidates reached it.
   bool compared(bool any_at_noise) const
@@ -88,25 +99,32 @@ struct Flow_candidate
 typedef std::vector<Flow_candidate> Candidate_list;
 
 /// The default run's candidates, in the order they run: the run's own (anisotropic) flow at `order`, the
-/// isotropic flow and the uniform fourth-order flow.
-inline Candidate_list default_candidates(int order)
+/// isotropic flow and the uniform fourth-order flow; with `normal_field` (benchmarks), the normal field last
+/// (it needs the estimate to stop).
+inline Candidate_list default_candidates(int order, bool normal_field = false)
 {
-  Candidate_list list(3);
+  Candidate_list list(normal_field ? 4 : 3);
   list[0] = Flow_candidate{ "anisotropic", "anisotropic", "anisotropic flow", { Candidate_tensor::RUN_TENSOR, order } };
   list[1] = Flow_candidate{ "isotropic", "isotropic", "isotropic flow", { Candidate_tensor::ISOTROPIC, 2 } };
   list[1].gives_normals = true;
   list[2] = Flow_candidate{ "uniform", "uniform fourth-order", "uniform fourth-order flow",
                             { Candidate_tensor::UNIFORM, 4 } };
   list[2].carried_is_estimate = true;
+  if(!normal_field) return list;
+  list[3] = Flow_candidate{ "normal field", "normal field", "normal-field filter",
+                            { Candidate_tensor::RUN_TENSOR, 2, Candidate_stage::NORMAL_FIELD } };
+  list[3].carried_is_estimate = true;   // its probe takes the same passes, through the same nonlinear map
   return list;
 }
 
 /// The most runs a comparison of `list` makes: each candidate's own, and its run on the probed input unless
-/// its carried probe is its estimate; under a deviation bound (`bounded`) no probe rides along.
+/// its carried probe is its estimate; under a deviation bound (`bounded`) no probe rides along a flow (the
+/// normal field's probe is part of its run).
 inline std::size_t planned_runs(const Candidate_list& list, bool bounded)
 {
   std::size_t runs = 0;
-  for(const Flow_candidate& c : list) runs += c.carried_is_estimate && !bounded ? 1 : 2;
+  for(const Flow_candidate& c : list)
+    runs += c.carried_is_estimate && (!bounded || c.settings.stage == Candidate_stage::NORMAL_FIELD) ? 1 : 2;
   return runs;
 }
 

@@ -15,10 +15,13 @@
 #include <CGAL/Anisotropic_fairing/Fairing_report.h>
 #include <CGAL/Anisotropic_fairing/internal/mesh/Ghost_layer.h>
 #include <CGAL/Anisotropic_fairing/internal/run/Flow_candidates.h>
+#include <CGAL/Anisotropic_fairing/internal/run/Normal_error_estimate.h>
 #include <CGAL/Anisotropic_fairing/internal/run/Tensor_selection.h>
 
 #include <cmath>
 #include <cstdio>
+#include <functional>
+#include <memory>
 #include <optional>
 #include <string>
 #include <tuple>
@@ -35,7 +38,11 @@ struct Selection_context
   const Ghost_layer& layer;
   const Control_matrix& input;          // the start of every candidate
   const std::vector<double>& sigma;     // the noise's deviation at each vertex (0: none to estimate)
-  const Control_matrix& normals;        // those the estimate measures along, made by the first run (empty: none)
+  const Control_matrix& surface;        // the surface the estimate measures on, made by the first run (empty: none)
+  // benchmarks: the face normals' error estimated beside the choice (Normal_error_estimate.h), and what sees
+  // the candidates once estimated
+  bool measure_normal_error = false;
+  std::function<void(const Candidate_list&)> observe = nullptr;
 };
 
 /// What the comparison gives back: the candidate kept, whose report's selected_tensor names it, and what
@@ -46,17 +53,17 @@ struct Smoother_choice
   std::string choices;
 };
 
-/// Where the estimate measures: the normals of the input's prefiltered surface (`given`), else of the
-/// result of the candidate that gives them, else of the first sound result, else of the input.
-inline Control_matrix estimate_normals(const Candidate_list& c, const Selection_context& context)
+/// Where the estimate measures (its normals and stiffness): the input's prefiltered surface (`given`), else
+/// the result of the candidate that gives it, else the first sound result, else the input.
+inline const Control_matrix& estimate_surface(const Candidate_list& c, const Selection_context& context)
 {
+  if(context.surface.size() > 0) return context.surface;
   const Flow_candidate* base = nullptr;
   for(const Flow_candidate& x : c)
     if(x.made && x.gives_normals && x.result.report.succeeded()) base = &x;
   for(const Flow_candidate& x : c)
     if(!base && x.made && x.result.report.succeeded()) base = &x;
-  const Ghost_layer& layer = context.layer;
-  return vertex_normals(*layer.topology, layer.real_faces, base ? base->result.Y : context.input);
+  return base ? base->result.Y : context.input;
 }
 
 /// Why the run's own result is kept with nothing compared (empty when its failed run says why itself), or
@@ -95,7 +102,8 @@ inline double risk_of(const Control_matrix& input, const Control_matrix& Y, cons
   return risk;
 }
 
-/// What the estimates read: the input, its probed copy, the normals, the noise and the probe's values.
+/// What the estimates read: the input, its probed copy, the normals, the noise and the probe's values; and
+/// the estimate of the face normals' error measured beside the choice (benchmarks), or null.
 struct Estimate_context
 {
   const Control_matrix& input;
@@ -103,9 +111,14 @@ struct Estimate_context
   const Control_matrix& normals;
   const std::vector<double>& sigma;
   const std::vector<double>& b;
+  const Normal_error_estimate* normal_error;
   double risk_of(const Control_matrix& Y, const Control_matrix& Yp) const
   {
     return internal::risk_of(input, Y, Yp, normals, sigma, b);
+  }
+  double normal_error_of(const Control_matrix& Y, const Control_matrix& Yp) const
+  {
+    return normal_error ? normal_error->relative(normal_error->terms(Y, Yp)) : std::nan("");
   }
 };
 
@@ -135,7 +148,7 @@ inline double lowest_estimate_like(const Candidate_list& c, const Flow_candidate
 /// The estimate of candidate `x` by a run of its own on the probed input (NaN when it cannot be made); one
 /// that ended short of the noise level has its probe take exactly its steps.
 template <typename Runner>
-double estimate_by_probe_run(const Flow_candidate& x, const Estimate_context& e, Runner& runner)
+double estimate_by_probe_run(Flow_candidate& x, const Estimate_context& e, Runner& runner)
 {
   const bool at_noise = ended_at_noise_level(x.result.report);
   const std::size_t replay = at_noise ? 0 : x.result.report.steps.size();
@@ -148,6 +161,7 @@ double estimate_by_probe_run(const Flow_candidate& x, const Estimate_context& e,
   if(!rp.succeeded() || (rp.stop_reason == Stop_reason::MAXIMUM_STEPS && runner.steps_left() == 0 && replay == 0))
     return std::nan("");   // cut short by the budget
   if(replay > 0 && rp.steps.size() != replay) return std::nan("");   // the probe could not take the same steps
+  x.normal_error = e.normal_error_of(x.result.Y, probe.Y);
   return e.risk_of(x.result.Y, probe.Y);
 }
 
@@ -158,8 +172,12 @@ void estimate_risks(Candidate_list& c, const Estimate_context& e, Runner& runner
 {
   for(Flow_candidate& x : c)
   {
-    if(x.compared(any_at_noise) && x.result.probe.size() > 0) x.carried = e.risk_of(x.result.Y, x.result.probe);
-    if(x.carried_is_estimate) x.risk = x.carried;
+    if(x.compared(any_at_noise) && x.result.probe.size() > 0)
+    {
+      x.carried = e.risk_of(x.result.Y, x.result.probe);
+      x.normal_carried = e.normal_error_of(x.result.Y, x.result.probe);
+    }
+    if(x.carried_is_estimate) { x.risk = x.carried; x.normal_error = x.normal_carried; }
   }
   for(std::size_t k : estimate_order(c))
   {
@@ -222,26 +240,46 @@ inline std::string describe_choice(const Candidate_list& c, std::size_t kept, bo
          " (Stein's unbiased risk estimate per vertex, in units of the noise: " + list + ")";
 }
 
-/// Runs the candidates not made yet, in the list's order, from the input. A candidate's probe rides along
-/// once the normals are known (given, or made after the candidate that gives them); returns the normals.
-template <typename Runner>
-Control_matrix run_candidates(Candidate_list& c, const Selection_context& context, const std::vector<double>& b,
-                              Runner& runner)
+/// What the estimates are made with once the surface they measure on is known: its normals, the probed input
+/// and, when measured (`normal_error`), the estimate of the face normals' error (Normal_error_estimate.h).
+/// Built in place: that estimate refers to it.
+struct Estimate_basis
 {
-  Control_matrix N = context.normals;
-  Control_matrix probed = N.size() > 0 ? probed_input(context.input, N, context.sigma, b) : Control_matrix();
+  bool normal_error = false;
+  Control_matrix normals, probed;
+  std::unique_ptr<Normal_error_estimate> estimate;
+
+  bool made() const { return normals.size() > 0; }
+  void make(const Control_matrix& surface, const Selection_context& context, const std::vector<double>& b)
+  {
+    const Ghost_layer& layer = context.layer;
+    normals = vertex_normals(*layer.topology, layer.real_faces, surface);
+    probed = probed_input(context.input, normals, context.sigma, b);
+    if(normal_error)
+      estimate.reset(new Normal_error_estimate(context.input, normals,
+                                               stiffness_matrix(*layer.topology, layer.real_faces, surface),
+                                               context.sigma, b));
+  }
+};
+
+/// Runs the candidates not made yet, in the list's order, from the input. A candidate's probe rides along
+/// once the estimate's surface is known (given, or made after the candidate that gives it).
+template <typename Runner>
+void run_candidates(Candidate_list& c, const Selection_context& context, const std::vector<double>& b,
+                    Runner& runner, Estimate_basis& basis)
+{
+  if(context.surface.size() > 0) basis.make(context.surface, context, b);
   for(Flow_candidate& x : c)
   {
     if(x.made) continue;
     Flow_request request{ x.settings, x.flow, context.input };
-    request.probe_start = probed.size() > 0 ? &probed : nullptr;
+    request.probe_start = basis.made() ? &basis.probed : nullptr;
+    request.estimate = basis.estimate.get();
     x.result = runner.steps_left() > 0 ? runner.run(request) : run_not_made();
     x.made = true;
-    if(N.size() > 0 || !x.gives_normals) continue;
-    N = estimate_normals(c, context);
-    probed = probed_input(context.input, N, context.sigma, b);
+    if(!basis.made() && x.gives_normals) basis.make(estimate_surface(c, context), context, b);
   }
-  return N.size() > 0 ? N : estimate_normals(c, context);
+  if(!basis.made()) basis.make(estimate_surface(c, context), context, b);
 }
 
 /// The candidate kept when none has an estimate: the first that succeeded (the run's own when all failed),
@@ -267,12 +305,15 @@ Smoother_choice select_smoother(Candidate_list c, const Selection_context& conte
   if(why_not) return { std::move(c[own]), *why_not };
   std::string choices;
   const std::vector<double> b = risk_probe_values(std::size_t(context.input.rows()));
-  const Control_matrix N = run_candidates(c, context, b, runner);
-  const Control_matrix probed = probed_input(context.input, N, context.sigma, b);
+  Estimate_basis basis;
+  basis.normal_error = context.measure_normal_error;
+  run_candidates(c, context, b, runner, basis);
   // a candidate that stopped early is estimated only when none reached the noise level
   bool any_at_noise = false;
   for(const Flow_candidate& x : c) any_at_noise = any_at_noise || ended_at_noise_level(x.result.report);
-  estimate_risks(c, Estimate_context{ context.input, probed, N, context.sigma, b }, runner, any_at_noise);
+  const Estimate_context e{ context.input, basis.probed, basis.normals, context.sigma, b, basis.estimate.get() };
+  estimate_risks(c, e, runner, any_at_noise);
+  if(context.observe) context.observe(c);
   std::size_t kept = lowest_estimate(c);
   if(kept < c.size()) choices = describe_choice(c, kept, any_at_noise, context.input.rows());
   else std::tie(kept, choices) = first_sound(c, own);
