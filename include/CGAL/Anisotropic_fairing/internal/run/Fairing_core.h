@@ -107,13 +107,14 @@ public:
     return finish();
   }
 
-  /// Benchmarks: every candidate of the default run once estimated, with the face normals' error estimated
-  /// beside (rows in the run's numbering: row i is the caller's vertex old_of_new[i]); with `normal_field`,
-  /// the normal-field candidate compared too (Normal_field_run.h).
-  void observe_candidates(std::function<void(const Candidate_list&, const std::vector<int>& old_of_new)> f,
-                          bool normal_field = false)
+  /// Benchmarks: every candidate of the default run once estimated, and the estimate (rows in the run's
+  /// numbering: row i is the caller's vertex old_of_new[i]); the candidates chosen by `kind`, and with
+  /// `normal_field` the normal-field candidate compared too (Normal_field_run.h).
+  typedef std::function<void(const Candidate_list&, const Risk_estimate&, const std::vector<int>&)> Observer;
+  void observe_candidates(Observer f, Risk_kind kind, bool normal_field)
   {
     observer_ = std::move(f);
+    risk_kind_ = kind;
     normal_field_ = normal_field;
   }
 
@@ -295,9 +296,11 @@ private:
         break;
       }
     Selection_context context{ layer_, input_, noise_sigma_, estimate_surface_ };
-    context.measure_normal_error = bool(observer_);
+    context.kind = risk_kind_;
     if(observer_)
-      context.observe = [this](const Candidate_list& c) { observer_(c, ordering_.old_of_new_vertex); };
+      context.observe = [this](const Candidate_list& c, const Risk_estimate& e) {
+        observer_(c, e, ordering_.old_of_new_vertex);
+      };
     return select_smoother(std::move(candidates), context, runner);
   }
 
@@ -456,13 +459,13 @@ private:
     return callback_(tagged);
   }
 
-  // the risk estimate's normals (Tensor_selection.h): those of the input's prefiltered surface, which the
+  // the risk estimate's surface (Smoother_selection.h): the input's prefiltered surface, which the
   // first run makes before its first step, so that every candidate's probe can ride along from the start
   Control_matrix make_probe(const Control_matrix& surface)
   {
     estimate_surface_ = surface;
-    made_probe_ = probed_input(input_, vertex_normals(*layer_.topology, layer_.real_faces, surface), noise_sigma_,
-                               risk_probe_values(n_));
+    const std::vector<double> b = risk_probe_values(n_);
+    made_probe_ = make_risk_estimate(risk_kind_, layer_, input_, surface, noise_sigma_, b)->probed();
     return made_probe_;
   }
 
@@ -551,8 +554,9 @@ private:
   double setup_seconds_ = 0;
   std::size_t boundary_held_ = 0, steps_left_ = 0, run_number_ = 0, planned_runs_ = 1;
   std::string run_name_;
-  std::function<void(const Candidate_list&, const std::vector<int>&)> observer_;
+  Observer observer_;
   bool normal_field_ = false;
+  Risk_kind risk_kind_ = Risk_kind::POSITIONS;
 };
 
 } // namespace internal

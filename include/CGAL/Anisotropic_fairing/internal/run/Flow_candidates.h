@@ -35,7 +35,7 @@ struct Flow_settings
 };
 
 /// What one run gives back, in the run's numbering.
-class Normal_error_estimate;
+class Risk_estimate;
 
 struct Flow_outcome
 {
@@ -55,7 +55,7 @@ struct Flow_request
   std::size_t fixed_steps = 0;              // > 0: exactly that many steps, no stopping rule
   const Control_matrix* probe_start = nullptr;   // a probed start carried along (Ride_along_probe.h)
   bool make_probe = false;                  // carried along from one made of the run's prefiltered surface
-  const Normal_error_estimate* estimate = nullptr;   // the comparison's estimate, once known
+  const Risk_estimate* estimate = nullptr;   // the comparison's estimate, once known
 };
 
 /// Whether a run ended where its own stopping rule wanted it: at the noise level (the normal field: at its
@@ -86,8 +86,6 @@ struct Flow_candidate
   bool made = false;   // its run is made (the run's own flow is, before the selection)
   Flow_outcome result;
   double risk = std::nan(""), carried = std::nan("");   // the estimate, and the one its probe carried along gave
-  // the face normals' error estimated beside (benchmarks: Normal_error_estimate.h), and carried along
-  double normal_error = std::nan(""), normal_carried = std::nan("");
 
   /// Compared: judged, and at the noise level unless none of the candidates reached it.
   bool compared(bool any_at_noise) const

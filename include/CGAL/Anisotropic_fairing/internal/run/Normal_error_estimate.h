@@ -2,20 +2,22 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 //
 // The error users see, estimated from the noisy mesh alone: how far a result's face normals are off the
-// unknown clean surface's. A displacement e of the vertices along their normals n tilts a face's normal by
-// the in-face gradient of e_n = n . e, so  sum_f A_f theta_f^2 ~ e_n^T K e_n,  K the cotangent stiffness
-// matrix. For noise of deviation sigma_i along the normals (covariance S^2 along N), generalized SURE
-// (Eldar 2009) estimates that loss for a result f of the data y without the clean surface:
-//   r^T K r + 2 tr(K S^2 N J N^T) - tr(K S^2),   r = N (f - y),  J = df/dy,
-// the trace by the probe of Tensor_selection.h: y moved by eps S b along N, and
-//   tr(K S^2 N J N^T) ~ p . (N (f(y + eps S b) - f(y))) / eps,   p = S^2 K S^-1 b.
-// Weighting by K is what tells the results apart as users do: a result whose positions are closer but whose
-// normals are faceted has the larger K-weighted error. The estimates are given relative to tr(K S^2), the
-// noisy input's own (1: no better than the input).
+// unknown clean surface's. To first order a displacement e of the vertices turns the normal of face f by the
+// in-face gradient of n_f . e (motion within the face's plane turns nothing), so
+//   sum_f A_f theta_f^2 ~ sum_f e_f^T K_f e_f,   e_f = (n_f . e_i) over f's corners,
+// K_f the face's cotangent stiffness: a quadratic form e^T A e of the displacement, A = sum_f P_f^T K_f P_f.
+// Projected on each face's own normal, a result's drift along the surface costs nothing; projected on one
+// normal per vertex it would leak into the loss wherever that normal is off the face's (measured:
+// bench/results-estimate-soundness-2026-11-29.md). For noise of covariance Sigma (deviation sigma_i along the
+// vertex normals N_i), generalized SURE (Eldar 2009) estimates that loss for a result f of the data y:
+//   sum_f r_f^T K_f r_f + 2 tr(A Sigma J) - tr(A Sigma),   r = f - y,  J = df/dy,
+// the trace by one probe: u = Sigma^(1/2) b (b standard normal), the data moved by eps A u, and
+//   tr(A Sigma J) = E[u^T J A u] ~ u . (f(y + eps A u) - f(y)) / eps.
+// A and N are read on a surface less noisy than y (the anisotropic run's prefiltered input). The estimates are
+// given relative to tr(A Sigma), the noisy input's own error (1: no better than the input, 0: exact).
 //
-// Measured beside the default run's choice, not yet used for it: bench/bench_estimate_soundness.cpp and
-// bench/results-estimate-soundness-2026-11-29.md show where it is not sound between flows. The normal-field
-// candidate uses it to choose its number of passes (within one family, where it is).
+// Measured by the benchmarks (Risk_kind::FACE_NORMALS), not yet the default run's choice: an A read on a surface
+// that still follows the noise makes it unsound between flows (bench/results-estimate-soundness-2026-11-29.md).
 
 #ifndef CGAL_ANISOTROPIC_FAIRING_INTERNAL_RUN_NORMAL_ERROR_ESTIMATE_H
 #define CGAL_ANISOTROPIC_FAIRING_INTERNAL_RUN_NORMAL_ERROR_ESTIMATE_H
@@ -23,10 +25,10 @@
 #include <CGAL/Anisotropic_fairing/internal/mesh/Triangle_topology.h>
 #include <CGAL/Anisotropic_fairing/internal/run/Tensor_selection.h>
 #include <CGAL/Anisotropic_fairing/internal/types/Control_matrix.h>
-#include <CGAL/Anisotropic_fairing/internal/types/Vector3.h>
 
-#include <Eigen/Sparse>
+#include <Eigen/Core>
 
+#include <array>
 #include <cmath>
 #include <cstddef>
 #include <vector>
@@ -35,97 +37,132 @@ namespace CGAL {
 namespace Anisotropic_fairing {
 namespace internal {
 
-/// The cotangent stiffness matrix of the first `real_faces` faces of Y: e^T K e = the integral of |grad e|^2
-/// of the piecewise linear e (positive semi-definite on any triangle mesh; a zero-area face adds nothing).
-inline Eigen::SparseMatrix<double> stiffness_matrix(const Triangle_topology& topo, std::size_t real_faces,
-                                                   const Control_matrix& Y)
-{
-  std::vector<Eigen::Triplet<double>> entries;
-  entries.reserve(9 * real_faces);
-  for(std::size_t f = 0; f < real_faces; ++f)
-  {
-    const auto& t = topo.face(f);
-    const Eigen::Vector3d p[3] = { Y.row(t[0]).head<3>().transpose(), Y.row(t[1]).head<3>().transpose(),
-                                   Y.row(t[2]).head<3>().transpose() };
-    const double twice_area = (p[1] - p[0]).cross(p[2] - p[0]).norm();
-    if(!(twice_area > 0)) continue;
-    for(int c = 0; c < 3; ++c)
-    {
-      // the corner c faces the edge (a, b): weight cot(c) / 2 = (u . v) / (2 |u x v|)
-      const int a = (c + 1) % 3, b = (c + 2) % 3;
-      const double w = (p[a] - p[c]).dot(p[b] - p[c]) / (2 * twice_area);
-      entries.emplace_back(t[a], t[b], -w);
-      entries.emplace_back(t[b], t[a], -w);
-      entries.emplace_back(t[a], t[a], w);
-      entries.emplace_back(t[b], t[b], w);
-    }
-  }
-  Eigen::SparseMatrix<double> K(Y.rows(), Y.rows());
-  K.setFromTriplets(entries.begin(), entries.end());
-  return K;
-}
-
-/// What every estimate reads: the data y, the normals N and stiffness K it is measured with, the noise's
-/// deviation per vertex and the probe's values b (y probed = probed_input(y, N, sigma, b)).
-class Normal_error_estimate
+class Normal_error_estimate : public Risk_estimate
 {
 public:
-  Normal_error_estimate(const Control_matrix& y, const Control_matrix& N, Eigen::SparseMatrix<double> K,
-                        const std::vector<double>& sigma, const std::vector<double>& b)
-    : y_(y), N_(N), K_(std::move(K)), sigma_(sigma)
+  /// `y`: the data (the input); `surface`: where the faces' normals and stiffness and the noise's directions are
+  /// read; the first `real_faces` faces of `topo` are the surface; `sigma`: the noise's deviation per vertex;
+  /// `b`: the probe's standard normal numbers, one per vertex.
+  Normal_error_estimate(const Triangle_topology& topo, std::size_t real_faces, const Control_matrix& y,
+                        const Control_matrix& surface, const std::vector<double>& sigma, const std::vector<double>& b)
+    : y_(y)
   {
+    const Control_matrix N = vertex_normals(topo, real_faces, surface);
     const Eigen::Index n = y.rows();
-    Eigen::VectorXd scaled(n), s2(n);
+    Control_matrix u = Control_matrix::Zero(n, 3);
+    for(Eigen::Index i = 0; i < n; ++i) u.row(i) = sigma[std::size_t(i)] * b[std::size_t(i)] * N.row(i);
+    faces_.reserve(real_faces);
+    for(std::size_t f = 0; f < real_faces; ++f)
+    {
+      Face_form form;
+      if(make_face_form(topo.face(f), surface, form)) faces_.push_back(form);
+    }
+    // tr(A Sigma) and the probe's direction A u
+    Control_matrix direction = Control_matrix::Zero(n, 3);
+    for(const Face_form& form : faces_)
+    {
+      for(int a = 0; a < 3; ++a)
+      {
+        const int i = form.corner[a];
+        const double along = form.normal.dot(N.row(i).transpose());
+        input_error_ += form.K[a][a] * sigma[std::size_t(i)] * sigma[std::size_t(i)] * along * along;
+        for(int c = 0; c < 3; ++c)
+        {
+          const double along_u = form.normal.dot(u.row(form.corner[c]).transpose());
+          direction.row(i) += form.K[a][c] * along_u * form.normal.transpose();
+        }
+      }
+    }
+    // the probe moves the data by about risk_probe times the noise
+    double noise2 = 0, direction2 = 0;
     for(Eigen::Index i = 0; i < n; ++i)
     {
-      const double s = sigma[std::size_t(i)];
-      scaled[i] = s > 0 ? b[std::size_t(i)] / s : 0.0;
-      s2[i] = s > 0 ? s * s : 0.0;
+      noise2 += sigma[std::size_t(i)] * sigma[std::size_t(i)];
+      direction2 += direction.row(i).squaredNorm();
     }
-    p_ = s2.cwiseProduct(K_ * scaled);
-    diagonal_ = K_.diagonal();
-    input_error_ = s2.dot(diagonal_);
+    eps_ = direction2 > 0 ? risk_probe * std::sqrt(noise2 / direction2) : 0.0;
+    probed_ = y;
+    probed_.leftCols(3) += eps_ * direction;
+    u_ = std::move(u);
   }
 
-  /// tr(K S^2): the expected loss of the noisy input itself, the unit of the estimates.
+  /// The data moved by the probe: every candidate's probed run starts there.
+  const Control_matrix& probed() const override { return probed_; }
+
+  /// tr(A Sigma): the expected loss of the noisy input itself, the unit of the estimates.
   double input_error() const { return input_error_; }
 
-  /// The terms of the estimate of result f whose probed input ended at f_probed, one per vertex (their sum
-  /// is the estimate, in squared length): r_i (K r)_i + 2 p_i delta_i / eps - K_ii sigma_i^2.
-  std::vector<double> terms(const Control_matrix& f, const Control_matrix& f_probed) const
+  /// The estimate of result f whose probed run ended at f_probed, relative to the input's.
+  double relative(const Control_matrix& f, const Control_matrix& f_probed) const override
   {
-    const Eigen::Index n = y_.rows();
-    Eigen::VectorXd r(n), delta(n);
-    for(Eigen::Index i = 0; i < n; ++i)
-    {
-      r[i] = N_.row(i).dot(f.row(i).head(3) - y_.row(i).head(3));
-      delta[i] = N_.row(i).dot(f_probed.row(i).head(3) - f.row(i).head(3));
-    }
-    const Eigen::VectorXd Kr = K_ * r;
-    std::vector<double> t(static_cast<std::size_t>(n));
-    for(Eigen::Index i = 0; i < n; ++i)
-    {
-      const double s = sigma_[std::size_t(i)];
-      t[std::size_t(i)] = r[i] * Kr[i] + 2 * p_[i] * delta[i] / risk_probe - diagonal_[i] * s * s;
-    }
-    return t;
+    if(!(input_error_ > 0) || !(eps_ > 0)) return std::nan("");
+    double divergence = 0;
+    for(Eigen::Index i = 0; i < f.rows(); ++i)
+      divergence += u_.row(i).dot(f_probed.row(i).head(3) - f.row(i).head(3));
+    return (loss(f, y_) + 2 * divergence / eps_ - input_error_) / input_error_;
   }
 
-  /// The estimate of result f relative to the input's (1: the input's own error, 0: none).
-  double relative(const std::vector<double>& terms) const
+  /// The loss itself, were the clean surface x known, relative to the input's (benchmarks and tests measure the
+  /// estimate against it).
+  double relative_loss(const Control_matrix& f, const Control_matrix& x) const override
   {
-    double sum = 0;
-    for(double x : terms) sum += x;
-    return input_error_ > 0 ? sum / input_error_ : std::nan("");
+    return loss(f, x) / input_error_;
+  }
+  const char* description() const override
+  {
+    return "the face normals' error estimated by generalized SURE, relative to the noisy input's";
   }
 
 private:
+  // one face's part of A: its corners, its unit normal and its cotangent stiffness
+  struct Face_form
+  {
+    std::array<int, 3> corner;
+    Eigen::Vector3d normal;
+    double K[3][3];
+  };
+
+  static bool make_face_form(const std::array<int, 3>& t, const Control_matrix& Y, Face_form& form)
+  {
+    const Eigen::Vector3d p[3] = { Y.row(t[0]).head<3>().transpose(), Y.row(t[1]).head<3>().transpose(),
+                                   Y.row(t[2]).head<3>().transpose() };
+    const Eigen::Vector3d cross = (p[1] - p[0]).cross(p[2] - p[0]);
+    const double twice_area = cross.norm();
+    if(!(twice_area > 0) || !std::isfinite(twice_area)) return false;   // no normal: no part of the loss
+    form.corner = t;
+    form.normal = cross / twice_area;
+    for(int a = 0; a < 3; ++a) form.K[a][a] = 0;
+    for(int c = 0; c < 3; ++c)
+    {
+      // the corner c faces the edge (a, b): weight cot(c) / 2
+      const int a = (c + 1) % 3, b = (c + 2) % 3;
+      const double w = (p[a] - p[c]).dot(p[b] - p[c]) / (2 * twice_area);
+      form.K[a][b] = form.K[b][a] = -w;
+      form.K[a][a] += w;
+      form.K[b][b] += w;
+    }
+    return true;
+  }
+
+  // sum_f e_f^T K_f e_f, e_f = (n_f . (f_i - x_i)) over the face's corners
+  double loss(const Control_matrix& f, const Control_matrix& x) const
+  {
+    double sum = 0;
+    for(const Face_form& form : faces_)
+    {
+      double e[3];
+      for(int a = 0; a < 3; ++a)
+        e[a] = form.normal.dot((f.row(form.corner[a]).head(3) - x.row(form.corner[a]).head(3)).transpose());
+      for(int a = 0; a < 3; ++a)
+        for(int c = 0; c < 3; ++c) sum += e[a] * form.K[a][c] * e[c];
+    }
+    return sum;
+  }
+
   const Control_matrix& y_;
-  const Control_matrix& N_;
-  Eigen::SparseMatrix<double> K_;
-  const std::vector<double>& sigma_;
-  Eigen::VectorXd p_, diagonal_;
-  double input_error_ = 0;
+  std::vector<Face_form> faces_;
+  Control_matrix u_, probed_;
+  double input_error_ = 0, eps_ = 0;
 };
 
 } // namespace internal

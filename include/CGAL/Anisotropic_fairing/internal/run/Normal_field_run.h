@@ -1,13 +1,13 @@
 // Copyright (c) 2026 Anisotropic_fairing developers.
 // SPDX-License-Identifier: GPL-3.0-or-later
 //
-// The default run's normal-field candidate (Flow_candidates.h): the face normals of the input filtered pass
-// after pass (flow/Normal_field_filter.h), the vertices fitted to each pass's normals from the input, and
-// the same on the probed input in lockstep, so that every pass has its estimate of the face normals' error
-// (Normal_error_estimate.h). The pass kept is the one whose
-// estimate is lowest among those that fold no more edges than the input; the passes end once the estimate
-// has not fallen for `patience` passes. Its positions are the filtered vertices themselves, tied to no
-// limit surface: a sharp crease stays as sharp as the filter leaves it.
+// The normal-field candidate (Flow_candidates.h; compared by the benchmarks, not yet by the default run): the
+// face normals of the input filtered pass after pass (flow/Normal_field_filter.h), the vertices fitted to each
+// pass's normals from the input, and the same on the probed input in lockstep, so that every pass has the
+// comparison's estimate (Tensor_selection.h, Risk_estimate). The pass kept is the one whose estimate is lowest
+// among those that fold no more edges than the input; the passes end once the estimate has not fallen for
+// `normal_field_patience` passes. Its positions are the filtered vertices themselves, tied to no limit surface:
+// a sharp crease stays as sharp as the filter leaves it.
 
 #ifndef CGAL_ANISOTROPIC_FAIRING_INTERNAL_RUN_NORMAL_FIELD_RUN_H
 #define CGAL_ANISOTROPIC_FAIRING_INTERNAL_RUN_NORMAL_FIELD_RUN_H
@@ -17,7 +17,7 @@
 #include <CGAL/Anisotropic_fairing/internal/flow/Step_safety.h>
 #include <CGAL/Anisotropic_fairing/internal/mesh/Ghost_layer.h>
 #include <CGAL/Anisotropic_fairing/internal/run/Flow_candidates.h>
-#include <CGAL/Anisotropic_fairing/internal/run/Normal_error_estimate.h>
+#include <CGAL/Anisotropic_fairing/internal/run/Tensor_selection.h>
 
 #include <CGAL/Real_timer.h>
 
@@ -96,7 +96,7 @@ inline Flow_outcome run_normal_field(const Flow_request& request, const Normal_f
     filter.fit(Y, field);
     P = probe_start;
     filter.fit(P, probe_field);
-    const double estimate = request.estimate->relative(request.estimate->terms(Y, P));
+    const double estimate = request.estimate->relative(Y, P);
     const bool sound = count_folded_edges(topo, faces, Y, c.face_component, c.component_edge) <= input_folds;
     if(sound && std::isfinite(estimate) && !(estimate >= lowest))
     {

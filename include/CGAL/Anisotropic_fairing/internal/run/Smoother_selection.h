@@ -32,6 +32,19 @@ namespace CGAL {
 namespace Anisotropic_fairing {
 namespace internal {
 
+/// The estimate the comparison chooses by: SURE of the positions (the default run's), or the face normals'
+/// error (Normal_error_estimate.h), which the benchmarks measure.
+enum class Risk_kind { POSITIONS, FACE_NORMALS };
+
+inline std::unique_ptr<Risk_estimate> make_risk_estimate(Risk_kind kind, const Ghost_layer& layer,
+                                                         const Control_matrix& y, const Control_matrix& surface,
+                                                         const std::vector<double>& sigma, const std::vector<double>& b)
+{
+  if(kind == Risk_kind::FACE_NORMALS)
+    return std::make_unique<Normal_error_estimate>(*layer.topology, layer.real_faces, y, surface, sigma, b);
+  return std::make_unique<Position_error_estimate>(*layer.topology, layer.real_faces, y, surface, sigma, b);
+}
+
 /// What the comparison reads besides its candidates.
 struct Selection_context
 {
@@ -39,10 +52,9 @@ struct Selection_context
   const Control_matrix& input;          // the start of every candidate
   const std::vector<double>& sigma;     // the noise's deviation at each vertex (0: none to estimate)
   const Control_matrix& surface;        // the surface the estimate measures on, made by the first run (empty: none)
-  // benchmarks: the face normals' error estimated beside the choice (Normal_error_estimate.h), and what sees
-  // the candidates once estimated
-  bool measure_normal_error = false;
-  std::function<void(const Candidate_list&)> observe = nullptr;
+  Risk_kind kind = Risk_kind::POSITIONS;
+  // benchmarks: what sees the candidates once estimated, and the estimate
+  std::function<void(const Candidate_list&, const Risk_estimate&)> observe = nullptr;
 };
 
 /// What the comparison gives back: the candidate kept, whose report's selected_tensor names it, and what
@@ -92,34 +104,12 @@ inline Flow_outcome run_not_made()
   return o;
 }
 
-/// The sum of the risk terms of result Y whose probed input ended at Yp (Tensor_selection.h).
-inline double risk_of(const Control_matrix& input, const Control_matrix& Y, const Control_matrix& Yp,
-                      const Control_matrix& N,
-                      const std::vector<double>& sigma, const std::vector<double>& b)
-{
-  double risk = 0;
-  for(double x : risk_terms(input, Y, Yp, N, sigma, b)) risk += x;
-  return risk;
-}
-
-/// What the estimates read: the input, its probed copy, the normals, the noise and the probe's values; and
-/// the estimate of the face normals' error measured beside the choice (benchmarks), or null.
+/// What the estimates read: the estimate the comparison chooses by.
 struct Estimate_context
 {
-  const Control_matrix& input;
-  const Control_matrix& probed;
-  const Control_matrix& normals;
-  const std::vector<double>& sigma;
-  const std::vector<double>& b;
-  const Normal_error_estimate* normal_error;
-  double risk_of(const Control_matrix& Y, const Control_matrix& Yp) const
-  {
-    return internal::risk_of(input, Y, Yp, normals, sigma, b);
-  }
-  double normal_error_of(const Control_matrix& Y, const Control_matrix& Yp) const
-  {
-    return normal_error ? normal_error->relative(normal_error->terms(Y, Yp)) : std::nan("");
-  }
+  const Risk_estimate& estimate;
+  const Control_matrix& probed() const { return estimate.probed(); }
+  double risk_of(const Control_matrix& Y, const Control_matrix& Yp) const { return estimate.relative(Y, Yp); }
 };
 
 /// The order in which candidates are estimated: those whose carried estimate is their estimate first, then
@@ -148,12 +138,12 @@ inline double lowest_estimate_like(const Candidate_list& c, const Flow_candidate
 /// The estimate of candidate `x` by a run of its own on the probed input (NaN when it cannot be made); one
 /// that ended short of the noise level has its probe take exactly its steps.
 template <typename Runner>
-double estimate_by_probe_run(Flow_candidate& x, const Estimate_context& e, Runner& runner)
+double estimate_by_probe_run(const Flow_candidate& x, const Estimate_context& e, Runner& runner)
 {
   const bool at_noise = ended_at_noise_level(x.result.report);
   const std::size_t replay = at_noise ? 0 : x.result.report.steps.size();
   if(!at_noise && replay == 0) return std::nan("");   // it took no step: nothing to estimate
-  Flow_request request{ x.settings, std::string(x.flow) + " on the probed input", e.probed };
+  Flow_request request{ x.settings, std::string(x.flow) + " on the probed input", e.probed() };
   request.may_be_kept = false;
   request.fixed_steps = replay;
   const Flow_outcome probe = runner.run(request);
@@ -161,7 +151,6 @@ double estimate_by_probe_run(Flow_candidate& x, const Estimate_context& e, Runne
   if(!rp.succeeded() || (rp.stop_reason == Stop_reason::MAXIMUM_STEPS && runner.steps_left() == 0 && replay == 0))
     return std::nan("");   // cut short by the budget
   if(replay > 0 && rp.steps.size() != replay) return std::nan("");   // the probe could not take the same steps
-  x.normal_error = e.normal_error_of(x.result.Y, probe.Y);
   return e.risk_of(x.result.Y, probe.Y);
 }
 
@@ -172,12 +161,8 @@ void estimate_risks(Candidate_list& c, const Estimate_context& e, Runner& runner
 {
   for(Flow_candidate& x : c)
   {
-    if(x.compared(any_at_noise) && x.result.probe.size() > 0)
-    {
-      x.carried = e.risk_of(x.result.Y, x.result.probe);
-      x.normal_carried = e.normal_error_of(x.result.Y, x.result.probe);
-    }
-    if(x.carried_is_estimate) { x.risk = x.carried; x.normal_error = x.normal_carried; }
+    if(x.compared(any_at_noise) && x.result.probe.size() > 0) x.carried = e.risk_of(x.result.Y, x.result.probe);
+    if(x.carried_is_estimate) x.risk = x.carried;
   }
   for(std::size_t k : estimate_order(c))
   {
@@ -204,18 +189,16 @@ inline std::size_t lowest_estimate(const Candidate_list& c)
   return kept < c.size() ? kept : lowest_of(false);
 }
 
-/// One candidate's entry in the list of estimates, per vertex in units of the noise.
-inline std::string described_estimate(const Flow_candidate& x, bool any_at_noise, Eigen::Index rows)
+/// One candidate's entry in the list of estimates (in the estimate's unit).
+inline std::string described_estimate(const Flow_candidate& x, bool any_at_noise)
 {
   const Fairing_report& r = x.result.report;
   char text[160];
   const std::string early = std::string(" (stopped early: ") + to_string(r.stop_reason) + ")";
   if(std::isfinite(x.risk))
-    std::snprintf(text, sizeof text, "%s %.4g%s", x.label, x.risk / double(rows) - 1,
-                  ended_at_noise_level(r) ? "" : early.c_str());
+    std::snprintf(text, sizeof text, "%s %.4g%s", x.label, x.risk, ended_at_noise_level(r) ? "" : early.c_str());
   else if(std::isfinite(x.carried))
-    std::snprintf(text, sizeof text, "%s %.4g or more (carried along: it cannot be the lowest)", x.label,
-                  x.carried / double(rows) - 1);
+    std::snprintf(text, sizeof text, "%s %.4g or more (carried along: it cannot be the lowest)", x.label, x.carried);
   else if(judged_run(r) && !ended_at_noise_level(r) && any_at_noise)
     std::snprintf(text, sizeof text, "%s not estimated (stopped early: %s)", x.label, to_string(r.stop_reason));
   else
@@ -225,10 +208,11 @@ inline std::string described_estimate(const Flow_candidate& x, bool any_at_noise
 }
 
 /// What `choices` says of the comparison that kept candidate `kept`.
-inline std::string describe_choice(const Candidate_list& c, std::size_t kept, bool any_at_noise, Eigen::Index rows)
+inline std::string describe_choice(const Candidate_list& c, std::size_t kept, bool any_at_noise,
+                                   const Risk_estimate& estimate)
 {
   std::string list;
-  for(const Flow_candidate& x : c) list += (list.empty() ? "" : ", ") + described_estimate(x, any_at_noise, rows);
+  for(const Flow_candidate& x : c) list += (list.empty() ? "" : ", ") + described_estimate(x, any_at_noise);
   bool lowest = true;
   for(const Flow_candidate& x : c)
     lowest = lowest && !(x.risk < c[kept].risk) &&
@@ -237,28 +221,18 @@ inline std::string describe_choice(const Candidate_list& c, std::size_t kept, bo
          (lowest ? " result, whose estimated error is the lowest"
                  : " result, whose estimated error is the lowest of the runs that reached the noise level; a run that "
                    "stopped early is not preferred to them") +
-         " (Stein's unbiased risk estimate per vertex, in units of the noise: " + list + ")";
+         " (" + estimate.description() + ": " + list + ")";
 }
 
-/// What the estimates are made with once the surface they measure on is known: its normals, the probed input
-/// and, when measured (`normal_error`), the estimate of the face normals' error (Normal_error_estimate.h).
-/// Built in place: that estimate refers to it.
+/// The estimate once the surface it measures on is known.
 struct Estimate_basis
 {
-  bool normal_error = false;
-  Control_matrix normals, probed;
-  std::unique_ptr<Normal_error_estimate> estimate;
+  std::unique_ptr<Risk_estimate> estimate;
 
-  bool made() const { return normals.size() > 0; }
+  bool made() const { return bool(estimate); }
   void make(const Control_matrix& surface, const Selection_context& context, const std::vector<double>& b)
   {
-    const Ghost_layer& layer = context.layer;
-    normals = vertex_normals(*layer.topology, layer.real_faces, surface);
-    probed = probed_input(context.input, normals, context.sigma, b);
-    if(normal_error)
-      estimate.reset(new Normal_error_estimate(context.input, normals,
-                                               stiffness_matrix(*layer.topology, layer.real_faces, surface),
-                                               context.sigma, b));
+    estimate = make_risk_estimate(context.kind, context.layer, context.input, surface, context.sigma, b);
   }
 };
 
@@ -273,7 +247,7 @@ void run_candidates(Candidate_list& c, const Selection_context& context, const s
   {
     if(x.made) continue;
     Flow_request request{ x.settings, x.flow, context.input };
-    request.probe_start = basis.made() ? &basis.probed : nullptr;
+    request.probe_start = basis.made() ? &basis.estimate->probed() : nullptr;
     request.estimate = basis.estimate.get();
     x.result = runner.steps_left() > 0 ? runner.run(request) : run_not_made();
     x.made = true;
@@ -306,16 +280,14 @@ Smoother_choice select_smoother(Candidate_list c, const Selection_context& conte
   std::string choices;
   const std::vector<double> b = risk_probe_values(std::size_t(context.input.rows()));
   Estimate_basis basis;
-  basis.normal_error = context.measure_normal_error;
   run_candidates(c, context, b, runner, basis);
   // a candidate that stopped early is estimated only when none reached the noise level
   bool any_at_noise = false;
   for(const Flow_candidate& x : c) any_at_noise = any_at_noise || ended_at_noise_level(x.result.report);
-  const Estimate_context e{ context.input, basis.probed, basis.normals, context.sigma, b, basis.estimate.get() };
-  estimate_risks(c, e, runner, any_at_noise);
-  if(context.observe) context.observe(c);
+  estimate_risks(c, Estimate_context{ *basis.estimate }, runner, any_at_noise);
+  if(context.observe) context.observe(c, *basis.estimate);
   std::size_t kept = lowest_estimate(c);
-  if(kept < c.size()) choices = describe_choice(c, kept, any_at_noise, context.input.rows());
+  if(kept < c.size()) choices = describe_choice(c, kept, any_at_noise, *basis.estimate);
   else std::tie(kept, choices) = first_sound(c, own);
   c[kept].result.report.selected_tensor = c[kept].name;
   return { std::move(c[kept]), choices };

@@ -87,6 +87,59 @@ inline std::vector<double> risk_terms(const Control_matrix& y, const Control_mat
   return t;
 }
 
+/// What the comparison measures its candidates with: the data moved by a probe, and the estimated error of a
+/// result f whose probed run ended at f_probed; `relative_loss` is what it estimates, were the clean surface x
+/// known (benchmarks and tests measure the estimate against it).
+class Risk_estimate
+{
+public:
+  virtual ~Risk_estimate() = default;
+  virtual const Control_matrix& probed() const = 0;
+  virtual double relative(const Control_matrix& f, const Control_matrix& f_probed) const = 0;
+  virtual double relative_loss(const Control_matrix& f, const Control_matrix& x) const = 0;
+  /// how `choices` names it and its unit
+  virtual const char* description() const = 0;
+};
+
+/// SURE of the positions along the normals N of a surface, per vertex in units of the noise: the sum of
+/// risk_terms / rows - 1 (0: exact, about 1: no better than the input).
+class Position_error_estimate : public Risk_estimate
+{
+public:
+  Position_error_estimate(const Triangle_topology& topo, std::size_t real_faces, const Control_matrix& y,
+                          const Control_matrix& surface, const std::vector<double>& sigma, const std::vector<double>& b)
+    : y_(y), N_(vertex_normals(topo, real_faces, surface)), probed_(probed_input(y, N_, sigma, b)), sigma_(sigma),
+      b_(b)
+  {}
+  const Control_matrix& probed() const override { return probed_; }
+  double relative(const Control_matrix& f, const Control_matrix& f_probed) const override
+  {
+    double risk = 0;
+    for(double x : risk_terms(y_, f, f_probed, N_, sigma_, b_)) risk += x;
+    return risk / double(y_.rows()) - 1;
+  }
+  double relative_loss(const Control_matrix& f, const Control_matrix& x) const override
+  {
+    double loss = 0;
+    for(Eigen::Index i = 0; i < f.rows(); ++i)
+    {
+      const double s = sigma_[std::size_t(i)];
+      if(s > 0) loss += std::pow(N_.row(i).dot(f.row(i).head(3) - x.row(i).head(3)) / s, 2);
+    }
+    return loss / double(f.rows());
+  }
+  const char* description() const override
+  {
+    return "Stein's unbiased risk estimate per vertex, in units of the noise";
+  }
+
+private:
+  const Control_matrix& y_;
+  Control_matrix N_, probed_;
+  const std::vector<double>& sigma_;
+  std::vector<double> b_;
+};
+
 } // namespace internal
 } // namespace Anisotropic_fairing
 } // namespace CGAL
