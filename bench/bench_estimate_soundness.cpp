@@ -3,7 +3,8 @@
 // For every case directory CASES_DIR/<case>/{noisy.off, original.off} (bench/write_cases writes them: the
 // denoising pairs and the generated noises), the default run is made as anisotropic_fairing() makes it, with
 // the normal-field candidate added and the candidates chosen by the estimate asked for: `normals` (default),
-// the face normals' error (internal/run/Normal_error_estimate.h), or `positions`, the default run's own SURE.
+// the face normals' error (internal/run/Normal_error_estimate.h) read on the prefiltered input, `on-result` the
+// same read again on the result kept, or `positions`, the default run's own SURE.
 // Every candidate is read back once estimated (Fairing_core::observe_candidates) and measured against the
 // original: the loss the estimate estimates (known the clean surface), the face-wise first-order loss
 // linearised at the clean surface, the area-weighted mean squared face-normal angle (both relative to the noisy
@@ -14,7 +15,10 @@
 // with the true noise deviation, the input's face-normal loss relative to its model with the faces' normals
 // and stiffness read on the clean and on the noisy mesh.
 //
-//   bench_estimate_soundness CASES_DIR [CASE_SUBSTRING] [normals|positions]
+// With `clean`, the estimate reads its normals and stiffness on the clean mesh (an oracle: how much of its
+// error comes from the surface it measures on).
+//
+//   bench_estimate_soundness CASES_DIR [CASE_SUBSTRING] [normals|on-result|positions] [clean]
 
 #include "bench_cases.h"
 
@@ -85,7 +89,7 @@ double facewise_loss(const Mesh& result, const Mesh& clean)
 }
 
 std::vector<Candidate_truth> run_case(const std::string& name, const Mesh& noisy, const Mesh& original,
-                                     AFI::Risk_kind kind)
+                                     AFI::Risk_kind kind, bool oracle)
 {
   Mesh mesh = noisy;
   const AF::Fairing_options options;
@@ -142,6 +146,16 @@ std::vector<Candidate_truth> run_case(const std::string& name, const Mesh& noisy
       out.push_back(t);
     }
   }, kind, true);
+  if(oracle)
+  {
+    AFI::Control_matrix X(P.rows(), 3);   // the original, in the caller's numbering
+    for(Eigen::Index i = 0; i < P.rows(); ++i)
+    {
+      const Point& p = original.point(Mesh::Vertex_index(std::size_t(i)));
+      X.row(i) << p.x(), p.y(), p.z();
+    }
+    core.measure_on(X);
+  }
   core.run();
   {
     const AFI::Ghost_layer& layer = im.ghost_layer();
@@ -185,12 +199,15 @@ int main(int argc, char** argv)
 {
   if(argc < 2)
   {
-    std::fprintf(stderr, "usage: %s CASES_DIR [CASE_SUBSTRING] [normals|positions]\n", argv[0]);
+    std::fprintf(stderr, "usage: %s CASES_DIR [CASE_SUBSTRING] [normals|on-result|positions] [clean]\n", argv[0]);
     return 2;
   }
   const std::string dir = argv[1], only = argc > 2 ? argv[2] : "";
-  const AFI::Risk_kind kind =
-    argc > 3 && std::string(argv[3]) == "positions" ? AFI::Risk_kind::POSITIONS : AFI::Risk_kind::FACE_NORMALS;
+  const std::string which = argc > 3 ? argv[3] : "normals";
+  const AFI::Risk_kind kind = which == "positions"   ? AFI::Risk_kind::POSITIONS
+                              : which == "on-result" ? AFI::Risk_kind::FACE_NORMALS_ON_RESULT
+                                                     : AFI::Risk_kind::FACE_NORMALS;
+  const bool oracle = argc > 4 && std::string(argv[4]) == "clean";   // measured on the clean mesh: an oracle
   std::vector<std::string> cases;
   for(const auto& e : std::filesystem::directory_iterator(dir))
     if(e.is_directory() && e.path().filename().string().find(only) != std::string::npos)
@@ -207,7 +224,7 @@ int main(int argc, char** argv)
     if(!CGAL::IO::read_polygon_mesh(dir + "/" + name + "/noisy.off", noisy) ||
        !CGAL::IO::read_polygon_mesh(dir + "/" + name + "/original.off", original))
       continue;
-    const std::vector<Candidate_truth> c = run_case(name, noisy, original, kind);
+    const std::vector<Candidate_truth> c = run_case(name, noisy, original, kind, oracle);
     std::string row;
     std::size_t picked = c.size(), best = c.size(), surrogate = c.size();
     for(std::size_t k = 0; k < c.size(); ++k)

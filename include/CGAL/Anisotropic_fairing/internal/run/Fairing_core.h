@@ -117,6 +117,14 @@ public:
     risk_kind_ = kind;
     normal_field_ = normal_field;
   }
+  /// Benchmarks: the estimate measures on `surface` (the caller's numbering, e.g. the clean mesh: an oracle)
+  /// instead of the anisotropic run's prefiltered input.
+  void measure_on(const Control_matrix& surface)
+  {
+    oracle_surface_.resize(surface.rows(), surface.cols());
+    for(std::size_t i = 0; i < n_; ++i)
+      oracle_surface_.row(Eigen::Index(i)) = surface.row(ordering_.old_of_new_vertex[i]);
+  }
 
 private:
   // the runs on one element's cache, as the comparison asks for them
@@ -463,9 +471,9 @@ private:
   // first run makes before its first step, so that every candidate's probe can ride along from the start
   Control_matrix make_probe(const Control_matrix& surface)
   {
-    estimate_surface_ = surface;
+    estimate_surface_ = oracle_surface_.size() > 0 ? oracle_surface_ : surface;
     const std::vector<double> b = risk_probe_values(n_);
-    made_probe_ = make_risk_estimate(risk_kind_, layer_, input_, surface, noise_sigma_, b)->probed();
+    made_probe_ = make_risk_estimate(risk_kind_, layer_, input_, estimate_surface_, noise_sigma_, b)->probed();
     return made_probe_;
   }
 
@@ -541,7 +549,7 @@ private:
   CGAL::Real_timer setup_;   // from before the numbering to the element's cache
   const Locality_ordering ordering_;
   const Ghost_layer& layer_;
-  Control_matrix X_, input_, control_points_, estimate_surface_, made_probe_;
+  Control_matrix X_, input_, control_points_, estimate_surface_, made_probe_, oracle_surface_;
   std::vector<bool> constrained_, border_, isolated_, written_;
   Mesh_components components_;
   std::vector<double> component_edge_, noise_sigma_;

@@ -86,6 +86,7 @@ struct Flow_candidate
   bool made = false;   // its run is made (the run's own flow is, before the selection)
   Flow_outcome result;
   double risk = std::nan(""), carried = std::nan("");   // the estimate, and the one its probe carried along gave
+  Control_matrix probe_end;   // where its run on the probed input ended, when it was run again
 
   /// Compared: judged, and at the noise level unless none of the candidates reached it.
   bool compared(bool any_at_noise) const

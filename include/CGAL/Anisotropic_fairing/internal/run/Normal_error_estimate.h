@@ -37,6 +37,11 @@ namespace CGAL {
 namespace Anisotropic_fairing {
 namespace internal {
 
+/// How the probe moves the data: along A u, which gives tr(A Sigma J) for any J; or along u itself (the noise's
+/// directions, the probe SURE of the positions uses), which gives it as (A u) . J u where J Sigma is symmetric,
+/// and leaves A free to be read on another surface once the candidates have run (`measure_on`).
+enum class Normal_error_probe { STIFFNESS, NOISE };
+
 class Normal_error_estimate : public Risk_estimate
 {
 public:
@@ -44,46 +49,66 @@ public:
   /// read; the first `real_faces` faces of `topo` are the surface; `sigma`: the noise's deviation per vertex;
   /// `b`: the probe's standard normal numbers, one per vertex.
   Normal_error_estimate(const Triangle_topology& topo, std::size_t real_faces, const Control_matrix& y,
-                        const Control_matrix& surface, const std::vector<double>& sigma, const std::vector<double>& b)
-    : y_(y)
+                        const Control_matrix& surface, const std::vector<double>& sigma, const std::vector<double>& b,
+                        Normal_error_probe probe = Normal_error_probe::STIFFNESS)
+    : topo_(topo), real_faces_(real_faces), y_(y), sigma_(sigma), probe_(probe),
+      N_(vertex_normals(topo, real_faces, surface))
   {
-    const Control_matrix N = vertex_normals(topo, real_faces, surface);
     const Eigen::Index n = y.rows();
-    Control_matrix u = Control_matrix::Zero(n, 3);
-    for(Eigen::Index i = 0; i < n; ++i) u.row(i) = sigma[std::size_t(i)] * b[std::size_t(i)] * N.row(i);
-    faces_.reserve(real_faces);
-    for(std::size_t f = 0; f < real_faces; ++f)
+    u_ = Control_matrix::Zero(n, 3);
+    for(Eigen::Index i = 0; i < n; ++i) u_.row(i) = sigma[std::size_t(i)] * b[std::size_t(i)] * N_.row(i);
+    measure_on(surface);
+    if(probe_ == Normal_error_probe::NOISE)
     {
-      Face_form form;
-      if(make_face_form(topo.face(f), surface, form)) faces_.push_back(form);
-    }
-    // tr(A Sigma) and the probe's direction A u
-    Control_matrix direction = Control_matrix::Zero(n, 3);
-    for(const Face_form& form : faces_)
-    {
-      for(int a = 0; a < 3; ++a)
-      {
-        const int i = form.corner[a];
-        const double along = form.normal.dot(N.row(i).transpose());
-        input_error_ += form.K[a][a] * sigma[std::size_t(i)] * sigma[std::size_t(i)] * along * along;
-        for(int c = 0; c < 3; ++c)
-        {
-          const double along_u = form.normal.dot(u.row(form.corner[c]).transpose());
-          direction.row(i) += form.K[a][c] * along_u * form.normal.transpose();
-        }
-      }
+      eps_ = risk_probe;
+      probed_ = probed_input(y, N_, sigma, b);   // y + risk_probe u
+      return;
     }
     // the probe moves the data by about risk_probe times the noise
     double noise2 = 0, direction2 = 0;
     for(Eigen::Index i = 0; i < n; ++i)
     {
       noise2 += sigma[std::size_t(i)] * sigma[std::size_t(i)];
-      direction2 += direction.row(i).squaredNorm();
+      direction2 += Au_.row(i).squaredNorm();
     }
     eps_ = direction2 > 0 ? risk_probe * std::sqrt(noise2 / direction2) : 0.0;
     probed_ = y;
-    probed_.leftCols(3) += eps_ * direction;
-    u_ = std::move(u);
+    probed_.leftCols(3) += eps_ * Au_;
+  }
+
+  /// The loss read on the faces of `surface` from now on (the noise's directions and the probe stay): only with
+  /// the probe along the noise, whose runs do not depend on A.
+  void measure_on(const Control_matrix& surface)
+  {
+    faces_.clear();
+    faces_.reserve(real_faces_);
+    for(std::size_t f = 0; f < real_faces_; ++f)
+    {
+      Face_form form;
+      if(make_face_form(topo_.face(f), surface, form)) faces_.push_back(form);
+    }
+    // tr(A Sigma) and A u
+    input_error_ = 0;
+    Au_ = Control_matrix::Zero(u_.rows(), 3);
+    for(const Face_form& form : faces_)
+      for(int a = 0; a < 3; ++a)
+      {
+        const int i = form.corner[a];
+        const double along = form.normal.dot(N_.row(i).transpose());
+        input_error_ += form.K[a][a] * sigma_[std::size_t(i)] * sigma_[std::size_t(i)] * along * along;
+        for(int c = 0; c < 3; ++c)
+        {
+          const double along_u = form.normal.dot(u_.row(form.corner[c]).transpose());
+          Au_.row(i) += form.K[a][c] * along_u * form.normal.transpose();
+        }
+      }
+  }
+
+  bool measure_on_result(const Control_matrix& surface) override
+  {
+    if(probe_ != Normal_error_probe::NOISE) return false;
+    measure_on(surface);
+    return true;
   }
 
   /// The data moved by the probe: every candidate's probed run starts there.
@@ -96,9 +121,10 @@ public:
   double relative(const Control_matrix& f, const Control_matrix& f_probed) const override
   {
     if(!(input_error_ > 0) || !(eps_ > 0)) return std::nan("");
+    const Control_matrix& weight = probe_ == Normal_error_probe::STIFFNESS ? u_ : Au_;
     double divergence = 0;
     for(Eigen::Index i = 0; i < f.rows(); ++i)
-      divergence += u_.row(i).dot(f_probed.row(i).head(3) - f.row(i).head(3));
+      divergence += weight.row(i).dot(f_probed.row(i).head(3) - f.row(i).head(3));
     return (loss(f, y_) + 2 * divergence / eps_ - input_error_) / input_error_;
   }
 
@@ -159,9 +185,13 @@ private:
     return sum;
   }
 
+  const Triangle_topology& topo_;
+  std::size_t real_faces_;
   const Control_matrix& y_;
+  const std::vector<double>& sigma_;
+  Normal_error_probe probe_;
+  Control_matrix N_, u_, Au_, probed_;
   std::vector<Face_form> faces_;
-  Control_matrix u_, probed_;
   double input_error_ = 0, eps_ = 0;
 };
 

@@ -33,8 +33,9 @@ namespace Anisotropic_fairing {
 namespace internal {
 
 /// The estimate the comparison chooses by: SURE of the positions (the default run's), or the face normals'
-/// error (Normal_error_estimate.h), which the benchmarks measure.
-enum class Risk_kind { POSITIONS, FACE_NORMALS };
+/// error (Normal_error_estimate.h), which the benchmarks measure: read on the prefiltered input with a probe
+/// along A u, or with the probe along the noise and read again on the result kept (`FACE_NORMALS_ON_RESULT`).
+enum class Risk_kind { POSITIONS, FACE_NORMALS, FACE_NORMALS_ON_RESULT };
 
 inline std::unique_ptr<Risk_estimate> make_risk_estimate(Risk_kind kind, const Ghost_layer& layer,
                                                          const Control_matrix& y, const Control_matrix& surface,
@@ -42,6 +43,9 @@ inline std::unique_ptr<Risk_estimate> make_risk_estimate(Risk_kind kind, const G
 {
   if(kind == Risk_kind::FACE_NORMALS)
     return std::make_unique<Normal_error_estimate>(*layer.topology, layer.real_faces, y, surface, sigma, b);
+  if(kind == Risk_kind::FACE_NORMALS_ON_RESULT)
+    return std::make_unique<Normal_error_estimate>(*layer.topology, layer.real_faces, y, surface, sigma, b,
+                                                   Normal_error_probe::NOISE);
   return std::make_unique<Position_error_estimate>(*layer.topology, layer.real_faces, y, surface, sigma, b);
 }
 
@@ -138,7 +142,7 @@ inline double lowest_estimate_like(const Candidate_list& c, const Flow_candidate
 /// The estimate of candidate `x` by a run of its own on the probed input (NaN when it cannot be made); one
 /// that ended short of the noise level has its probe take exactly its steps.
 template <typename Runner>
-double estimate_by_probe_run(const Flow_candidate& x, const Estimate_context& e, Runner& runner)
+double estimate_by_probe_run(Flow_candidate& x, const Estimate_context& e, Runner& runner)
 {
   const bool at_noise = ended_at_noise_level(x.result.report);
   const std::size_t replay = at_noise ? 0 : x.result.report.steps.size();
@@ -151,6 +155,7 @@ double estimate_by_probe_run(const Flow_candidate& x, const Estimate_context& e,
   if(!rp.succeeded() || (rp.stop_reason == Stop_reason::MAXIMUM_STEPS && runner.steps_left() == 0 && replay == 0))
     return std::nan("");   // cut short by the budget
   if(replay > 0 && rp.steps.size() != replay) return std::nan("");   // the probe could not take the same steps
+  x.probe_end = probe.Y;
   return e.risk_of(x.result.Y, probe.Y);
 }
 
@@ -285,8 +290,17 @@ Smoother_choice select_smoother(Candidate_list c, const Selection_context& conte
   bool any_at_noise = false;
   for(const Flow_candidate& x : c) any_at_noise = any_at_noise || ended_at_noise_level(x.result.report);
   estimate_risks(c, Estimate_context{ *basis.estimate }, runner, any_at_noise);
-  if(context.observe) context.observe(c, *basis.estimate);
   std::size_t kept = lowest_estimate(c);
+  // an estimate that can measure on a denoised surface does, on the result kept, twice, and chooses again
+  for(int again = 0; again < 2 && kept < c.size() && basis.estimate->measure_on_result(c[kept].result.Y); ++again)
+  {
+    for(Flow_candidate& x : c)
+      if(!x.carried_is_estimate && std::isfinite(x.risk)) x.risk = basis.estimate->relative(x.result.Y, x.probe_end);
+    // the carried estimates anew, and a run on the probed input for one that could now be the lowest
+    estimate_risks(c, Estimate_context{ *basis.estimate }, runner, any_at_noise);
+    kept = lowest_estimate(c);
+  }
+  if(context.observe) context.observe(c, *basis.estimate);
   if(kept < c.size()) choices = describe_choice(c, kept, any_at_noise, *basis.estimate);
   else std::tie(kept, choices) = first_sound(c, own);
   c[kept].result.report.selected_tensor = c[kept].name;

@@ -99,6 +99,8 @@ public:
   virtual double relative_loss(const Control_matrix& f, const Control_matrix& x) const = 0;
   /// how `choices` names it and its unit
   virtual const char* description() const = 0;
+  /// Measures on `surface` from now on, when the estimate can (its probe does not depend on where it measures).
+  virtual bool measure_on_result(const Control_matrix& surface) { (void)surface; return false; }
 };
 
 /// SURE of the positions along the normals N of a surface, per vertex in units of the noise: the sum of
