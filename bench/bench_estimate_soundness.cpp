@@ -16,9 +16,11 @@
 // and stiffness read on the clean and on the noisy mesh.
 //
 // With `clean`, the estimate reads its normals and stiffness on the clean mesh (an oracle: how much of its
-// error comes from the surface it measures on).
+// error comes from the surface it measures on); with `coupled`, the default run is made on y* = y + omega
+// and the estimate reads them on the default result of y - omega, whose noise is independent of y*'s
+// (coupled_copies; the truth is then that of the results of y*, at twice the noise's variance).
 //
-//   bench_estimate_soundness CASES_DIR [CASE_SUBSTRING] [normals|on-result|positions] [clean]
+//   bench_estimate_soundness CASES_DIR [CASE_SUBSTRING] [normals|on-result|positions] [clean|coupled]
 
 #include "bench_cases.h"
 
@@ -89,7 +91,7 @@ double facewise_loss(const Mesh& result, const Mesh& clean)
 }
 
 std::vector<Candidate_truth> run_case(const std::string& name, const Mesh& noisy, const Mesh& original,
-                                     AFI::Risk_kind kind, bool oracle)
+                                     AFI::Risk_kind kind, const Mesh* measured_on)
 {
   Mesh mesh = noisy;
   const AF::Fairing_options options;
@@ -146,12 +148,12 @@ std::vector<Candidate_truth> run_case(const std::string& name, const Mesh& noisy
       out.push_back(t);
     }
   }, kind, true);
-  if(oracle)
+  if(measured_on)
   {
-    AFI::Control_matrix X(P.rows(), 3);   // the original, in the caller's numbering
+    AFI::Control_matrix X(P.rows(), 3);   // in the caller's numbering
     for(Eigen::Index i = 0; i < P.rows(); ++i)
     {
-      const Point& p = original.point(Mesh::Vertex_index(std::size_t(i)));
+      const Point& p = measured_on->point(Mesh::Vertex_index(std::size_t(i)));
       X.row(i) << p.x(), p.y(), p.z();
     }
     core.measure_on(X);
@@ -178,6 +180,35 @@ std::vector<Candidate_truth> run_case(const std::string& name, const Mesh& noisy
   return out;
 }
 
+// The coupled bootstrap (Oliveira, Lei & Tibshirani 2021): omega of the noise's law, y* = y + omega and
+// y' = y - omega have independent noises (2 sigma^2 each). Returns y*; `measured_on` gets the default run's
+// result of y', a surface that does not follow y*'s noise. sigma: the package's own estimate.
+Mesh coupled_copies(const Mesh& noisy, Mesh& measured_on, unsigned seed)
+{
+  const AFI::Indexed_mesh<Mesh> im(noisy, AFI::Borders::GHOSTED, true);
+  const AFI::Ghost_layer& layer = im.ghost_layer();
+  const AFI::Control_matrix X = im.read_points(get(CGAL::vertex_point, noisy));
+  std::vector<bool> usable(std::size_t(X.rows()), true);
+  for(int v : layer.boundary_vertices) usable[std::size_t(v)] = false;
+  const double sigma = AFI::Noise_estimate(*layer.topology, X, usable).relative_sigma() * mean_edge_length(noisy);
+  const AFI::Control_matrix N = AFI::vertex_normals(*layer.topology, layer.real_faces, X);
+  std::mt19937 rng(seed);
+  std::normal_distribution<double> gauss(0.0, sigma);
+  Mesh plus = noisy, minus = noisy;
+  for(Mesh::Vertex_index v : noisy.vertices())
+  {
+    const std::size_t i = std::size_t(v);
+    if(!usable[i]) continue;
+    const double g = gauss(rng);
+    const Vector w(g * N(Eigen::Index(i), 0), g * N(Eigen::Index(i), 1), g * N(Eigen::Index(i), 2));
+    plus.point(v) = noisy.point(v) + w;
+    minus.point(v) = noisy.point(v) - w;
+  }
+  AF::anisotropic_fairing(minus);
+  measured_on = minus;
+  return plus;
+}
+
 double correlation(const std::vector<double>& a, const std::vector<double>& b)
 {
   const double n = double(a.size());
@@ -199,7 +230,8 @@ int main(int argc, char** argv)
 {
   if(argc < 2)
   {
-    std::fprintf(stderr, "usage: %s CASES_DIR [CASE_SUBSTRING] [normals|on-result|positions] [clean]\n", argv[0]);
+    std::fprintf(stderr, "usage: %s CASES_DIR [CASE_SUBSTRING] [normals|on-result|positions] [clean|coupled]\n",
+                 argv[0]);
     return 2;
   }
   const std::string dir = argv[1], only = argc > 2 ? argv[2] : "";
@@ -207,7 +239,8 @@ int main(int argc, char** argv)
   const AFI::Risk_kind kind = which == "positions"   ? AFI::Risk_kind::POSITIONS
                               : which == "on-result" ? AFI::Risk_kind::FACE_NORMALS_ON_RESULT
                                                      : AFI::Risk_kind::FACE_NORMALS;
-  const bool oracle = argc > 4 && std::string(argv[4]) == "clean";   // measured on the clean mesh: an oracle
+  // measured on the clean mesh (an oracle), or the coupled copies
+  const std::string on = argc > 4 ? argv[4] : "";
   std::vector<std::string> cases;
   for(const auto& e : std::filesystem::directory_iterator(dir))
     if(e.is_directory() && e.path().filename().string().find(only) != std::string::npos)
@@ -224,7 +257,10 @@ int main(int argc, char** argv)
     if(!CGAL::IO::read_polygon_mesh(dir + "/" + name + "/noisy.off", noisy) ||
        !CGAL::IO::read_polygon_mesh(dir + "/" + name + "/original.off", original))
       continue;
-    const std::vector<Candidate_truth> c = run_case(name, noisy, original, kind, oracle);
+    Mesh other;
+    const Mesh y = on == "coupled" ? coupled_copies(noisy, other, 20261129u) : noisy;
+    const Mesh* measured_on = on == "clean" ? &original : on == "coupled" ? &other : nullptr;
+    const std::vector<Candidate_truth> c = run_case(name, y, original, kind, measured_on);
     std::string row;
     std::size_t picked = c.size(), best = c.size(), surrogate = c.size();
     for(std::size_t k = 0; k < c.size(); ++k)
