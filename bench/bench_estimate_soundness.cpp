@@ -18,9 +18,15 @@
 // With `clean`, the estimate reads its normals and stiffness on the clean mesh (an oracle: how much of its
 // error comes from the surface it measures on); with `coupled`, the default run is made on y* = y + omega
 // and the estimate reads them on the default result of y - omega, whose noise is independent of y*'s
-// (coupled_copies; the truth is then that of the results of y*, at twice the noise's variance).
+// (coupled_copies; the truth is then that of the results of y*, at twice the noise's variance). With `minus`, the
+// candidates run on y itself and the estimate reads them on the default result of y - omega (whose noise is
+// independent of y's in part only); with `minus-isotropic` or `minus-anisotropic` on that flow's result of y - omega
+// alone.
+// The face normals' error is estimated with the noise model the default run reads (Noise_model.h): its deviations
+// along and across the normals at each vertex.
 //
-//   bench_estimate_soundness CASES_DIR [CASE_SUBSTRING] [normals|on-result|positions] [clean|coupled]
+//   bench_estimate_soundness CASES_DIR [CASE_SUBSTRING] [normals|on-result|positions]
+//                            [clean|coupled|minus|minus-isotropic|minus-anisotropic]
 
 #include "bench_cases.h"
 
@@ -183,7 +189,7 @@ std::vector<Candidate_truth> run_case(const std::string& name, const Mesh& noisy
 // The coupled bootstrap (Oliveira, Lei & Tibshirani 2021): omega of the noise's law, y* = y + omega and
 // y' = y - omega have independent noises (2 sigma^2 each). Returns y*; `measured_on` gets the default run's
 // result of y', a surface that does not follow y*'s noise. sigma: the package's own estimate.
-Mesh coupled_copies(const Mesh& noisy, Mesh& measured_on, unsigned seed)
+Mesh coupled_copies(const Mesh& noisy, Mesh& measured_on, unsigned seed, const std::string& flow = "")
 {
   const AFI::Indexed_mesh<Mesh> im(noisy, AFI::Borders::GHOSTED, true);
   const AFI::Ghost_layer& layer = im.ghost_layer();
@@ -204,7 +210,12 @@ Mesh coupled_copies(const Mesh& noisy, Mesh& measured_on, unsigned seed)
     plus.point(v) = noisy.point(v) + w;
     minus.point(v) = noisy.point(v) - w;
   }
-  AF::anisotropic_fairing(minus);
+  if(flow == "isotropic")
+    AF::anisotropic_fairing(minus, AF::parameters::diffusion_tensor(AF::Isotropic_diffusion_tensor()));
+  else if(flow == "anisotropic")   // the default run's own tensor, as it chooses it
+    AF::anisotropic_fairing(minus, AF::parameters::diffusion_tensor(AF::Anisotropic_diffusion_tensor(0.1, true, 0.4)));
+  else
+    AF::anisotropic_fairing(minus);
   measured_on = minus;
   return plus;
 }
@@ -230,7 +241,8 @@ int main(int argc, char** argv)
 {
   if(argc < 2)
   {
-    std::fprintf(stderr, "usage: %s CASES_DIR [CASE_SUBSTRING] [normals|on-result|positions] [clean|coupled]\n",
+    std::fprintf(stderr, "usage: %s CASES_DIR [CASE_SUBSTRING] [normals|on-result|positions] "
+                 "[clean|coupled|minus|minus-isotropic|minus-anisotropic]\n",
                  argv[0]);
     return 2;
   }
@@ -258,8 +270,10 @@ int main(int argc, char** argv)
        !CGAL::IO::read_polygon_mesh(dir + "/" + name + "/original.off", original))
       continue;
     Mesh other;
-    const Mesh y = on == "coupled" ? coupled_copies(noisy, other, 20261129u) : noisy;
-    const Mesh* measured_on = on == "clean" ? &original : on == "coupled" ? &other : nullptr;
+    const bool coupled = on == "coupled" || on.rfind("minus", 0) == 0;
+    const Mesh plus = coupled ? coupled_copies(noisy, other, 20261129u, on.size() > 6 ? on.substr(6) : "") : noisy;
+    const Mesh& y = on == "coupled" ? plus : noisy;
+    const Mesh* measured_on = on == "clean" ? &original : coupled ? &other : nullptr;
     const std::vector<Candidate_truth> c = run_case(name, y, original, kind, measured_on);
     std::string row;
     std::size_t picked = c.size(), best = c.size(), surrogate = c.size();

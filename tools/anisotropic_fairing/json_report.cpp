@@ -136,6 +136,16 @@ void add_outcome(Json& j, const Options& o, const Run_record& r)
   j["noise_deviation"] = ran ? number(f.noise_deviation) : Json(nullptr);
   j["noise_displacement"] = ran ? number(f.noise_displacement) : Json(nullptr);
   j["removed_spikes"] = known(ran, f.removed_spikes);
+  if(ran && o.fairing.automatic_parameters())
+    j["noise_model"] = { { "tangential_noise_level", number(f.tangential_noise_level) },
+                         { "noise_level_spread", number(f.noise_level_spread) },
+                         { "tangential_noise_level_spread", number(f.tangential_noise_level_spread) },
+                         { "impulse_share", number(f.impulse_share) },
+                         { "impulse_deviation", number(f.impulse_deviation) },
+                         { "lattice_step", { number(f.lattice_step[0]), number(f.lattice_step[1]),
+                                             number(f.lattice_step[2]) } } };
+  else
+    j["noise_model"] = nullptr;
   j["limit_weight"] = ran ? number(f.limit_weight) : Json(nullptr);
   j["components"] = known(ran, f.components);
   j["rejected_steps"] = known(ran, f.rejected_steps);

@@ -9,6 +9,7 @@
 #include <CGAL/Anisotropic_fairing/Fairing_settings.h>
 
 #include <cstddef>
+#include <array>
 #include <string>
 #include <vector>
 
@@ -186,6 +187,24 @@ struct Fairing_report
   /// estimated, when they were at least 2% of the vertices (impulsive noise; a clean mesh's tips and corners are far
   /// fewer); 0 otherwise
   std::size_t removed_spikes = 0;
+  /// with automatic parameters, the noise model read from the mesh beyond `noise_level` (after the spikes were
+  /// moved): the deviation across the normals, in each direction, in units of the local mean edge length (the noise
+  /// there and the mesh's own irregular sampling alike: motion within the surface changes no normal); 0 otherwise
+  double tangential_noise_level = 0;
+  /// how much the deviation along the normals varies over the surface: the 90th over the 10th percentile of its
+  /// local values, each read from the three rings around a vertex and shrunk by what unit noise reads there (1:
+  /// the same everywhere); the same across the normals
+  double noise_level_spread = 1;
+  double tangential_noise_level_spread = 1;   ///< (see `noise_level_spread`)
+  /// impulses left after the spikes were moved: the share of the vertices more likely hit than not, a two-component
+  /// mixture (a Gaussian core, a wider component) fitted to the noise samples, a hit standing out of its ring alone
+  /// (not along a feature line); 0 without
+  double impulse_share = 0;
+  double impulse_deviation = 0;   ///< the hits' deviation along the normals in units of `noise_level` (0 without)
+  /// the coordinates' lattice, per axis, model units: every value a whole number of steps from the smallest, the
+  /// step below the mean edge length and at least 32 levels (a quantised file: rounding uniform within the cell);
+  /// 0 where the axis is not on one
+  std::array<double, 3> lattice_step{ { 0, 0, 0 } };
   /// how far the written surface moved off the input (as `Fairing_step::noise_displacement`), at the end
   double noise_displacement = 0;
   /// the named parameter `strength`: the noise criterion's target was `Stopping_criteria::noise_discrepancy` times it

@@ -16,6 +16,16 @@ class InitialSurface(TypedDict):
     H_integral: Optional[float]
 
 
+class NoiseModel(TypedDict):
+    """The noise model read from the mesh with automatic parameters (``report['noise_model']``)."""
+    tangential_noise_level: Optional[float]
+    noise_level_spread: Optional[float]
+    tangential_noise_level_spread: Optional[float]
+    impulse_share: Optional[float]
+    impulse_deviation: Optional[float]
+    lattice_step: List[Optional[float]]
+
+
 class FairingStep(TypedDict):
     """One accepted time step (``report['steps'][k]``)."""
     step: int
@@ -107,6 +117,7 @@ FairingReport = TypedDict('FairingReport', {
     'noise_deviation': Optional[float],
     'noise_displacement': Optional[float],
     'removed_spikes': Optional[int],
+    'noise_model': Optional[NoiseModel],
     'limit_weight': Optional[float],
     'components': Optional[int],
     'rejected_steps': Optional[int],

@@ -11,6 +11,9 @@
 // computed exactly per vertex. The estimate is the robust deviation (1.4826 x median absolute
 // value) of d_i / (|row_i| h_i): features and outliers (impulses) do not move it.
 //
+// The part of x_i - c_i within the ring's plane, differenced in the same way, measures the noise across the
+// normals (tangential): its per-vertex samples are kept for the noise model (Noise_model.h) with the normal ones.
+//
 // The same normals and edge lengths measure how far a result moved off the input along the normal,
 // in the same robust statistic: the discrepancy principle stops diffusion when that reaches the noise.
 
@@ -26,6 +29,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <random>
 #include <utility>
 #include <vector>
 
@@ -54,7 +58,7 @@ public:
     normal_.assign(3 * n, 0.0);
     edge_.assign(n, 0.0);
     has_height_.assign(n, 0);
-    std::vector<double> height(n, 0.0);
+    std::vector<double> height(n, 0.0), across(3 * n, 0.0);
     // each vertex on its own (in blocks on every core): its ring's normal, edge length and its height
     parallel_blocks(n, [&](std::size_t first, std::size_t last) {
       std::vector<int> ring;
@@ -67,46 +71,14 @@ public:
         for(int a = 0; a < 3; ++a) normal_[3 * i + std::size_t(a)] = r.normal[a];
         edge_[i] = r.spacing;
         height[i] = r.height;
+        for(int a = 0; a < 3; ++a)
+          across[3 * i + std::size_t(a)] = X(Eigen::Index(i), a) - r.centre[a] - r.height * r.normal[a];
         has_height_[i] = 1;
       }
     });
-    // d_i and the norm of row i of (I - W)^2, over vertices whose whole ring has a height (NaN: none);
-    // the samples are then taken in vertex order, as one loop would
-    std::vector<double> sample(n, std::nan(""));
-    parallel_blocks(n, [&](std::size_t first, std::size_t last) {
-      std::vector<int> ring, inner;
-      std::vector<std::pair<int, double>> row;
-      for(std::size_t i = first; i < last; ++i)
-      {
-        if(!has_height_[i]) continue;
-        read_ring(topo, i, ring);
-        bool complete = true;
-        for(int j : ring) complete = complete && has_height_[std::size_t(j)];
-        if(!complete) continue;
-        const double ki = double(ring.size());
-        double d = height[i];
-        row.clear();
-        row.emplace_back(int(i), 1.0);
-        for(int j : ring)
-        {
-          d -= height[std::size_t(j)] / ki;
-          row.emplace_back(j, -2.0 / ki);   // -1/k_i from r_i, -1/k_i from r_j's own vertex
-          inner.clear();
-          topo.neighbours_ccw(topo.outgoing(j), std::back_inserter(inner));
-          for(int m : inner) row.emplace_back(m, 1.0 / (ki * double(inner.size())));
-        }
-        std::sort(row.begin(), row.end());
-        double norm2 = 0, acc = 0;
-        for(std::size_t k = 0; k < row.size(); ++k)
-        {
-          acc += row[k].second;
-          if(k + 1 == row.size() || row[k + 1].first != row[k].first) { norm2 += acc * acc; acc = 0; }
-        }
-        sample[i] = d / (std::sqrt(norm2) * edge_[i]);
-      }
-    });
+    measure_differences(topo, height, across);
     std::vector<double> samples;
-    for(double v : sample)
+    for(double v : normal_sample_)
       if(!std::isnan(v)) samples.push_back(v);
     samples_ = samples.size();
     relative_sigma_ = robust_deviation(samples);
@@ -115,6 +87,16 @@ public:
   /// sigma / h: the noise's deviation along the normal in units of the local mean edge length
   double relative_sigma() const { return relative_sigma_; }
   std::size_t number_of_samples() const { return samples_; }
+  /// Vertex i's second difference of heights in units of its own deviation under unit noise and of h_i: a sample of
+  /// N(0, (sigma/h)^2) under noise of deviation sigma along the normals (NaN where not measured).
+  double normal_sample(std::size_t i) const { return normal_sample_[i]; }
+  /// The squared length of the same difference of the in-plane offsets, in the same units: (sigma_t/h)^2 times a
+  /// chi-square with 2 degrees of freedom under noise of deviation sigma_t in each direction across the normal.
+  double tangential_sample(std::size_t i) const { return tangential_sample_[i]; }
+  /// The squares of both under unit noise drawn at every vertex (NaN where not measured): the samples of a mesh
+  /// whose noise does not vary, which the noise model's local scales are measured against.
+  const std::vector<double>& normal_null() const { return normal_null_; }
+  const std::vector<double>& tangential_null() const { return tangential_null_; }
   /// h_i (0 where vertex i was not usable)
   double edge_length(std::size_t i) const { return edge_[i]; }
 
@@ -146,7 +128,71 @@ public:
   }
 
 private:
-  std::vector<double> normal_, edge_;
+  // d_i and the norm of row i of (I - W)^2, over vertices whose whole ring has a height (NaN: none), the same of
+  // the in-plane offsets and of unit noise; the samples are then taken in vertex order, as one loop would
+  void measure_differences(const Triangle_topology& topo, const std::vector<double>& height,
+                           const std::vector<double>& across)
+  {
+    const std::size_t n = edge_.size();
+    normal_sample_.assign(n, std::nan(""));
+    tangential_sample_.assign(n, std::nan(""));
+    // the same differences of unit noise drawn at every vertex (of the topology: a ring may reach a ghost vertex
+    // where the caller samples a border): what they give where the noise does not vary
+    Control_matrix unit_noise(Eigen::Index(std::max(n, topo.number_of_vertices())), 3);
+    std::mt19937 rng(20261129u);
+    std::normal_distribution<double> gauss(0.0, 1.0);
+    for(Eigen::Index i = 0; i < unit_noise.rows(); ++i)
+      for(int a = 0; a < 3; ++a) unit_noise(i, a) = gauss(rng);
+    normal_null_.assign(n, std::nan(""));
+    tangential_null_.assign(n, std::nan(""));
+    parallel_blocks(n, [&](std::size_t first, std::size_t last) {
+      std::vector<int> ring, inner;
+      std::vector<std::pair<int, double>> row;
+      for(std::size_t i = first; i < last; ++i)
+      {
+        if(!has_height_[i]) continue;
+        read_ring(topo, i, ring);
+        bool complete = true;
+        for(int j : ring) complete = complete && has_height_[std::size_t(j)];
+        if(!complete) continue;
+        const double ki = double(ring.size());
+        double d = height[i];
+        Eigen::Vector3d t = vec3(&across[3 * i]);
+        row.clear();
+        row.emplace_back(int(i), 1.0);
+        for(int j : ring)
+        {
+          d -= height[std::size_t(j)] / ki;
+          t -= vec3(&across[3 * std::size_t(j)]) / ki;
+          row.emplace_back(j, -2.0 / ki);   // -1/k_i from r_i, -1/k_i from r_j's own vertex
+          inner.clear();
+          topo.neighbours_ccw(topo.outgoing(j), std::back_inserter(inner));
+          for(int m : inner) row.emplace_back(m, 1.0 / (ki * double(inner.size())));
+        }
+        std::sort(row.begin(), row.end());
+        double norm2 = 0, acc = 0;
+        Eigen::RowVector3d null(0, 0, 0);
+        for(std::size_t k = 0; k < row.size(); ++k)
+        {
+          acc += row[k].second;
+          if(k + 1 == row.size() || row[k + 1].first != row[k].first)
+          {
+            norm2 += acc * acc;
+            null += acc * unit_noise.row(row[k].first);
+            acc = 0;
+          }
+        }
+        const double unit2 = norm2 * edge_[i] * edge_[i];
+        normal_sample_[i] = d / std::sqrt(unit2);
+        const Eigen::Vector3d n_i = vec3(&normal_[3 * i]);
+        tangential_sample_[i] = (t - t.dot(n_i) * n_i).squaredNorm() / unit2;
+        normal_null_[i] = null(0) * null(0) / norm2;
+        tangential_null_[i] = (null(1) * null(1) + null(2) * null(2)) / norm2;
+      }
+    });
+  }
+
+  std::vector<double> normal_, edge_, normal_sample_, tangential_sample_, normal_null_, tangential_null_;
   std::vector<char> has_height_;   // (not vector<bool>: written from several threads)
   double relative_sigma_ = 0;
   std::size_t samples_ = 0;

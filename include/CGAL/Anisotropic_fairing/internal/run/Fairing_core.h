@@ -23,6 +23,7 @@
 #include <CGAL/Anisotropic_fairing/internal/flow/Deviation_bound.h>
 #include <CGAL/Anisotropic_fairing/internal/flow/Isolated_spikes.h>
 #include <CGAL/Anisotropic_fairing/internal/flow/Noise_estimate.h>
+#include <CGAL/Anisotropic_fairing/internal/flow/Noise_model.h>
 #include <CGAL/Anisotropic_fairing/internal/flow/Tensor_hooks.h>
 #include <CGAL/Anisotropic_fairing/internal/element/Ghosted_patch_cache.h>
 #include <CGAL/Anisotropic_fairing/internal/element/Linear_element_cache.h>
@@ -242,6 +243,11 @@ private:
       // the comparison of flows runs at the noise level itself, the strength's run after it (fair_with)
       if(compares_flows()) s_.strength = 1;
       choices_ = automatic_choices(*noise_, s_, tensor_chosen, removed_spikes_, n_, scaled_flow);
+      if(given_.mode != Attribute_mode::ATTRIBUTES_ONLY)
+      {
+        noise_model_ = estimate_noise_model(*layer_.topology, X_, sampled_rows(), *noise_, mean_edge_);
+        choices_ += "; " + noise_model_.description();
+      }
     }
     // the automatic tensor's result is compared with the other flows' at the same discrepancy
     // (Tensor_selection.h): when both stop at the noise level
@@ -305,6 +311,7 @@ private:
       }
     Selection_context context{ layer_, input_, noise_sigma_, estimate_surface_ };
     context.kind = risk_kind_;
+    context.model = noise_model_.normal_scale.empty() ? nullptr : &noise_model_;
     if(observer_)
       context.observe = [this](const Candidate_list& c, const Risk_estimate& e) {
         observer_(c, e, ordering_.old_of_new_vertex);
@@ -473,7 +480,8 @@ private:
   {
     estimate_surface_ = oracle_surface_.size() > 0 ? oracle_surface_ : surface;
     const std::vector<double> b = risk_probe_values(n_);
-    made_probe_ = make_risk_estimate(risk_kind_, layer_, input_, estimate_surface_, noise_sigma_, b)->probed();
+    const Noise_model* model = noise_model_.normal_scale.empty() ? nullptr : &noise_model_;
+    made_probe_ = make_risk_estimate(risk_kind_, layer_, input_, estimate_surface_, noise_sigma_, b, model)->probed();
     return made_probe_;
   }
 
@@ -525,6 +533,12 @@ private:
     report.strength = given_.settings.strength;
     report.removed_spikes = removed_spikes_;
     report.noise_deviation = noise_->relative_sigma() * report.mean_edge_length;
+    report.tangential_noise_level = noise_model_.tangential;
+    report.noise_level_spread = noise_model_.normal_spread;
+    report.tangential_noise_level_spread = noise_model_.tangential_spread;
+    report.impulse_share = noise_model_.hit_share;
+    report.impulse_deviation = noise_model_.hit_deviation;
+    report.lattice_step = noise_model_.cell;
     if(d > 0) X_.rightCols(d) /= attribute_scale();
     if(d > 0 && control_points_.cols() == 3 + d) control_points_.rightCols(d) /= attribute_scale();
     const std::vector<int>& old_of_new = ordering_.old_of_new_vertex;
@@ -556,6 +570,7 @@ private:
   double mean_edge_ = 0;
   std::size_t removed_spikes_ = 0;
   std::unique_ptr<Noise_estimate> noise_;
+  Noise_model noise_model_;   // with automatic parameters
   std::string choices_;
   bool select_tensor_ = false;
   Fairing_report report_;

@@ -31,6 +31,7 @@
 #include <array>
 #include <cmath>
 #include <cstddef>
+#include <random>
 #include <vector>
 
 namespace CGAL {
@@ -48,20 +49,36 @@ public:
   /// `y`: the data (the input); `surface`: where the faces' normals and stiffness and the noise's directions are
   /// read; the first `real_faces` faces of `topo` are the surface; `sigma`: the noise's deviation per vertex;
   /// `b`: the probe's standard normal numbers, one per vertex.
+  /// `tangential`: the noise's deviation across the normals per vertex, in each direction (empty: none).
   Normal_error_estimate(const Triangle_topology& topo, std::size_t real_faces, const Control_matrix& y,
                         const Control_matrix& surface, const std::vector<double>& sigma, const std::vector<double>& b,
-                        Normal_error_probe probe = Normal_error_probe::STIFFNESS)
-    : topo_(topo), real_faces_(real_faces), y_(y), sigma_(sigma), probe_(probe),
+                        Normal_error_probe probe = Normal_error_probe::STIFFNESS,
+                        const std::vector<double>& tangential = std::vector<double>())
+    : topo_(topo), real_faces_(real_faces), y_(y), sigma_(sigma), tangential_(tangential), probe_(probe),
       N_(vertex_normals(topo, real_faces, surface))
   {
     const Eigen::Index n = y.rows();
     u_ = Control_matrix::Zero(n, 3);
     for(Eigen::Index i = 0; i < n; ++i) u_.row(i) = sigma[std::size_t(i)] * b[std::size_t(i)] * N_.row(i);
+    if(!tangential_.empty())
+    {
+      // the probe across the normals: two more standard normal numbers per vertex, in a frame of its plane
+      std::mt19937 rng(20261129u);
+      std::normal_distribution<double> gauss(0.0, 1.0);
+      for(Eigen::Index i = 0; i < n; ++i)
+      {
+        const Eigen::Vector3d nrm = N_.row(i).transpose();
+        const Eigen::Vector3d t1 = nrm.unitOrthogonal(), t2 = nrm.cross(t1);
+        const double c = gauss(rng), d = gauss(rng);
+        if(nrm.squaredNorm() > 0) u_.row(i) += tangential_[std::size_t(i)] * (c * t1 + d * t2).transpose();
+      }
+    }
     measure_on(surface);
     if(probe_ == Normal_error_probe::NOISE)
     {
       eps_ = risk_probe;
-      probed_ = probed_input(y, N_, sigma, b);   // y + risk_probe u
+      probed_ = y;
+      probed_.leftCols(3) += risk_probe * u_;
       return;
     }
     // the probe moves the data by about risk_probe times the noise
@@ -94,8 +111,9 @@ public:
       for(int a = 0; a < 3; ++a)
       {
         const int i = form.corner[a];
-        const double along = form.normal.dot(N_.row(i).transpose());
-        input_error_ += form.K[a][a] * sigma_[std::size_t(i)] * sigma_[std::size_t(i)] * along * along;
+        const double along = form.normal.dot(N_.row(i).transpose()), s = sigma_[std::size_t(i)];
+        const double t = tangential_.empty() ? 0.0 : tangential_[std::size_t(i)];
+        input_error_ += form.K[a][a] * (s * s * along * along + t * t * (1 - along * along));
         for(int c = 0; c < 3; ++c)
         {
           const double along_u = form.normal.dot(u_.row(form.corner[c]).transpose());
@@ -188,7 +206,7 @@ private:
   const Triangle_topology& topo_;
   std::size_t real_faces_;
   const Control_matrix& y_;
-  const std::vector<double>& sigma_;
+  std::vector<double> sigma_, tangential_;
   Normal_error_probe probe_;
   Control_matrix N_, u_, Au_, probed_;
   std::vector<Face_form> faces_;

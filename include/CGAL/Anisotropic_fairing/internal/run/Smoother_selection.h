@@ -13,6 +13,7 @@
 #define CGAL_ANISOTROPIC_FAIRING_INTERNAL_RUN_SMOOTHER_SELECTION_H
 
 #include <CGAL/Anisotropic_fairing/Fairing_report.h>
+#include <CGAL/Anisotropic_fairing/internal/flow/Noise_model.h>
 #include <CGAL/Anisotropic_fairing/internal/mesh/Ghost_layer.h>
 #include <CGAL/Anisotropic_fairing/internal/run/Flow_candidates.h>
 #include <CGAL/Anisotropic_fairing/internal/run/Normal_error_estimate.h>
@@ -37,16 +38,30 @@ namespace internal {
 /// along A u, or with the probe along the noise and read again on the result kept (`FACE_NORMALS_ON_RESULT`).
 enum class Risk_kind { POSITIONS, FACE_NORMALS, FACE_NORMALS_ON_RESULT };
 
+/// `model`: the noise model (Noise_model.h) the face normals' error is estimated with: its deviation along the
+/// normals and across them at each vertex, `sigma` scaled by the model's local factors (none: `sigma` along the
+/// normals only).
 inline std::unique_ptr<Risk_estimate> make_risk_estimate(Risk_kind kind, const Ghost_layer& layer,
                                                          const Control_matrix& y, const Control_matrix& surface,
-                                                         const std::vector<double>& sigma, const std::vector<double>& b)
+                                                         const std::vector<double>& sigma, const std::vector<double>& b,
+                                                         const Noise_model* model = nullptr)
 {
-  if(kind == Risk_kind::FACE_NORMALS)
-    return std::make_unique<Normal_error_estimate>(*layer.topology, layer.real_faces, y, surface, sigma, b);
-  if(kind == Risk_kind::FACE_NORMALS_ON_RESULT)
-    return std::make_unique<Normal_error_estimate>(*layer.topology, layer.real_faces, y, surface, sigma, b,
-                                                   Normal_error_probe::NOISE);
-  return std::make_unique<Position_error_estimate>(*layer.topology, layer.real_faces, y, surface, sigma, b);
+  if(kind == Risk_kind::POSITIONS)
+    return std::make_unique<Position_error_estimate>(*layer.topology, layer.real_faces, y, surface, sigma, b);
+  std::vector<double> along = sigma, across;
+  if(model && model->normal > 0)
+  {
+    across.assign(sigma.size(), 0.0);
+    for(std::size_t i = 0; i < sigma.size(); ++i)
+    {
+      along[i] = sigma[i] * model->normal_at(i) / model->normal;
+      across[i] = sigma[i] * model->tangential_at(i) / model->normal;
+    }
+  }
+  const Normal_error_probe probe =
+    kind == Risk_kind::FACE_NORMALS ? Normal_error_probe::STIFFNESS : Normal_error_probe::NOISE;
+  return std::make_unique<Normal_error_estimate>(*layer.topology, layer.real_faces, y, surface, along, b, probe,
+                                                 across);
 }
 
 /// What the comparison reads besides its candidates.
@@ -57,6 +72,7 @@ struct Selection_context
   const std::vector<double>& sigma;     // the noise's deviation at each vertex (0: none to estimate)
   const Control_matrix& surface;        // the surface the estimate measures on, made by the first run (empty: none)
   Risk_kind kind = Risk_kind::POSITIONS;
+  const Noise_model* model = nullptr;   // the noise model the face normals' error is estimated with (none: sigma)
   // benchmarks: what sees the candidates once estimated, and the estimate
   std::function<void(const Candidate_list&, const Risk_estimate&)> observe = nullptr;
 };
@@ -237,7 +253,7 @@ struct Estimate_basis
   bool made() const { return bool(estimate); }
   void make(const Control_matrix& surface, const Selection_context& context, const std::vector<double>& b)
   {
-    estimate = make_risk_estimate(context.kind, context.layer, context.input, surface, context.sigma, b);
+    estimate = make_risk_estimate(context.kind, context.layer, context.input, surface, context.sigma, b, context.model);
   }
 };
 

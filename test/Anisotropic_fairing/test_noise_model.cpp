@@ -1,0 +1,173 @@
+// The noise model read from a mesh alone (internal/flow/Noise_model.h) against the noise put on it.
+//
+// A unit icosphere of 10242 vertices (smooth, nearly regular: its own reading is close to nothing) under noise of
+// known law, h its mean edge length:
+// - 0.2 h along the normals: read 0.2 h along (10%), little across (below 0.35 of it: what the normal noise leaks
+//   into the in-plane offsets); the same in every direction: 0.2 h both ways (10%, 15%);
+// - 0.05 h on the upper half, 0.15 h on the lower (where the differences are still linear in the noise: at 0.3 h
+//   the ring planes and spacings follow it, and 0.3 h reads as 0.25 h): the scales' means on the caps |z| > 0.3 in
+//   a ratio of 3 (2.4 to 3.6), where homoscedastic noise reads a spread (90th over 10th percentile) below 1.3;
+// - 0.1 h plus 2% of the vertices thrown 1.5 h off along the normal: a hit share of 1.5 to 2.5%, probability above
+//   one half on at least 90% of the vertices thrown and on at most 0.5% of the others; none without impulses;
+// - the coordinates rounded to a lattice of 0.25 h: its step found to 1e-9; none without rounding, none for a
+//   lattice coarser than the edges.
+
+#include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
+#include <CGAL/Surface_mesh.h>
+
+#include <CGAL/Anisotropic_fairing/internal/flow/Noise_model.h>
+#include <CGAL/Anisotropic_fairing/internal/mesh/Indexed_mesh.h>
+
+#include "test_support/check.h"
+#include "test_support/mesh_generators.h"
+
+#include <cmath>
+#include <random>
+#include <string>
+#include <vector>
+
+typedef CGAL::Exact_predicates_inexact_constructions_kernel K;
+typedef CGAL::Surface_mesh<K::Point_3> Mesh;
+namespace AFI = CGAL::Anisotropic_fairing::internal;
+
+namespace {
+
+struct Sphere
+{
+  Mesh mesh;
+  AFI::Control_matrix x;
+  double h = 0;
+  std::unique_ptr<AFI::Indexed_mesh<Mesh>> im;
+
+  Sphere()
+  {
+    AF_test::soup_to_mesh(AF_test::icosphere_soup(5), mesh);
+    im.reset(new AFI::Indexed_mesh<Mesh>(mesh, AFI::Borders::GHOSTED, true));
+    x = im->read_points(get(CGAL::vertex_point, mesh));
+    double sum = 0;
+    std::size_t count = 0;
+    for(Mesh::Edge_index e : mesh.edges())
+    {
+      sum += std::sqrt(CGAL::squared_distance(mesh.point(mesh.source(mesh.halfedge(e))),
+                                              mesh.point(mesh.target(mesh.halfedge(e)))));
+      ++count;
+    }
+    h = sum / double(count);
+  }
+
+  AFI::Noise_model model(const AFI::Control_matrix& y) const
+  {
+    const AFI::Ghost_layer& layer = im->ghost_layer();
+    const std::vector<bool> usable(std::size_t(y.rows()), true);
+    const AFI::Noise_estimate noise(*layer.topology, y, usable);
+    return AFI::estimate_noise_model(*layer.topology, y, usable, noise, h);
+  }
+};
+
+// x moved by sigma(i) (in h) along the radius and, with `across`, the same in both directions across it
+template <typename Sigma>
+AFI::Control_matrix noisy(const Sphere& s, Sigma sigma, bool across, unsigned seed)
+{
+  AFI::Control_matrix y = s.x;
+  std::mt19937 rng(seed);
+  std::normal_distribution<double> gauss(0.0, 1.0);
+  for(Eigen::Index i = 0; i < y.rows(); ++i)
+  {
+    const Eigen::RowVector3d n = s.x.row(i).head<3>().normalized();
+    Eigen::RowVector3d e = gauss(rng) * n;
+    if(across)
+    {
+      const Eigen::RowVector3d g(gauss(rng), gauss(rng), gauss(rng));
+      e += g - g.dot(n) * n;
+    }
+    y.row(i).head<3>() += sigma(i) * s.h * e;
+  }
+  return y;
+}
+
+void along_and_across(const Sphere& s)
+{
+  const auto constant = [](Eigen::Index) { return 0.2; };
+  const AFI::Noise_model along = s.model(noisy(s, constant, false, 1));
+  const AFI::Noise_model both = s.model(noisy(s, constant, true, 2));
+  std::printf("along the normals: %s\nin every direction: %s\n", along.description().c_str(),
+              both.description().c_str());
+  AF_CHECK(std::abs(along.normal / 0.2 - 1) < 0.1, "noise along the normals is read along them");
+  AF_CHECK(along.tangential < 0.35 * along.normal, "noise along the normals reads little across them");
+  AF_CHECK(std::abs(both.normal / 0.2 - 1) < 0.1, "isotropic noise is read along the normals");
+  AF_CHECK(std::abs(both.tangential / 0.2 - 1) < 0.15, "isotropic noise is read across the normals");
+  AF_CHECK(along.normal_spread < 1.3 && both.tangential_spread < 1.3, "homoscedastic noise reads no spread");
+  AF_CHECK(along.hit_share < 0.002, "Gaussian noise reads no impulses");
+  AF_CHECK(along.cell[0] == 0 && along.cell[1] == 0 && along.cell[2] == 0, "unrounded coordinates: no lattice");
+}
+
+void over_the_surface(const Sphere& s)
+{
+  const AFI::Noise_model m = s.model(noisy(s, [&](Eigen::Index i) { return s.x(i, 2) > 0 ? 0.05 : 0.15; }, false, 3));
+  double lower = 0, upper = 0, nl = 0, nu = 0;
+  for(Eigen::Index i = 0; i < s.x.rows(); ++i)
+  {
+    if(s.x(i, 2) < -0.3) { lower += m.normal_scale[std::size_t(i)]; nl += 1; }
+    if(s.x(i, 2) > 0.3) { upper += m.normal_scale[std::size_t(i)]; nu += 1; }
+  }
+  const double ratio = (lower / nl) / (upper / nu);
+  std::printf("0.05 h above, 0.15 h below: %s; the caps' scales in a ratio of %.3f\n", m.description().c_str(), ratio);
+  AF_CHECK(ratio > 2.4 && ratio < 3.6, "the deviation's variation over the surface is read");
+}
+
+void impulses(const Sphere& s)
+{
+  AFI::Control_matrix y = noisy(s, [](Eigen::Index) { return 0.1; }, false, 4);
+  std::mt19937 rng(5);
+  std::uniform_real_distribution<double> unit(0.0, 1.0);
+  std::vector<bool> thrown(std::size_t(y.rows()), false);
+  for(Eigen::Index i = 0; i < y.rows(); ++i)
+    if(unit(rng) < 0.02)
+    {
+      thrown[std::size_t(i)] = true;
+      y.row(i).head<3>() += (unit(rng) < 0.5 ? -1.5 : 1.5) * s.h * s.x.row(i).head<3>().normalized();
+    }
+  const AFI::Noise_model m = s.model(y);
+  double hit = 0, thrown_count = 0, false_hit = 0, others = 0;
+  for(std::size_t i = 0; i < thrown.size(); ++i)
+  {
+    (thrown[i] ? thrown_count : others) += 1;
+    if(m.hit_probability[i] > 0.5) (thrown[i] ? hit : false_hit) += 1;
+  }
+  std::printf("2%% thrown 1.5 h: %s; %.0f of %.0f thrown found, %.0f of %.0f others\n", m.description().c_str(), hit,
+              thrown_count, false_hit, others);
+  AF_CHECK(m.hit_share > 0.015 && m.hit_share < 0.025, "the share of impulses is read");
+  AF_CHECK(hit >= 0.9 * thrown_count && false_hit <= 0.005 * others, "the vertices hit are found");
+}
+
+void lattice(const Sphere& s)
+{
+  const AFI::Control_matrix y = noisy(s, [](Eigen::Index) { return 0.2; }, false, 6);
+  const auto rounded = [&](double step) {
+    AFI::Control_matrix r = y;
+    for(Eigen::Index i = 0; i < r.rows(); ++i)
+      for(int a = 0; a < 3; ++a) r(i, a) = 0.1 + step * std::round((r(i, a) - 0.1) / step);
+    return r;
+  };
+  const double step = 0.25 * s.h;
+  const AFI::Noise_model fine = s.model(rounded(step)), coarse = s.model(rounded(2 * s.h));
+  std::printf("rounded to 0.25 h: %s\n", fine.description().c_str());
+  bool found = true;
+  for(int a = 0; a < 3; ++a) found = found && std::abs(fine.cell[std::size_t(a)] / step - 1) < 1e-9;
+  AF_CHECK(found, "the lattice's step is found");
+  AF_CHECK(coarse.cell[0] == 0 && coarse.cell[1] == 0 && coarse.cell[2] == 0,
+           "a lattice coarser than the edges is not noise");
+}
+
+} // namespace
+
+int main()
+{
+  const Sphere s;
+  std::printf("icosphere: %ld vertices, h = %.5f\n", long(s.x.rows()), s.h);
+  along_and_across(s);
+  over_the_surface(s);
+  impulses(s);
+  lattice(s);
+  return AF_test::report();
+}
