@@ -212,8 +212,13 @@ Mesh coupled_copies(const Mesh& noisy, Mesh& measured_on, unsigned seed, const s
   }
   if(flow == "isotropic")
     AF::anisotropic_fairing(minus, AF::parameters::diffusion_tensor(AF::Isotropic_diffusion_tensor()));
-  else if(flow == "anisotropic")   // the default run's own tensor, as it chooses it
-    AF::anisotropic_fairing(minus, AF::parameters::diffusion_tensor(AF::Anisotropic_diffusion_tensor(0.1, true, 0.4)));
+  else if(flow == "anisotropic")   // the default run's own tensor, its constants in units of h (Automatic_parameters.h)
+  {
+    const double h = mean_edge_length(noisy);
+    const AFI::Automatic_parameters a;
+    AF::anisotropic_fairing(minus, AF::parameters::diffusion_tensor(
+                                     AF::Anisotropic_diffusion_tensor(a.lambda / h, false, a.epsilon * h * h)));
+  }
   else
     AF::anisotropic_fairing(minus);
   measured_on = minus;
