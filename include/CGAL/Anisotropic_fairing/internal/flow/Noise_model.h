@@ -12,8 +12,9 @@
 //   averaging give to unit noise drawn at every vertex (what sampling alone makes): a homoscedastic mesh reads
 //   nearly 1 everywhere, a scanner's depth-dependent noise keeps its variation;
 // - impulses: the samples in units of their local deviation as a Gaussian core plus a wider component (a
-//   two-component mixture fitted by EM), each vertex given its probability of belonging to the wider one; a vertex
-//   two of whose ring neighbours stand out on the same side lies on a feature line, not on a hit, and gets none;
+//   two-component mixture fitted by EM, both deviations free, from a few starts), each vertex given its
+//   probability of belonging to the wider one; a vertex two of whose ring neighbours stand out on the same side
+//   lies on a feature line, not on a hit, and gets none;
 // - quantisation: coordinates on a lattice (every value of an axis a whole number of steps from the smallest),
 //   whose rounding is uniform within the cell; found only where the step is below the mean edge length and the
 //   axis has at least 32 levels (a part designed on a grid is not noise).
@@ -33,6 +34,7 @@
 #include <cstdio>
 #include <random>
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace CGAL {
@@ -194,48 +196,82 @@ inline std::vector<double> local_scales(const Triangle_topology& topo, const std
   return scale;
 }
 
-// The two-component mixture of z (unit core): the wider component's share and deviation, each z's probability of
-// belonging to it.
-inline void fit_impulses(const std::vector<double>& z, double& share, double& deviation, std::vector<double>& p)
+// The two-component mixture of z: the wider component's share, the core's and the wider one's deviations, each
+// z's probability of belonging to the wider one. The core is free: on a part whose creases widen the robust
+// deviation that scales z, or where hits are many, the core comes out below 1 (a unit core then read no
+// impulses on a fandisk with a tenth of its vertices hit).
+struct Mixture
 {
-  share = 0.01;
-  deviation = 10;
-  p.assign(z.size(), 0.0);
+  double share = 0, core = 1, wide = 0;
+  std::vector<double> p;
+  double log_likelihood = -HUGE_VAL;
+};
+
+// EM from one start (the core at 1)
+inline Mixture fit_mixture_from(const std::vector<double>& z, double share, double wide)
+{
+  Mixture m;
+  m.share = share;
+  m.wide = wide;
+  m.p.assign(z.size(), 0.0);
   const double tiny = 1.0 / double(std::max<std::size_t>(z.size(), 1));
-  for(int iteration = 0; iteration < 100; ++iteration)
+  const auto density = [&m](double x, bool wider) {
+    const double s = wider ? m.wide : m.core;
+    return (wider ? m.share : 1 - m.share) / s * std::exp(-0.5 * x * x / (s * s));
+  };
+  for(int iteration = 0; iteration < 200; ++iteration)
   {
     // each probability on its own (on every core), the sums in vertex order
     parallel_blocks(z.size(), [&](std::size_t first, std::size_t last) {
       for(std::size_t i = first; i < last; ++i)
       {
         if(std::isnan(z[i])) continue;
-        const double wide = share / deviation * std::exp(-0.5 * z[i] * z[i] / (deviation * deviation));
-        const double core = (1 - share) * std::exp(-0.5 * z[i] * z[i]);
-        p[i] = wide + core > 0 ? wide / (wide + core) : 1.0;
+        const double wider = density(z[i], true), core = density(z[i], false);
+        m.p[i] = wider + core > 0 ? wider / (wider + core) : 1.0;
       }
     });
-    double sp = 0, spz2 = 0, count = 0;
+    double sp = 0, spz2 = 0, sq = 0, sqz2 = 0;
     for(std::size_t i = 0; i < z.size(); ++i)
       if(!std::isnan(z[i]))
       {
-        sp += p[i];
-        spz2 += p[i] * z[i] * z[i];
-        count += 1;
+        sp += m.p[i];
+        spz2 += m.p[i] * z[i] * z[i];
+        sq += 1 - m.p[i];
+        sqz2 += (1 - m.p[i]) * z[i] * z[i];
       }
-    if(!(count > 0) || !(sp > tiny)) break;
-    const double share_next = sp / count, deviation_next = std::max(std::sqrt(spz2 / sp), 1.0);
-    const bool settled =
-      std::abs(share_next - share) < 1e-4 * share && std::abs(deviation_next - deviation) < 1e-4 * deviation;
-    share = share_next;
-    deviation = deviation_next;
+    if(!(sp > tiny) || !(sq > tiny) || !(sqz2 > 0)) return Mixture();
+    const double next_share = sp / (sp + sq), core = std::sqrt(sqz2 / sq), next_wide = std::sqrt(spz2 / sp);
+    const bool settled = std::abs(next_share - m.share) < 1e-4 * m.share &&
+                         std::abs(core - m.core) < 1e-4 * m.core && std::abs(next_wide - m.wide) < 1e-4 * m.wide;
+    m.share = next_share;
+    m.core = core;
+    m.wide = next_wide;
     if(settled) break;
   }
-  if(!(deviation >= core_ratio) || !(share * double(z.size()) >= 1))
+  m.log_likelihood = 0;
+  for(double x : z)
+    if(!std::isnan(x)) m.log_likelihood += std::log(density(x, true) + density(x, false));
+  return m;
+}
+
+// The mixture of highest likelihood from a few starts (a sparse, a common and a dominant wider component: EM
+// from one start can settle on two equal components), none unless the wider one is core_ratio times the core.
+inline Mixture fit_mixture(const std::vector<double>& z)
+{
+  Mixture best;
+  for(const auto& start : { std::make_pair(0.01, 10.0), std::make_pair(0.1, 4.0), std::make_pair(0.5, 2.5) })
   {
-    share = 0;
-    deviation = 0;
-    std::fill(p.begin(), p.end(), 0.0);
+    Mixture m = fit_mixture_from(z, start.first, start.second);
+    if(m.core > 0 && m.wide >= core_ratio * m.core && m.share * double(z.size()) >= 1 &&
+       m.log_likelihood > best.log_likelihood)
+      best = std::move(m);
   }
+  if(best.p.size() != z.size())
+  {
+    best = Mixture();
+    best.p.assign(z.size(), 0.0);
+  }
+  return best;
 }
 
 // The probability of each z (NaN: none) being a hit: the mixture's, kept where z stands out of its ring most (its
@@ -244,16 +280,15 @@ inline void fit_impulses(const std::vector<double>& z, double& share, double& de
 inline double find_hits(const Triangle_topology& topo, const std::vector<double>& z, std::vector<double>& p)
 {
   const std::size_t n = z.size();
-  double share = 0, deviation = 0, count = 0;
-  std::vector<double> mixture;
-  fit_impulses(z, share, deviation, mixture);
+  double count = 0;
+  const Mixture mixture = fit_mixture(z);
   p.assign(n, 0.0);
   std::vector<int> ring;
   for(std::size_t i = 0; i < n; ++i)
   {
     if(std::isnan(z[i])) continue;
     count += 1;
-    if(!(mixture[i] > 0)) continue;
+    if(!(mixture.p[i] > 0)) continue;
     read_ring(topo, i, ring);
     int beside = 0;
     bool largest = true;
@@ -261,9 +296,9 @@ inline double find_hits(const Triangle_topology& topo, const std::vector<double>
     {
       if(std::size_t(j) >= n || std::isnan(z[std::size_t(j)])) continue;
       largest = largest && std::abs(z[std::size_t(j)]) <= std::abs(z[i]);
-      beside += mixture[std::size_t(j)] > 0.5 && z[std::size_t(j)] * z[i] > 0;
+      beside += mixture.p[std::size_t(j)] > 0.5 && z[std::size_t(j)] * z[i] > 0;
     }
-    p[i] = largest && beside < 2 ? mixture[i] : 0.0;
+    p[i] = largest && beside < 2 ? mixture.p[i] : 0.0;
   }
   return count;
 }
