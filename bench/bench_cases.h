@@ -342,7 +342,8 @@ std::vector<Case> held_out_cases(const std::string& dir)
 // normals and in random directions, impulsive noise (a tenth of the vertices moved by 1 h along the
 // normal, either way), quantisation to 8 and 10 bits, and a range scanner's depth noise: along one
 // viewing direction, of deviation 0.2 h / max(|n . d|, 0.25), so that it grows where the surface is
-// seen at a grazing angle. Seeds depend on the model's place and the kind only.
+// seen at a grazing angle, and correlated noise as scanners make (Gaussian along the normals averaged once
+// with its ring's mean, 0.3 h RMS). Seeds depend on the model's place and the kind only.
 std::vector<Case> peer_cases(const std::string& dir)
 {
   std::vector<Case> cases;
@@ -396,6 +397,31 @@ std::vector<Case> peer_cases(const std::string& dir)
         c.noisy.point(v) = c.noisy.point(v) + gauss(rng) * 0.2 * h / std::max(facing, 0.25) * d;
       }
       c.note += "depth noise along one viewing direction, 0.2 h / max(|n.d|, 0.25)";
+    });
+    kind("correlated0.3", [seed](Case& c) {
+      const std::vector<Vector> n = area_weighted_normals(c.original);
+      const double h = mean_edge_length(c.original);
+      std::mt19937 rng(seed + 4);
+      std::normal_distribution<double> gauss(0.0, 1.0);
+      std::vector<double> u(c.original.number_of_vertices()), w(u.size(), 0.0);
+      for(double& x : u) x = gauss(rng);
+      double square = 0;
+      for(Mesh::Vertex_index v : c.original.vertices())
+      {
+        double ring = 0, count = 0;
+        for(Mesh::Vertex_index j : CGAL::vertices_around_target(c.original.halfedge(v), c.original))
+        {
+          ring += u[j.idx()];
+          count += 1;
+        }
+        w[v.idx()] = 0.5 * u[v.idx()] + (count > 0 ? 0.5 * ring / count : 0.5 * u[v.idx()]);
+        square += w[v.idx()] * w[v.idx()];
+      }
+      const double scale = 0.3 * h / std::sqrt(square / double(w.size()));
+      c.noisy = c.original;
+      for(Mesh::Vertex_index v : c.noisy.vertices())
+        c.noisy.point(v) = c.noisy.point(v) + scale * w[v.idx()] * n[v.idx()];
+      c.note += "correlated noise along the normals, 0.3 h RMS: Gaussian averaged once with its ring's mean (half each)";
     });
   }
   return cases;

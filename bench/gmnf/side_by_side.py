@@ -253,7 +253,7 @@ def write_table(a, records, names):
              f"{os.cpu_count()} cores (`nproc`), {cpu}, {platform.machine()}. GMNF and BNF are the authors' classes "
              "(bldeng/GuidedDenoising) through `gmnf_driver` and are **single threaded**; our tool "
              f"(`anisotropic_fairing`, Release) uses the machine's {os.cpu_count()} threads (TBB). "
-             "Cases: `bench/write_cases` (the denoising pairs and 5 models × 6 generated noises).")
+             "Cases: `bench/write_cases` (the denoising pairs and 5 models × 7 generated noises).")
     L.append("")
     L.append("* err: mean face-normal error in degrees against original.off (score.py). dist: mean vertex "
              "distance in units of the original's mean edge length. folds: interior edges whose two face normals "
