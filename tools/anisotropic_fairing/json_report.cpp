@@ -134,6 +134,8 @@ void add_outcome(Json& j, const Options& o, const Run_record& r)
   j["choices"] = known(ran, f.choices);
   j["noise_level"] = ran ? number(f.noise_level) : Json(nullptr);
   j["noise_deviation"] = ran ? number(f.noise_deviation) : Json(nullptr);
+  j["noise_correlation"] = ran ? number(f.noise_correlation) : Json(nullptr);
+  j["noise_correlation_factor"] = ran ? number(f.noise_correlation_factor) : Json(nullptr);
   j["noise_displacement"] = ran ? number(f.noise_displacement) : Json(nullptr);
   j["removed_spikes"] = known(ran, f.removed_spikes);
   if(ran && o.fairing.automatic_parameters())

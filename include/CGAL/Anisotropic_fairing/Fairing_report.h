@@ -179,10 +179,17 @@ struct Fairing_report
   /// the time step, the stopping rule and (unless given) the tensor were chosen from the mesh (no time step was given)
   bool automatic_parameters = false;
   /// the input's noise estimated from the mesh itself: deviation along the normal in units of the local mean edge
-  /// length (robust)
+  /// length (robust; times `noise_correlation_factor` where the noise is correlated over the surface)
   double noise_level = 0;
   /// the same in model units, \f$\sigma \approx\f$ `noise_level` \f$\times\f$ `mean_edge_length`
   double noise_deviation = 0;
+  /// how far the noise is correlated over the surface: the point of the curve of unit noise averaged k times with
+  /// its ring's mean nearest to what the noise's second differences read at lags 1 and 2 (0: independent from
+  /// vertex to vertex)
+  double noise_correlation = 0;
+  /// the factor `noise_level` includes for that correlation: 1 unless the noise lies on that curve nearer averaged
+  /// noise than independent noise (then 1 / the reading of unit noise there; about 1.5 for noise averaged once)
+  double noise_correlation_factor = 1;
   /// with automatic parameters: vertices that stood out of their ring alone, moved to its centroid before the noise was
   /// estimated, when they were at least 2% of the vertices (impulsive noise; a clean mesh's tips and corners are far
   /// fewer); 0 otherwise

@@ -115,6 +115,8 @@ FairingReport = TypedDict('FairingReport', {
     'choices': Optional[str],
     'noise_level': Optional[float],
     'noise_deviation': Optional[float],
+    'noise_correlation': Optional[float],
+    'noise_correlation_factor': Optional[float],
     'noise_displacement': Optional[float],
     'removed_spikes': Optional[int],
     'noise_model': Optional[NoiseModel],

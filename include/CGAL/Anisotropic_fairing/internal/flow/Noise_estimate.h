@@ -20,6 +20,7 @@
 #ifndef CGAL_ANISOTROPIC_FAIRING_INTERNAL_FLOW_NOISE_ESTIMATE_H
 #define CGAL_ANISOTROPIC_FAIRING_INTERNAL_FLOW_NOISE_ESTIMATE_H
 
+#include <CGAL/Anisotropic_fairing/internal/flow/Noise_correlation.h>
 #include <CGAL/Anisotropic_fairing/internal/flow/Ring_plane.h>
 #include <CGAL/Anisotropic_fairing/internal/types/Control_matrix.h>
 #include <CGAL/Anisotropic_fairing/internal/types/Parallel_blocks.h>
@@ -28,6 +29,7 @@
 
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <random>
 #include <utility>
@@ -81,11 +83,25 @@ public:
     for(double v : normal_sample_)
       if(!std::isnan(v)) samples.push_back(v);
     samples_ = samples.size();
-    relative_sigma_ = robust_deviation(samples);
+    read_sigma_ = robust_deviation(samples);
+    std::array<double, correlation_steps + 1> null_sigma;
+    for(std::size_t k = 0; k < null_sigma.size(); ++k)
+    {
+      std::vector<double> v;
+      for(double x : correlated_null_[k])
+        if(!std::isnan(x)) v.push_back(x);
+      null_sigma[k] = robust_deviation(v);
+    }
+    correlation_ = measure_noise_correlation(topo, normal_sample_, read_sigma_, correlated_null_, null_sigma);
+    relative_sigma_ = read_sigma_ * correlation_.factor();
   }
 
-  /// sigma / h: the noise's deviation along the normal in units of the local mean edge length
+  /// sigma / h: the noise's deviation along the normal in units of the local mean edge length, its correlation
+  /// over the surface taken into account (Noise_correlation.h)
   double relative_sigma() const { return relative_sigma_; }
+  /// The robust deviation of the samples themselves: sigma / h for noise independent from vertex to vertex.
+  double read_sigma() const { return read_sigma_; }
+  const Noise_correlation& correlation() const { return correlation_; }
   std::size_t number_of_samples() const { return samples_; }
   /// Vertex i's second difference of heights in units of its own deviation under unit noise and of h_i: a sample of
   /// N(0, (sigma/h)^2) under noise of deviation sigma along the normals (NaN where not measured).
@@ -145,6 +161,8 @@ private:
       for(int a = 0; a < 3; ++a) unit_noise(i, a) = gauss(rng);
     normal_null_.assign(n, std::nan(""));
     tangential_null_.assign(n, std::nan(""));
+    const Correlated_null_samples field = averaged_unit_noise(topo, unit_noise, n);
+    for(auto& v : correlated_null_) v.assign(n, std::nan(""));
     parallel_blocks(n, [&](std::size_t first, std::size_t last) {
       std::vector<int> ring, inner;
       std::vector<std::pair<int, double>> row;
@@ -172,6 +190,7 @@ private:
         std::sort(row.begin(), row.end());
         double norm2 = 0, acc = 0;
         Eigen::RowVector3d null(0, 0, 0);
+        std::array<double, correlation_steps + 1> averaged{};
         for(std::size_t k = 0; k < row.size(); ++k)
         {
           acc += row[k].second;
@@ -179,6 +198,7 @@ private:
           {
             norm2 += acc * acc;
             null += acc * unit_noise.row(row[k].first);
+            for(std::size_t f = 0; f < averaged.size(); ++f) averaged[f] += acc * field[f][std::size_t(row[k].first)];
             acc = 0;
           }
         }
@@ -188,13 +208,52 @@ private:
         tangential_sample_[i] = (t - t.dot(n_i) * n_i).squaredNorm() / unit2;
         normal_null_[i] = null(0) * null(0) / norm2;
         tangential_null_[i] = (null(1) * null(1) + null(2) * null(2)) / norm2;
+        for(std::size_t f = 0; f < averaged.size(); ++f) correlated_null_[f][i] = averaged[f] / std::sqrt(norm2);
       }
     });
   }
 
+  // The first column of `unit_noise` averaged k = 0..correlation_steps times with its ring's mean (half each) at
+  // the first `n` vertices (a ghost vertex's fan is open: it keeps its value), each scaled to unit root mean square.
+  static Correlated_null_samples averaged_unit_noise(const Triangle_topology& topo, const Control_matrix& unit_noise,
+                                                     std::size_t n)
+  {
+    const std::size_t m = std::size_t(unit_noise.rows());
+    Correlated_null_samples field;
+    field[0].resize(m);
+    for(std::size_t i = 0; i < m; ++i) field[0][i] = unit_noise(Eigen::Index(i), 0);
+    for(std::size_t k = 1; k < field.size(); ++k)
+    {
+      field[k] = field[k - 1];
+      parallel_blocks(std::min(m, n), [&](std::size_t first, std::size_t last) {
+        std::vector<int> ring;
+        for(std::size_t i = first; i < last; ++i)
+        {
+          if(topo.outgoing(int(i)) < 0) continue;
+          read_ring(topo, i, ring);
+          double sum = 0;
+          for(int j : ring) sum += field[k - 1][std::size_t(j)];
+          if(!ring.empty()) field[k][i] = 0.5 * field[k - 1][i] + 0.5 * sum / double(ring.size());
+        }
+      });
+    }
+    for(std::vector<double>& f : field)
+    {
+      double square = 0;
+      for(double x : f) square += x * x;
+      const double rms = std::sqrt(square / double(std::max<std::size_t>(f.size(), 1)));
+      if(rms > 0)
+        for(double& x : f) x /= rms;
+    }
+    return field;
+  }
+
   std::vector<double> normal_, edge_, normal_sample_, tangential_sample_, normal_null_, tangential_null_;
   std::vector<char> has_height_;   // (not vector<bool>: written from several threads)
-  double relative_sigma_ = 0;
+  // the signed samples of unit noise averaged k times with its ring's mean, in units of its deviation
+  Correlated_null_samples correlated_null_;
+  double relative_sigma_ = 0, read_sigma_ = 0;
+  Noise_correlation correlation_;
   std::size_t samples_ = 0;
 };
 

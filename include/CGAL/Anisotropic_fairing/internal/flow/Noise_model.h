@@ -49,7 +49,7 @@ struct Noise_model
   std::vector<double> normal_scale, tangential_scale;
   double normal_spread = 1, tangential_spread = 1;   // the scales' 90th over their 10th percentile
   double hit_share = 0;        // impulses: the share of the measured vertices more likely hit than not
-  double hit_deviation = 0;    // the hits' deviation in units of `normal`
+  double hit_deviation = 0;    // the hits' deviation in units of the samples' own (Noise_estimate::read_sigma)
   std::vector<double> hit_probability;
   std::array<double, 3> cell{ { 0, 0, 0 } };   // the lattice's step per axis, model units (0: none)
   double mean_edge = 0;                          // h, model units
@@ -356,11 +356,13 @@ inline Noise_model estimate_noise_model(const Triangle_topology& topo, const Con
   // impulses against local scales clipped at the global deviation only (a spike widens them little); the local
   // scales then leave out those hits and their rings, and the impulses are read again against them
   double first_spread = 1;
-  const std::vector<double> first = d::local_scales(topo, normal2, m.normal * m.normal, noise.normal_null(), 1.0,
+  // the samples in units of the deviation they read (the noise's, less what its correlation hides from them)
+  const double read = noise.read_sigma();
+  const std::vector<double> first = d::local_scales(topo, normal2, read * read, noise.normal_null(), 1.0,
                                                     first_spread, 1);
   std::vector<double> z(n, std::nan(""));
   for(std::size_t i = 0; i < n; ++i)
-    if(!std::isnan(normal2[i]) && m.normal > 0) z[i] = noise.normal_sample(i) / (m.normal * first[i]);
+    if(!std::isnan(normal2[i]) && read > 0) z[i] = noise.normal_sample(i) / (read * first[i]);
   d::find_hits(topo, z, m.hit_probability);
   std::vector<double> quiet = normal2;
   std::vector<int> ring;
@@ -372,7 +374,7 @@ inline Noise_model estimate_noise_model(const Triangle_topology& topo, const Con
       for(int j : ring)
         if(std::size_t(j) < n) quiet[std::size_t(j)] = std::nan("");
     }
-  m.normal_scale = d::local_scales(topo, quiet, m.normal * m.normal, noise.normal_null(), 1.0, m.normal_spread);
+  m.normal_scale = d::local_scales(topo, quiet, read * read, noise.normal_null(), 1.0, m.normal_spread);
   for(std::size_t i = 0; i < n; ++i)
     if(!std::isnan(z[i])) z[i] *= first[i] / m.normal_scale[i];
   const double count = d::find_hits(topo, z, m.hit_probability);
@@ -382,7 +384,7 @@ inline Noise_model estimate_noise_model(const Triangle_topology& topo, const Con
     if(m.hit_probability[i] > 0.5)
     {
       hits += 1;
-      hits_z2 += std::pow(noise.normal_sample(i) / m.normal, 2);
+      hits_z2 += std::pow(noise.normal_sample(i) / read, 2);
     }
   m.hit_share = count > 0 ? hits / count : 0.0;
   m.hit_deviation = hits > 0 ? std::sqrt(hits_z2 / hits) : 0.0;

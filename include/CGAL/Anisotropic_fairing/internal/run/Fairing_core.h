@@ -246,7 +246,7 @@ private:
       if(given_.mode != Attribute_mode::ATTRIBUTES_ONLY)
       {
         noise_model_ = estimate_noise_model(*layer_.topology, X_, sampled_rows(), *noise_, mean_edge_);
-        choices_ += "; " + noise_model_.description();
+        choices_ += "; " + noise_model_.description() + "; " + noise_->correlation().description();
       }
     }
     // the automatic tensor's result is compared with the other flows' at the same discrepancy
@@ -533,6 +533,8 @@ private:
     report.strength = given_.settings.strength;
     report.removed_spikes = removed_spikes_;
     report.noise_deviation = noise_->relative_sigma() * report.mean_edge_length;
+    report.noise_correlation = noise_->correlation().k;
+    report.noise_correlation_factor = noise_->correlation().factor();
     report.tangential_noise_level = noise_model_.tangential;
     report.noise_level_spread = noise_model_.normal_spread;
     report.tangential_noise_level_spread = noise_model_.tangential_spread;
