@@ -248,6 +248,17 @@ bool read_case_arguments(int argc, char** argv, const std::string& default_parts
   return false;
 }
 
+// The folders of <cases_dir> (write_cases' output) whose names contain `only`, sorted.
+std::vector<std::string> case_folders(const std::string& cases_dir, const std::string& only)
+{
+  std::vector<std::string> cases;
+  for(const auto& entry : std::filesystem::directory_iterator(cases_dir))
+    if(entry.is_directory() && entry.path().filename().string().find(only) != std::string::npos)
+      cases.push_back(entry.path().filename().string());
+  std::sort(cases.begin(), cases.end());
+  return cases;
+}
+
 // The names of the denoising pairs <pairs_dir>/<Name>/{Noisy,Original}.obj, sorted; none if the directory is missing.
 std::vector<std::string> denoising_pairs(const std::string& pairs_dir)
 {

@@ -258,11 +258,7 @@ int main(int argc, char** argv)
                                                      : AFI::Risk_kind::FACE_NORMALS;
   // measured on the clean mesh (an oracle), or the coupled copies
   const std::string on = argc > 4 ? argv[4] : "";
-  std::vector<std::string> cases;
-  for(const auto& e : std::filesystem::directory_iterator(dir))
-    if(e.is_directory() && e.path().filename().string().find(only) != std::string::npos)
-      cases.push_back(e.path().filename().string());
-  std::sort(cases.begin(), cases.end());
+  const std::vector<std::string> cases = case_folders(dir, only);
   std::printf("| case | candidate: estimate / the loss it estimates / the same linearised at the clean surface / "
               "relative squared angle / mean angle, steps, stop | picked | best | picked / best |\n"
               "|---|---|---|---|---:|\n");

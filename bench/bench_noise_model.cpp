@@ -94,11 +94,7 @@ int main(int argc, char** argv)
     return 2;
   }
   const std::string dir = argv[1], only = argc > 2 ? argv[2] : "";
-  std::vector<std::string> cases;
-  for(const auto& e : std::filesystem::directory_iterator(dir))
-    if(e.is_directory() && e.path().filename().string().find(only) != std::string::npos)
-      cases.push_back(e.path().filename().string());
-  std::sort(cases.begin(), cases.end());
+  const std::vector<std::string> cases = case_folders(dir, only);
   std::printf("| case | true along / across (ratio), spread across, impulses | model along / across (ratio), spread "
               "along / across, impulses (deviation), lattice step / h | the clean mesh's reading: along / across, "
               "impulses |\n|---|---|---|---|\n");

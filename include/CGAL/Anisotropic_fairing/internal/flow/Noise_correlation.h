@@ -70,28 +70,34 @@ struct Noise_correlation
 
 namespace noise_correlation_detail {
 
-// The correlations of v (NaN: none), clipped at `clip`, with its mean over each vertex's ring and next ring.
-inline std::pair<double, double> lag_correlations(const Triangle_topology& topo, const std::vector<double>& v,
-                                                  double clip)
+// Each field's correlations (NaN: none), clipped at its `clip`, with its mean over each vertex's ring and next
+// ring; the fields are measured at the same vertices (the first one's), whose two rings are read once for all.
+template <std::size_t F>
+std::array<std::pair<double, double>, F> lag_correlations(const Triangle_topology& topo,
+                                                          const std::array<const std::vector<double>*, F>& field,
+                                                          const std::array<double, F>& clip)
 {
-  const std::size_t n = v.size();
-  const auto value = [&](int j) {
-    return std::size_t(j) < n && !std::isnan(v[std::size_t(j)]) ? std::clamp(v[std::size_t(j)], -clip, clip)
+  const std::size_t n = field[0]->size();
+  const auto value = [&](std::size_t f, int j) {
+    const std::vector<double>& v = *field[f];
+    return std::size_t(j) < n && !std::isnan(v[std::size_t(j)]) ? std::clamp(v[std::size_t(j)], -clip[f], clip[f])
                                                                  : std::nan("");
   };
-  std::vector<double> first(n, std::nan("")), second(n, std::nan(""));
+  std::array<std::vector<double>, F> first, second;
+  for(std::size_t f = 0; f < F; ++f)
+  {
+    first[f].assign(n, std::nan(""));
+    second[f].assign(n, std::nan(""));
+  }
   parallel_blocks(n, [&](std::size_t begin, std::size_t end) {
     std::vector<int> ring, inner, next;
     for(std::size_t i = begin; i < end; ++i)
     {
-      if(std::isnan(v[i]) || topo.outgoing(int(i)) < 0) continue;
+      if(std::isnan((*field[0])[i]) || topo.outgoing(int(i)) < 0) continue;
       read_ring(topo, i, ring);
       next.clear();
-      double s1 = 0, c1 = 0;
       for(int j : ring)
       {
-        const double x = value(j);
-        if(!std::isnan(x)) { s1 += x; c1 += 1; }
         if(std::size_t(j) >= n || topo.outgoing(j) < 0) continue;   // a ghost vertex's fan is open
         inner.clear();
         topo.neighbours_ccw(topo.outgoing(j), std::back_inserter(inner));
@@ -99,23 +105,31 @@ inline std::pair<double, double> lag_correlations(const Triangle_topology& topo,
       }
       std::sort(next.begin(), next.end());
       next.erase(std::unique(next.begin(), next.end()), next.end());
-      double s2 = 0, c2 = 0;
-      for(int m : next)
+      next.erase(std::remove_if(next.begin(), next.end(), [&](int m) {
+                   return std::size_t(m) == i || std::find(ring.begin(), ring.end(), m) != ring.end();
+                 }), next.end());
+      const auto mean = [&](std::size_t f, const std::vector<int>& around) {
+        double sum = 0, count = 0;
+        for(int j : around)
+        {
+          const double x = value(f, j);
+          if(!std::isnan(x)) { sum += x; count += 1; }
+        }
+        return count > 0 ? sum / count : std::nan("");
+      };
+      for(std::size_t f = 0; f < F; ++f)
       {
-        if(std::size_t(m) == i || std::find(ring.begin(), ring.end(), m) != ring.end()) continue;
-        const double x = value(m);
-        if(!std::isnan(x)) { s2 += x; c2 += 1; }
+        first[f][i] = mean(f, ring);
+        second[f][i] = mean(f, next);
       }
-      if(c1 > 0) first[i] = s1 / c1;
-      if(c2 > 0) second[i] = s2 / c2;
     }
   });
   // Pearson's correlation over the vertices that have both, summed in vertex order
-  const auto correlation = [&](const std::vector<double>& mean) {
+  const auto correlation = [&](std::size_t f, const std::vector<double>& mean) {
     double sx = 0, sy = 0, sxx = 0, syy = 0, sxy = 0, count = 0;
     for(std::size_t i = 0; i < n; ++i)
     {
-      const double x = value(int(i)), y = mean[i];
+      const double x = value(f, int(i)), y = mean[i];
       if(std::isnan(x) || std::isnan(y)) continue;
       sx += x; sy += y; sxx += x * x; syy += y * y; sxy += x * y; count += 1;
     }
@@ -123,7 +137,9 @@ inline std::pair<double, double> lag_correlations(const Triangle_topology& topo,
     const double cxy = sxy - sx * sy / count, cxx = sxx - sx * sx / count, cyy = syy - sy * sy / count;
     return cxx > 0 && cyy > 0 ? cxy / std::sqrt(cxx * cyy) : std::nan("");
   };
-  return { correlation(first), correlation(second) };
+  std::array<std::pair<double, double>, F> lags;
+  for(std::size_t f = 0; f < F; ++f) lags[f] = { correlation(f, first[f]), correlation(f, second[f]) };
+  return lags;
 }
 
 } // namespace noise_correlation_detail
@@ -141,10 +157,18 @@ inline Noise_correlation measure_noise_correlation(const Triangle_topology& topo
   namespace d = noise_correlation_detail;
   Noise_correlation c;
   if(!(sigma > 0)) return c;
-  std::tie(c.lag1, c.lag2) = d::lag_correlations(topo, samples, 3 * sigma);
-  std::array<std::pair<double, double>, correlation_steps + 1> curve;
-  for(int k = 0; k <= correlation_steps; ++k)
-    curve[std::size_t(k)] = d::lag_correlations(topo, null[std::size_t(k)], 3 * null_sigma[std::size_t(k)]);
+  // the samples and the null's fields in one pass over the rings: all are measured at the same vertices
+  constexpr std::size_t F = correlation_steps + 2;
+  std::array<const std::vector<double>*, F> field{ { &samples } };
+  std::array<double, F> clip{ { 3 * sigma } };
+  for(std::size_t k = 0; k + 1 < F; ++k)
+  {
+    field[k + 1] = &null[k];
+    clip[k + 1] = 3 * null_sigma[k];
+  }
+  const std::array<std::pair<double, double>, F> lags = d::lag_correlations(topo, field, clip);
+  std::tie(c.lag1, c.lag2) = lags[0];
+  const std::pair<double, double>* curve = lags.data() + 1;
   if(std::isnan(c.lag1) || std::isnan(c.lag2)) return c;
   // the nearest point of the polyline through the curve's points
   for(int k = 0; k < correlation_steps; ++k)
