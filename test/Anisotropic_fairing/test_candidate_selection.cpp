@@ -83,16 +83,16 @@ Selection select(Stand_in_flows& flows, const AFI::Ghost_layer& layer, const AFI
                  const std::vector<double>& sigmas, const AFI::Control_matrix& surface = AFI::Control_matrix())
 {
   AFI::Candidate_list candidates = AFI::default_candidates(2);
+  const std::vector<double> b = AFI::risk_probe_values(std::size_t(input.rows()));
   AFI::Control_matrix probe;
   if(surface.size() > 0)
-    probe = AFI::probed_input(input, AFI::vertex_normals(*layer.topology, layer.real_faces, surface), sigmas,
-                              AFI::risk_probe_values(std::size_t(input.rows())));
+    probe = AFI::probed_input(input, AFI::vertex_normals(*layer.topology, layer.real_faces, surface), sigmas, b);
   AFI::Flow_request first{ candidates[0].settings, "", input };
   first.probe_start = surface.size() > 0 ? &probe : nullptr;
   candidates[0].result = flows.run(first);
   candidates[0].made = true;
   AFI::Smoother_choice choice =
-    AFI::select_smoother(std::move(candidates), AFI::Selection_context{ layer, input, sigmas, surface }, flows);
+    AFI::select_smoother(std::move(candidates), AFI::Selection_context{ layer, input, sigmas, b, surface }, flows);
   Selection s;
   s.report = choice.kept.result.report;
   s.X = choice.kept.result.Y;

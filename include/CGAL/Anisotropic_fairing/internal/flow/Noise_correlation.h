@@ -144,6 +144,57 @@ std::array<std::pair<double, double>, F> lag_correlations(const Triangle_topolog
 
 } // namespace noise_correlation_detail
 
+/// `field` averaged once with its ring's mean (half each) at the first `n` vertices of the topology; a vertex
+/// without a fan keeps its value.
+inline std::vector<double> averaged_with_ring(const Triangle_topology& topo, const std::vector<double>& field,
+                                              std::size_t n)
+{
+  std::vector<double> out = field;
+  parallel_blocks(std::min(field.size(), n), [&](std::size_t first, std::size_t last) {
+    std::vector<int> ring;
+    for(std::size_t i = first; i < last; ++i)
+    {
+      if(topo.outgoing(int(i)) < 0) continue;
+      read_ring(topo, i, ring);
+      double sum = 0;
+      for(int j : ring) sum += field[std::size_t(j)];
+      if(!ring.empty()) out[i] = 0.5 * field[i] + 0.5 * sum / double(ring.size());
+    }
+  });
+  return out;
+}
+
+/// `field` scaled to unit root mean square (left as it is when it is zero).
+inline void to_unit_rms(std::vector<double>& field)
+{
+  double square = 0;
+  for(double x : field) square += x * x;
+  const double rms = std::sqrt(square / double(std::max<std::size_t>(field.size(), 1)));
+  if(rms > 0)
+    for(double& x : field) x /= rms;
+}
+
+/// Independent unit noise `b` made as correlated as the noise read (`c`), so that a risk estimate probes the
+/// flows with noise of the mesh's kind: averaged with its ring's mean as many times as the curve's point c.k (its
+/// whole numbers of averagings on either side weighted by the fraction), at unit root mean square. `b` itself
+/// where the reading is not corrected.
+inline std::vector<double> correlated_like(const Triangle_topology& topo, const std::vector<double>& b, std::size_t n,
+                                           const Noise_correlation& c)
+{
+  if(!c.corrected || !(c.k > 0)) return b;
+  const int below = int(std::floor(c.k));
+  const double t = c.k - below;
+  std::vector<double> lower = b;
+  for(int k = 0; k < below; ++k) lower = averaged_with_ring(topo, lower, n);
+  to_unit_rms(lower);
+  if(t == 0) return lower;
+  std::vector<double> upper = averaged_with_ring(topo, lower, n);
+  to_unit_rms(upper);
+  for(std::size_t i = 0; i < lower.size(); ++i) lower[i] = (1 - t) * lower[i] + t * upper[i];
+  to_unit_rms(lower);
+  return lower;
+}
+
 /// The signed samples of unit noise averaged k = 0..correlation_steps times, in units of its deviation.
 typedef std::array<std::vector<double>, correlation_steps + 1> Correlated_null_samples;
 

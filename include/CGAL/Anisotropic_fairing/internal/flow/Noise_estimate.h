@@ -222,29 +222,8 @@ private:
     Correlated_null_samples field;
     field[0].resize(m);
     for(std::size_t i = 0; i < m; ++i) field[0][i] = unit_noise(Eigen::Index(i), 0);
-    for(std::size_t k = 1; k < field.size(); ++k)
-    {
-      field[k] = field[k - 1];
-      parallel_blocks(std::min(m, n), [&](std::size_t first, std::size_t last) {
-        std::vector<int> ring;
-        for(std::size_t i = first; i < last; ++i)
-        {
-          if(topo.outgoing(int(i)) < 0) continue;
-          read_ring(topo, i, ring);
-          double sum = 0;
-          for(int j : ring) sum += field[k - 1][std::size_t(j)];
-          if(!ring.empty()) field[k][i] = 0.5 * field[k - 1][i] + 0.5 * sum / double(ring.size());
-        }
-      });
-    }
-    for(std::vector<double>& f : field)
-    {
-      double square = 0;
-      for(double x : f) square += x * x;
-      const double rms = std::sqrt(square / double(std::max<std::size_t>(f.size(), 1)));
-      if(rms > 0)
-        for(double& x : f) x /= rms;
-    }
+    for(std::size_t k = 1; k < field.size(); ++k) field[k] = averaged_with_ring(topo, field[k - 1], n);
+    for(std::vector<double>& f : field) to_unit_rms(f);
     return field;
   }
 

@@ -217,6 +217,8 @@ private:
     for(std::size_t i = 0; i < n_; ++i)
       if(components_.of_vertex[i] >= 0)
         noise_sigma_[i] = noise_->relative_sigma() * component_edge_[std::size_t(components_.of_vertex[i])];
+    // the risk estimate's probe, as correlated over the surface as the noise read (independent where it is not)
+    probe_values_ = correlated_like(*layer_.topology, risk_probe_values(n_), n_, noise_->correlation());
   }
 
   // the noise stop measures the limit surface, the surface faired, whichever positions are written: a
@@ -309,7 +311,7 @@ private:
         own.made = true;
         break;
       }
-    Selection_context context{ layer_, input_, noise_sigma_, estimate_surface_ };
+    Selection_context context{ layer_, input_, noise_sigma_, probe_values_, estimate_surface_ };
     context.kind = risk_kind_;
     context.model = noise_model_.normal_scale.empty() ? nullptr : &noise_model_;
     if(observer_)
@@ -479,9 +481,9 @@ private:
   Control_matrix make_probe(const Control_matrix& surface)
   {
     estimate_surface_ = oracle_surface_.size() > 0 ? oracle_surface_ : surface;
-    const std::vector<double> b = risk_probe_values(n_);
     const Noise_model* model = noise_model_.normal_scale.empty() ? nullptr : &noise_model_;
-    made_probe_ = make_risk_estimate(risk_kind_, layer_, input_, estimate_surface_, noise_sigma_, b, model)->probed();
+    made_probe_ =
+      make_risk_estimate(risk_kind_, layer_, input_, estimate_surface_, noise_sigma_, probe_values_, model)->probed();
     return made_probe_;
   }
 
@@ -568,7 +570,7 @@ private:
   Control_matrix X_, input_, control_points_, estimate_surface_, made_probe_, oracle_surface_;
   std::vector<bool> constrained_, border_, isolated_, written_;
   Mesh_components components_;
-  std::vector<double> component_edge_, noise_sigma_;
+  std::vector<double> component_edge_, noise_sigma_, probe_values_;
   double mean_edge_ = 0;
   std::size_t removed_spikes_ = 0;
   std::unique_ptr<Noise_estimate> noise_;

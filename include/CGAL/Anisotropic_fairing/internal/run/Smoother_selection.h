@@ -70,6 +70,7 @@ struct Selection_context
   const Ghost_layer& layer;
   const Control_matrix& input;          // the start of every candidate
   const std::vector<double>& sigma;     // the noise's deviation at each vertex (0: none to estimate)
+  const std::vector<double>& probe;     // the estimate's probe, in units of sigma (Tensor_selection.h)
   const Control_matrix& surface;        // the surface the estimate measures on, made by the first run (empty: none)
   Risk_kind kind = Risk_kind::POSITIONS;
   const Noise_model* model = nullptr;   // the noise model the face normals' error is estimated with (none: sigma)
@@ -299,7 +300,7 @@ Smoother_choice select_smoother(Candidate_list c, const Selection_context& conte
   const std::optional<std::string> why_not = nothing_to_compare(c[own], runner.steps_left());
   if(why_not) return { std::move(c[own]), *why_not };
   std::string choices;
-  const std::vector<double> b = risk_probe_values(std::size_t(context.input.rows()));
+  const std::vector<double>& b = context.probe;
   Estimate_basis basis;
   run_candidates(c, context, b, runner, basis);
   // a candidate that stopped early is estimated only when none reached the noise level

@@ -6,7 +6,9 @@
 // 1981, by Monte Carlo as Ramani, Blu and Unser 2008). For noise of deviation sigma along the normals n, a
 // result f(y) of the data y has the expected squared error along the normals
 //   sum_i (n_i . (y_i - f_i))^2 - N sigma^2 + 2 sigma^2 div f,   div f ~ b . (f(y + e b) - f(y)) / e,
-// b standard normal along each normal, e small: f is also made from the input moved by e b.
+// b standard normal along each normal, e small: f is also made from the input moved by e b. Where the noise is
+// correlated over the surface (Noise_correlation.h), b is unit noise as correlated (correlated_like): the
+// divergence then reads tr(J C), C the noise's correlation, which is what the error holds (Eldar 2009).
 // The error counts along the normals only, so a flow's tangential drift (the uniform weights move vertices
 // along the surface) costs nothing. sigma is the package's own noise estimate; n, the normals of the input's
 // prefiltered surface M_eps, or else of a candidate's result: the noisy mesh's own normals are too far off at
@@ -47,7 +49,8 @@ inline Control_matrix vertex_normals(const Triangle_topology& topo, std::size_t 
   return N;
 }
 
-/// The probe of the risk estimate: per vertex, a standard normal number (fixed seed: the run is repeatable).
+/// The probe of the risk estimate: per vertex, a standard normal number (fixed seed: the run is repeatable),
+/// made as correlated as the noise by the caller.
 inline std::vector<double> risk_probe_values(std::size_t n)
 {
   std::mt19937 rng(20261125u);
