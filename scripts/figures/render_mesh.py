@@ -2,7 +2,8 @@
 """Renders triangle meshes side by side into one PNG with VTK (Debian's python3-vtk9).
 
     /usr/bin/python3 render_mesh.py --output FILE.png [--title T]... [--size WxH] [--scalar NAME]
-                                    [--range LO HI] [--view AZIMUTH,ELEVATION] [--edges] MESH [MESH...]
+                                    [--range LO HI] [--view AZIMUTH,ELEVATION] [--up X,Y,Z] [--edges]
+                                    MESH [MESH...]
 
 One panel per mesh (the n-th --title is its title), all seen by one camera fitted to the first mesh so
 that they line up; flat shading (one normal per face), so that noise shows as it is. --scalar NAME
@@ -568,14 +569,17 @@ def main(argv):
     parser.add_argument("--scalar", default=None, metavar="NAME", help="colour by this PLY vertex property")
     parser.add_argument("--range", nargs=2, type=float, default=None, metavar=("LO", "HI"))
     parser.add_argument("--view", default="25,20", metavar="AZ,EL", help="camera azimuth,elevation in degrees")
+    parser.add_argument("--up", default="0,1,0", metavar="X,Y,Z", help="the view-up before the turn (default 0,1,0)")
     parser.add_argument("--edges", action="store_true", help="draw the mesh edges")
     args = parser.parse_args(argv)
     try:
         size = tuple(int(x) for x in args.size.lower().split("x")) if args.size else (800 * len(args.meshes), 700)
         view = tuple(float(x) for x in args.view.split(","))
-        assert len(size) == 2 and min(size) > 0 and len(view) == 2
+        up = tuple(float(x) for x in args.up.split(","))
+        assert len(size) == 2 and min(size) > 0 and len(view) == 2 and len(up) == 3 and any(up)
     except (ValueError, AssertionError):
-        fail("--size %s / --view %s: expected WxH (e.g. 1600x700) and AZIMUTH,ELEVATION" % (args.size, args.view))
+        fail("--size %s / --view %s / --up %s: expected WxH (e.g. 1600x700), AZIMUTH,ELEVATION and X,Y,Z (not zero)"
+             % (args.size, args.view, args.up))
     import_vtk()   # a clear message before anything else when VTK is missing
     ensure_display()
     try:
@@ -585,7 +589,7 @@ def main(argv):
             panel.scalars = args.scalar if args.scalar in panel.mesh["point_data"] else None
         if args.scalar and all(p.scalars is None for p in panels):
             raise ValueError("no mesh has the vertex property '%s'" % args.scalar)
-        render_panels(panels, args.output, size=size, view=view,
+        render_panels(panels, args.output, size=size, view=view, up=up,
                       scalar_range=tuple(args.range) if args.range else None)
     except (ValueError, KeyError, IndexError, StopIteration, OSError) as error:
         fail(str(error) or type(error).__name__)
