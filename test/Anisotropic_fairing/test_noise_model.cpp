@@ -30,7 +30,6 @@
 #include "test_support/check.h"
 #include "test_support/mesh_generators.h"
 
-#include <algorithm>
 #include <cmath>
 #include <random>
 #include <string>
