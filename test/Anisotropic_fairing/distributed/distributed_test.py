@@ -5,7 +5,7 @@
 # the run with a message naming the element and no output; what is not supported is refused.
 #   distributed_test.py --tool anisotropic_fairing --mpi anisotropic_fairing_mpi --mpiexec mpirun
 #                       --data DIR --example-data DIR --work DIR --case NAME
-import argparse, json, math, os, random, shutil, subprocess, sys
+import argparse, json, math, os, random, shutil, subprocess, sys, tempfile
 
 TIGHT = ["-ksp_rtol", "1e-13", "-prefilter_ksp_rtol", "1e-14", "-ksp_max_it", "20000", "-prefilter_ksp_max_it", "20000"]
 TOLERANCE = 1e-9
@@ -120,6 +120,17 @@ def two_components(source, target):
 
 def main():
     os.environ.setdefault("OMP_NUM_THREADS", "1")   # hypre's threads would compete with the other process
+    # Open MPI keeps its session directory under TMPDIR/ompi.HOST.UID and removes that directory when a run
+    # ends; two tests running at once (ctest -j) then race on it ("A call to mkdir was unable to create the
+    # desired directory", seen in CI). Each test gets a private, short TMPDIR (socket paths are limited).
+    session = tempfile.mkdtemp(prefix="af-mpi-")
+    os.environ["TMPDIR"] = session
+    try:
+        run_case()
+    finally:
+        shutil.rmtree(session, ignore_errors=True)
+
+def run_case():
     ap = argparse.ArgumentParser()
     for a in ("--tool", "--mpi", "--mpiexec", "--data", "--example-data", "--work", "--case"): ap.add_argument(a, required=True)
     args = ap.parse_args()
