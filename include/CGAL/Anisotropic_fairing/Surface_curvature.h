@@ -70,15 +70,17 @@ inline Principal_curvatures principal_curvatures(const Quadrature_point_geometry
   // G = R R^T with R lower triangular; the G-orthonormal frame is C = R^-T Y
   if(!(q.det > 0) || !(q.g11 > 0)) return pc;
   const double r11 = std::sqrt(q.g11), r21 = q.g12 / r11, r22 = std::sqrt(q.det) / r11;
-  // the unit normal
-  std::vector<double> nu(std::size_t(k), 0.0);
+  // the unit normal (on the stack for up to 8 components: the tensor asks at every quadrature point)
+  double small[8] = { 0, 0, 0, 0, 0, 0, 0, 0 };
+  std::vector<double> large(k > 8 ? std::size_t(k) : 0, 0.0);
+  double* nu = k > 8 ? large.data() : small;
   if(k == 3)
   {
-    internal::vec3(nu.data()) = internal::vec3(q.t1).cross(internal::vec3(q.t2));
+    internal::vec3(nu) = internal::vec3(q.t1).cross(internal::vec3(q.t2));
   }
-  else mean_curvature_vector(q, nu.data());
+  else mean_curvature_vector(q, nu);
   double norm = 0;
-  for(double x : nu) norm += x * x;
+  for(int c = 0; c < k; ++c) norm += nu[c] * nu[c];
   norm = std::sqrt(norm);
   const bool normal_defined = k == 3 ? norm > 0 : norm > undefined_mean_curvature && norm > 0;
   // second fundamental form B = [t_ij . nu]
@@ -86,9 +88,9 @@ inline Principal_curvatures principal_curvatures(const Quadrature_point_geometry
   if(normal_defined)
     for(int c = 0; c < k; ++c)
     {
-      b11 += q.t11[c] * nu[std::size_t(c)] / norm;
-      b12 += q.t12[c] * nu[std::size_t(c)] / norm;
-      b22 += q.t22[c] * nu[std::size_t(c)] / norm;
+      b11 += q.t11[c] * nu[c] / norm;
+      b12 += q.t12[c] * nu[c] / norm;
+      b22 += q.t22[c] * nu[c] / norm;
     }
   // S = R^-1 B R^-T (symmetric 2x2)
   const double i11 = 1 / r11, i21 = -r21 / (r11 * r22), i22 = 1 / r22;   // R^-1 = [[i11, 0], [i21, i22]]

@@ -13,6 +13,7 @@
 #include <CGAL/Anisotropic_fairing/Quadrature_point_geometry.h>
 #include <CGAL/Anisotropic_fairing/Surface_curvature.h>
 #include <CGAL/Anisotropic_fairing/internal/types/Control_matrix.h>
+#include <CGAL/Anisotropic_fairing/internal/assembly/Local_matrix_scatter.h>
 #include <CGAL/Anisotropic_fairing/internal/types/Parallel_blocks.h>
 #include <CGAL/Anisotropic_fairing/internal/types/Sparse_structure.h>
 #include <CGAL/Anisotropic_fairing/internal/types/Stencil_row.h>
@@ -31,6 +32,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstddef>
+#include <cstdint>
 #include <limits>
 #include <type_traits>
 #include <vector>
@@ -38,43 +40,6 @@
 namespace CGAL {
 namespace Anisotropic_fairing {
 namespace internal {
-
-/// Where a column's entries go: its pattern positions p in `values`, or, for a column shared with other
-/// threads (shift[j] != owned_column), positions p + shift[j] in `shared` (shift null: every column is owned).
-constexpr std::ptrdiff_t owned_column = std::numeric_limits<std::ptrdiff_t>::min();
-
-/// Adds N symmetric local matrices, given by their lower triangles (ring x ring), into N value arrays
-/// sharing one compressed column pattern (outer, rows) that contains the ring's pairs. Reading one
-/// triangle only keeps the results exactly symmetric. Rows of a column are sorted, so each local
-/// column is merged into the global one in one pass.
-template <int N, typename Local>
-void scatter_local_matrices(const Local* const (&local)[N], const int* ring, int m, std::vector<int>& order,
-                            const int* outer, const int* rows, double* const (&values)[N],
-                            double* const (&shared)[N], const std::ptrdiff_t* shift)
-{
-  order.resize(std::size_t(m));
-  for(int k = 0; k < m; ++k) order[std::size_t(k)] = k;
-  std::sort(order.begin(), order.end(), [ring](int a, int b) { return ring[a] < ring[b]; });
-  for(int s = 0; s < m; ++s)
-  {
-    const int j = ring[s];
-    double* target[N];
-    std::ptrdiff_t offset = 0;
-    for(int i = 0; i < N; ++i) target[i] = values[i];
-    if(shift && shift[j] != owned_column)
-    {
-      offset = shift[j];
-      for(int i = 0; i < N; ++i) target[i] = shared[i];
-    }
-    int p = outer[j];
-    for(int k = 0; k < m; ++k)
-    {
-      const int r = order[std::size_t(k)];
-      while(rows[p] < ring[r]) ++p;
-      for(int i = 0; i < N; ++i) target[i][p + offset] += (r >= s) ? (*local[i])(r, s) : (*local[i])(s, r);
-    }
-  }
-}
 
 struct Assembly_statistics
 {
@@ -137,7 +102,11 @@ public:
                 const std::vector<std::size_t>* faces = nullptr)
     : cache_(cache), faces_(faces)
   {
-    if(with_pattern) pattern_ = ring_sparsity_pattern(cache, number_of_vertices, faces);
+    if(with_pattern)
+    {
+      pattern_ = ring_sparsity_pattern(cache, number_of_vertices, faces);
+      sort_rings();
+    }
 #ifdef CGAL_LINKED_WITH_TBB
     chunks_ = std::max(1, tbb::this_task_arena::max_concurrency());
 #endif
@@ -158,19 +127,22 @@ public:
 
   /// Assembles M and L (value arrays over pattern()) on the surface whose control points are the
   /// first `metric_columns` columns of X. With `with_matrices == false` only the statistics are
-  /// computed (when the element gives curvature at points) and M, L are left as they are.
+  /// computed (when the element gives curvature at points) and M, L are left as they are. With
+  /// `mass_kept`, M already holds this X's mass matrix (an assembly with matrices at the same X, with any
+  /// tensor: M does not depend on it, and the same sums give the same values) and only L is assembled.
   template <typename Tensor>
   Assembly_statistics assemble(const Control_matrix& X, int metric_columns, const Tensor& tensor,
-                               Value_array& M, Value_array& L, bool with_matrices = true)
+                               Value_array& M, Value_array& L, bool with_matrices = true, bool mass_kept = false)
   {
     const std::size_t nnz = number_of_nonzeros(), nf = assembled_faces();
     if(!Cache::has_second_derivatives) with_matrices = true;   // the curvature integral needs them
+    mass_kept = mass_kept && with_matrices && M.size() == nnz;
     if(with_matrices)
     {
-      M.resize(nnz);
+      if(!mass_kept) M.resize(nnz);
       L.resize(nnz);
       parallel_blocks(nnz, [&](std::size_t first, std::size_t last) {
-        std::fill(M.begin() + std::ptrdiff_t(first), M.begin() + std::ptrdiff_t(last), 0.0);
+        if(!mass_kept) std::fill(M.begin() + std::ptrdiff_t(first), M.begin() + std::ptrdiff_t(last), 0.0);
         std::fill(L.begin() + std::ptrdiff_t(first), L.begin() + std::ptrdiff_t(last), 0.0);
       }, std::size_t(65536));
     }
@@ -185,8 +157,9 @@ public:
       {
         std::vector<double>& pm = shared_values_[2 * std::size_t(k - 1)];
         std::vector<double>& pl = shared_values_[2 * std::size_t(k - 1) + 1];
-        pm.assign(shared_size_, 0.0); pl.assign(shared_size_, 0.0);
-        sm = pm.data(); sl = pl.data();
+        if(!mass_kept) { pm.assign(shared_size_, 0.0); sm = pm.data(); }
+        pl.assign(shared_size_, 0.0);
+        sl = pl.data();
       }
       Workspace ws;
       ws.shared_m = sm; ws.shared_l = sl;
@@ -194,8 +167,11 @@ public:
       const std::size_t begin = nf * std::size_t(k) / std::size_t(chunks_);
       const std::size_t end = nf * std::size_t(k + 1) / std::size_t(chunks_);
       for(std::size_t i = begin; i < end; ++i)
-        assemble_face(face(i), X, metric_columns, tensor, ws, with_matrices ? M.data() : nullptr, L.data(),
-                      stats[std::size_t(k)]);
+      {
+        ws.ring_order = ring_order_offset_.empty() ? nullptr : ring_order_.data() + ring_order_offset_[i];
+        assemble_face(face(i), X, metric_columns, tensor, ws, with_matrices && !mass_kept ? M.data() : nullptr,
+                      with_matrices ? L.data() : nullptr, stats[std::size_t(k)]);
+      }
     };
 #ifdef CGAL_LINKED_WITH_TBB
     if(chunks_ > 1)
@@ -213,7 +189,7 @@ public:
           const std::ptrdiff_t d = shift_[std::size_t(j)];
           for(int p = pattern_.outerIndexPtr()[j]; p < pattern_.outerIndexPtr()[j + 1]; ++p)
           {
-            M[std::size_t(p)] += pm[p + d];
+            if(!mass_kept) M[std::size_t(p)] += pm[p + d];
             L[std::size_t(p)] += pl[p + d];
           }
         }
@@ -227,6 +203,25 @@ public:
 
 private:
   std::size_t assembled_faces() const { return faces_ ? faces_->size() : cache_.number_of_faces(); }
+
+  // Each assembled face's ring in increasing vertex order, once (a sort per face and assembly otherwise);
+  // positions fit 16 bits unless a ring is longer, which is then sorted at each assembly.
+  void sort_rings()
+  {
+    const std::size_t nf = assembled_faces();
+    ring_order_offset_.assign(nf + 1, 0);
+    for(std::size_t i = 0; i < nf; ++i)
+    {
+      const int m = cache_.ring_size(face(i));
+      if(m > 65535) { ring_order_offset_.clear(); return; }
+      ring_order_offset_[i + 1] = ring_order_offset_[i] + std::size_t(m);
+    }
+    ring_order_.resize(ring_order_offset_[nf]);
+    parallel_blocks(nf, [&](std::size_t first, std::size_t last) {
+      for(std::size_t i = first; i < last; ++i)
+        sorted_ring_order(cache_.ring(face(i)), cache_.ring_size(face(i)), ring_order_.data() + ring_order_offset_[i]);
+    });
+  }
   // the i-th face assembled
   std::size_t face(std::size_t i) const { return faces_ ? (*faces_)[i] : i; }
 
@@ -256,6 +251,7 @@ private:
     Linear_buffers linear;
     Any_buffers any;
     std::vector<int> order, original_ring;
+    const std::uint16_t* ring_order = nullptr;   // the face's ring sorted (sort_rings), or null: sort it here
     std::vector<double> zeros, mean_curvature;   // kappa values, for any kappa
     double* shared_m = nullptr;   // this chunk's arrays of the shared columns (scatter_local_matrices)
     double* shared_l = nullptr;
@@ -310,7 +306,7 @@ private:
     double bound = std::numeric_limits<double>::infinity();   // of the mean curvature (Assembly_context)
   };
 
-  // mv == nullptr: statistics only
+  // lv == nullptr: statistics only; mv == nullptr (and lv given): L only, M is kept
   template <typename Buffers, typename Tensor>
   void assemble_face_with(Buffers& b, std::size_t f, const Control_matrix& X, int kappa, const Tensor& tensor,
                           Workspace& ws, double* mv, double* lv, Assembly_statistics& stats) const
@@ -338,7 +334,7 @@ private:
     }
     Face_sums sums;
     if(component >= 0 && x.curvature_bound) sums.bound = (*x.curvature_bound)[std::size_t(component)];
-    for(Eigen::Index q = 0; q < nq; ++q) assemble_point(b, f, q, prefiltered, tensor, g, ws, mv != nullptr, sums,
+    for(Eigen::Index q = 0; q < nq; ++q) assemble_point(b, f, q, prefiltered, tensor, g, ws, lv != nullptr, sums,
                                                         stats);
     stats.area += sums.area;
     if(component >= 0) stats.component_area[std::size_t(component)] += sums.area;
@@ -347,7 +343,7 @@ private:
     stats.energy += sums.energy;
     stats.H_integral += sums.H;
     stats.bounded_H_integral += sums.bounded_H;
-    if(mv) add_local_matrices(b, ring, m, ws, mv, lv);
+    if(lv) add_local_matrices(b, ring, m, ws, mv, lv);
   }
 
   // The ring's control points of face f (b.Xr) and their derivatives at the quadrature points (b.T), and
@@ -448,29 +444,53 @@ private:
     b.Bl.row(2 * q + 1) = r22 * S2.row(q);
   }
 
-  // The face's local matrices B^T B, added into the value arrays mv and lv (only the lower triangle is read
-  // by the scatter, so symmetry is exact)
+  // The face's local matrices B^T B, added into the value arrays mv (null: M kept) and lv (only the lower
+  // triangle is read by the scatter, so symmetry is exact)
   template <typename Buffers>
   void add_local_matrices(Buffers& b, const int* ring, int m, Workspace& ws, double* mv, double* lv) const
   {
     if(Buffers::fixed)
     {
-      b.localM.noalias() = b.Bm.transpose().lazyProduct(b.Bm);
+      if(mv) b.localM.noalias() = b.Bm.transpose().lazyProduct(b.Bm);
       b.localL.noalias() = b.Bl.transpose().lazyProduct(b.Bl);
     }
     else
     {
-      b.localM.setZero(m, m);
-      b.localM.template selfadjointView<Eigen::Lower>().rankUpdate(b.Bm.transpose());
+      if(mv)
+      {
+        b.localM.setZero(m, m);
+        b.localM.template selfadjointView<Eigen::Lower>().rankUpdate(b.Bm.transpose());
+      }
       b.localL.setZero(m, m);
       b.localL.template selfadjointView<Eigen::Lower>().rankUpdate(b.Bl.transpose());
     }
+    if(ws.ring_order) scatter(b, ring, m, ws, ws.ring_order, mv, lv);
+    else
+    {
+      ws.order.resize(std::size_t(m));
+      sorted_ring_order(ring, m, ws.order.data());
+      scatter(b, ring, m, ws, ws.order.data(), mv, lv);
+    }
+  }
+
+  template <typename Buffers, typename Index>
+  void scatter(Buffers& b, const int* ring, int m, Workspace& ws, const Index* order, double* mv, double* lv) const
+  {
     typedef typename std::remove_reference<decltype(b.localM)>::type Local;
+    const int* outer = pattern_.outerIndexPtr();
+    const int* rows = pattern_.innerIndexPtr();
+    if(!mv)
+    {
+      const Local* const locals[1] = { &b.localL };
+      double* const values[1] = { lv };
+      double* const shared[1] = { ws.shared_l };
+      scatter_local_matrices<1>(locals, ring, m, order, outer, rows, values, shared, ws.shift);
+      return;
+    }
     const Local* const locals[2] = { &b.localM, &b.localL };
     double* const values[2] = { mv, lv };
     double* const shared[2] = { ws.shared_m, ws.shared_l };
-    scatter_local_matrices<2>(locals, ring, m, ws.order, pattern_.outerIndexPtr(), pattern_.innerIndexPtr(), values,
-                              shared, ws.shift);
+    scatter_local_matrices<2>(locals, ring, m, order, outer, rows, values, shared, ws.shift);
   }
 
   // |H|^2, H the mean-curvature vector (Surface_curvature.h), written into h
@@ -509,6 +529,8 @@ private:
   Sparse_structure pattern_;
   int chunks_ = 1;
   std::vector<int> shared_columns_;
+  std::vector<std::size_t> ring_order_offset_;   // per assembled face (sort_rings; empty: none)
+  std::vector<std::uint16_t> ring_order_;
   std::vector<std::ptrdiff_t> shift_;               // per column (share_columns)
   std::size_t shared_size_ = 0;
   std::vector<std::vector<double>> shared_values_;  // M and L of the shared columns, per chunk but the first

@@ -95,7 +95,9 @@ public:
         prefiltered_valid_ = true;
       }
     }
-    const Assembly_statistics a = assembler_.assemble(X, metric_columns, tensor, M_, L_, with_matrices);
+    // after the prefilter's isotropic assembly at this X, M_ is this X's mass matrix already
+    const bool mass_kept = prefilter_ && block_ && block_->size() > 0;
+    const Assembly_statistics a = assembler_.assemble(X, metric_columns, tensor, M_, L_, with_matrices, mass_kept);
     assembler_.set_prefiltered(nullptr);
     overwritten_ = overwritten_ || with_matrices;
     return a;

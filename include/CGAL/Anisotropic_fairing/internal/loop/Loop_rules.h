@@ -8,6 +8,8 @@
 #define CGAL_ANISOTROPIC_FAIRING_INTERNAL_LOOP_LOOP_RULES_H
 
 #include <cmath>
+#include <cstddef>
+#include <vector>
 
 namespace CGAL {
 namespace Anisotropic_fairing {
@@ -37,6 +39,34 @@ inline Real loop_limit_weight(int n)
 /// t_u x t_v is the oriented normal.
 inline double loop_tangent_u(int j, int n) { return double(std::cos(2 * loop_pi() * j / n)); }
 inline double loop_tangent_v(int j, int n) { return double(std::sin(2 * loop_pi() * j / n)); }
+
+/// The tangent-mask coefficients (cos, sin) of every neighbour of a valence-n vertex, the values of
+/// loop_tangent_u/v, computed once per valence up to `tabulated` (the long-double sine and cosine cost as
+/// much as the rest of a vertex's tangents; every step of a run reads them).
+class Loop_tangent_table
+{
+public:
+  static constexpr int tabulated = 64;
+
+  /// Coefficient pairs (u, v) of neighbours 0..n-1, or null when n is not tabulated.
+  static const double* coefficients(int n)
+  {
+    static const Loop_tangent_table table;
+    return n >= 1 && n <= tabulated ? table.values_.data() + table.first_[std::size_t(n)] : nullptr;
+  }
+
+private:
+  Loop_tangent_table() : first_(std::size_t(tabulated) + 1, 0)
+  {
+    for(int n = 1; n <= tabulated; ++n)
+    {
+      first_[std::size_t(n)] = values_.size();
+      for(int j = 0; j < n; ++j) { values_.push_back(loop_tangent_u(j, n)); values_.push_back(loop_tangent_v(j, n)); }
+    }
+  }
+  std::vector<std::size_t> first_;
+  std::vector<double> values_;
+};
 
 } // namespace internal
 } // namespace Anisotropic_fairing

@@ -68,10 +68,11 @@ inline void vertex_limit_tangents(const Triangle_topology& topo, const Control_m
   for(Eigen::Index c = 0; c < kappa; ++c) { tu[c] = 0; tv[c] = 0; }
   const int h0 = topo.outgoing(v);
   if(h0 < 0) return;   // a vertex on no face has no tangent plane (its normal is the zero vector)
+  const double* table = Loop_tangent_table::coefficients(n);
   int h = h0, j = 0;
   do {
     const int w = topo.target(h);
-    const double cu = loop_tangent_u(j, n), cv = loop_tangent_v(j, n);
+    const double cu = table ? table[2 * j] : loop_tangent_u(j, n), cv = table ? table[2 * j + 1] : loop_tangent_v(j, n);
     for(Eigen::Index c = 0; c < kappa; ++c) { tu[c] += cu * X(w, c); tv[c] += cv * X(w, c); }
     h = topo.ccw(h);
     ++j;

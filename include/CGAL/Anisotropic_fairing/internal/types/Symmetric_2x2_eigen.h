@@ -9,6 +9,7 @@
 #ifndef CGAL_ANISOTROPIC_FAIRING_INTERNAL_TYPES_SYMMETRIC_2X2_EIGEN_H
 #define CGAL_ANISOTROPIC_FAIRING_INTERNAL_TYPES_SYMMETRIC_2X2_EIGEN_H
 
+#include <algorithm>
 #include <cmath>
 
 namespace CGAL {
@@ -21,18 +22,27 @@ struct Symmetric_2x2_eigen
   double k1, k2, mean, x, y;
 };
 
+/// sqrt(a^2 + b^2): the plain formula where its squares can neither overflow nor lose their digits to
+/// underflow, std::hypot (several times slower; the tensor calls this twice per quadrature point) elsewhere
+inline double length_2d(double a, double b)
+{
+  const double m = std::max(std::abs(a), std::abs(b));
+  if(m < 1e150 && m > 1e-150) return std::sqrt(a * a + b * b);
+  return std::hypot(a, b);
+}
+
 inline Symmetric_2x2_eigen symmetric_2x2_eigen(double s11, double s12, double s22)
 {
   Symmetric_2x2_eigen e;
   e.mean = 0.5 * (s11 + s22);
-  const double dev = std::hypot(0.5 * (s11 - s22), s12);
+  const double dev = length_2d(0.5 * (s11 - s22), s12);
   e.k1 = e.mean - dev;
   e.k2 = e.mean + dev;
   // the eigenvector from the better conditioned of the two rows of S - k1 I
   if(dev == 0) { e.x = 1; e.y = 0; }
   else if(s11 - e.k1 >= s22 - e.k1) { e.x = -s12; e.y = s11 - e.k1; }
   else { e.x = s22 - e.k1; e.y = -s12; }
-  const double l = std::hypot(e.x, e.y);
+  const double l = length_2d(e.x, e.y);
   if(l > 0) { e.x /= l; e.y /= l; } else { e.x = 1; e.y = 0; }
   return e;
 }
