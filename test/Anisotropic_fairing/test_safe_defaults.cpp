@@ -21,8 +21,10 @@
 #include "test_support/mesh_coordinates.h"
 #include "test_support/mesh_generators.h"
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <limits>
 #include <random>
 #include <string>
 #include <vector>
@@ -311,6 +313,29 @@ double normal_error(const Mesh& m, const Mesh& original)
   return error * 180 / 3.14159265358979323846;
 }
 
+// The report's runs (Fairing_report::runs): each timed, their time within the call's, exactly one kept, whose
+// steps and stop are the report's, and the lowest estimate is the kept one's
+void check_runs(const char* name, const AF::Fairing_report& r, std::size_t expected_runs)
+{
+  std::size_t kept = 0;
+  double seconds = 0, lowest = std::numeric_limits<double>::infinity();
+  const AF::Fairing_run* kept_run = nullptr;
+  for(const AF::Fairing_run& run : r.runs)
+  {
+    std::printf("  %s: run '%s': %zu steps, %.3f s, estimate %g%s\n", name, run.name.c_str(), run.steps, run.seconds,
+                run.estimate, run.kept ? ", kept" : "");
+    seconds += run.seconds;
+    if(run.kept) { ++kept; kept_run = &run; }
+    if(std::isfinite(run.estimate)) lowest = std::min(lowest, run.estimate);
+    AF_CHECK(run.seconds > 0, "every run is timed");
+  }
+  AF_CHECK(r.runs.size() == expected_runs, "the report lists every run the call made");
+  AF_CHECK(seconds <= r.total_seconds, "the runs' time is within the call's");
+  AF_CHECK(kept == 1 && kept_run->steps == r.steps.size() && kept_run->stop_reason == r.stop_reason,
+           "exactly one run is kept, the one whose steps the report gives");
+  AF_CHECK(expected_runs == 1 || kept_run->estimate == lowest, "the kept run has the lowest estimate");
+}
+
 void denoising_pair()
 {
   Mesh noisy, original;
@@ -330,6 +355,14 @@ void denoising_pair()
   std::printf("  the isotropic run: %.2f degrees\n", normal_error(isotropic, original));
   AF_CHECK(r.selected_tensor == "anisotropic", "the anisotropic result is kept on Fandisk0.3");
   AF_CHECK(error < normal_error(isotropic, original), "the kept result is the better one");
+  // the anisotropic flow, the isotropic and the uniform one, and the anisotropic flow again on the probed input
+  check_runs("Fandisk0.3 default", r, 4);
+  AF_CHECK(r.runs[0].name == "anisotropic flow" && r.runs[0].kept && r.runs[3].name == "anisotropic flow on the probed input"
+           && !std::isfinite(r.runs[3].estimate), "the runs are named, the probe run has no estimate of its own");
+  Mesh once = noisy;
+  const AF::Fairing_report one = AF::anisotropic_fairing(
+    once, AF::parameters::diffusion_tensor(AF::Isotropic_diffusion_tensor()).number_of_iterations(2));
+  check_runs("one isotropic run", one, 1);
 }
 
 // camelhead.off (clean) with Gaussian noise of sigma_h mean edge lengths along its vertex normals (noisy)

@@ -196,6 +196,13 @@ void add_steps(Json& j, const Run_record& r)
                       { "solve_seconds", number(s.solve_seconds) }, { "direct_solve", s.direct_solve },
                       { "time_step", number(s.time_step) }, { "noise_displacement", number(s.noise_displacement) } });
   j["steps"] = std::move(steps);
+  Json runs = Json::array();
+  for(const AF::Fairing_run& run : f.runs)
+    runs.push_back({ { "name", run.name }, { "steps", run.steps }, { "rejected_steps", run.rejected_steps },
+                     { "seconds", number(run.seconds) }, { "status", AF::to_string(run.status) },
+                     { "stop_reason", AF::to_string(run.stop_reason) }, { "estimate", number(run.estimate) },
+                     { "kept", run.kept } });
+  j["runs"] = std::move(runs);
 }
 
 void add_times(Json& j, const Run_record& r, double wall_seconds)

@@ -10,6 +10,7 @@
 
 #include <cstddef>
 #include <array>
+#include <limits>
 #include <string>
 #include <vector>
 
@@ -135,6 +136,26 @@ struct Fairing_step
 
 /*!
 \ingroup PkgAnisotropicFairingFunctions
+One run a call made, in `Fairing_report::runs`: the default run makes several (its candidate flows, a flow's run on
+the probed input when its risk estimate needs one, the kept flow's run to `strength`), any other call one. What it
+cost, how it ended, and what the comparison made of it.
+*/
+struct Fairing_run
+{
+  std::string name;             ///< the callback's `Fairing_step::run_name` ("" for a call's only run)
+  std::size_t steps = 0;        ///< accepted steps
+  std::size_t rejected_steps = 0; ///< steps rejected by the step control
+  double seconds = 0;           ///< wall time, from its set-up to its written result
+  Fairing_status status = Fairing_status::SUCCESS; ///< how it ended
+  Stop_reason stop_reason = Stop_reason::MAXIMUM_STEPS; ///< why it ended
+  /// the risk estimate the comparison gave its result, in the unit `choices` names; NaN when it has none (not
+  /// compared, only a lower bound carried along, a run on the probed input, or no comparison)
+  double estimate = std::numeric_limits<double>::quiet_NaN();
+  bool kept = false;            ///< its result is the one written
+};
+
+/*!
+\ingroup PkgAnisotropicFairingFunctions
 The result of `anisotropic_fairing()`.
 */
 struct Fairing_report
@@ -252,6 +273,7 @@ struct Fairing_report
   /// the input's own limit point lies farther off than the bound)
   std::size_t clamped_vertices = 0;
   std::string choices;            ///< with automatic parameters: what was chosen and why, in one sentence
+  std::vector<Fairing_run> runs;  ///< every run the call made, in order, with its cost (`Fairing_run`)
   /// with automatic parameters and no tensor given: "anisotropic", "isotropic" or "uniform", the result kept (empty
   /// otherwise; "uniform" is the uniform tensor's fourth-order flow, `flow_order` 4)
   std::string selected_tensor;

@@ -16,10 +16,10 @@ from . import _core
 from ._core import FairingError, LimitSurface, __version__, limit_surface
 from ._progress import Progress as _Progress
 from .meshes import fair_meshio, fair_open3d, fair_vtk
-from .report import FairingReport, FairingStep, InitialSurface, NoiseModel, StepInfo
+from .report import FairingReport, FairingRun, FairingStep, InitialSurface, NoiseModel, StepInfo
 
 __all__ = ['fair', 'limit_surface', 'LimitSurface', 'FairingError', 'fair_meshio', 'fair_open3d', 'fair_vtk',
-           'FairingReport', 'FairingStep', 'InitialSurface', 'NoiseModel', 'StepInfo', '__version__']
+           'FairingReport', 'FairingRun', 'FairingStep', 'InitialSurface', 'NoiseModel', 'StepInfo', '__version__']
 
 
 def fair(V, F, *, attributes=None, vertex_is_constrained=None, callback=None, quiet=False, **parameters):

@@ -6,13 +6,14 @@ import numpy as np
 import numpy.typing as npt
 
 from .report import FairingReport as FairingReport
+from .report import FairingRun as FairingRun
 from .report import FairingStep as FairingStep
 from .report import InitialSurface as InitialSurface
 from .report import NoiseModel as NoiseModel
 from .report import StepInfo as StepInfo
 
 __all__ = ['fair', 'limit_surface', 'LimitSurface', 'FairingError', 'fair_meshio', 'fair_open3d', 'fair_vtk',
-           'FairingReport', 'FairingStep', 'InitialSurface', 'NoiseModel', 'StepInfo', '__version__']
+           'FairingReport', 'FairingRun', 'FairingStep', 'InitialSurface', 'NoiseModel', 'StepInfo', '__version__']
 
 __version__: str
 

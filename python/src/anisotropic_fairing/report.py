@@ -6,7 +6,7 @@ The manual's page on the program lists what each key means.
 """
 from typing import List, Optional, TypedDict
 
-__all__ = ['FairingReport', 'FairingStep', 'InitialSurface', 'StepInfo']
+__all__ = ['FairingReport', 'FairingRun', 'FairingStep', 'InitialSurface', 'StepInfo']
 
 
 class InitialSurface(TypedDict):
@@ -42,6 +42,20 @@ class FairingStep(TypedDict):
     direct_solve: bool
     time_step: Optional[float]
     noise_displacement: Optional[float]
+
+
+class FairingRun(TypedDict):
+    """One run the call made (``report['runs'][k]``, in order): the default run's candidate flows, a flow's run on
+    the probed input, the kept flow's run to ``strength``; one entry for any other call. ``estimate`` is the risk
+    estimate the comparison gave its result (``None``: none), ``kept`` whether its result was written."""
+    name: str
+    steps: int
+    rejected_steps: int
+    seconds: Optional[float]
+    status: str
+    stop_reason: str
+    estimate: Optional[float]
+    kept: bool
 
 
 class StepInfo(TypedDict):
@@ -136,6 +150,7 @@ FairingReport = TypedDict('FairingReport', {
     'clamped_vertices': Optional[int],
     'initial': Optional[InitialSurface],
     'steps': List[FairingStep],
+    'runs': List[FairingRun],
     'read_seconds': Optional[float],
     'input_seconds': Optional[float],
     'setup_seconds': Optional[float],

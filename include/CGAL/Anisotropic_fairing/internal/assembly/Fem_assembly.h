@@ -130,9 +130,12 @@ public:
   /// computed (when the element gives curvature at points) and M, L are left as they are. With
   /// `mass_kept`, M already holds this X's mass matrix (an assembly with matrices at the same X, with any
   /// tensor: M does not depend on it, and the same sums give the same values) and only L is assembled.
+  /// Without `curvature` the statistics leave out the curvature integrals and the second derivatives are not
+  /// evaluated (an assembly whose statistics nobody reads, for a tensor that reads no curvature).
   template <typename Tensor>
   Assembly_statistics assemble(const Control_matrix& X, int metric_columns, const Tensor& tensor,
-                               Value_array& M, Value_array& L, bool with_matrices = true, bool mass_kept = false)
+                               Value_array& M, Value_array& L, bool with_matrices = true, bool mass_kept = false,
+                               bool curvature = true)
   {
     const std::size_t nnz = number_of_nonzeros(), nf = assembled_faces();
     if(!Cache::has_second_derivatives) with_matrices = true;   // the curvature integral needs them
@@ -163,6 +166,7 @@ public:
       }
       Workspace ws;
       ws.shared_m = sm; ws.shared_l = sl;
+      ws.curvature = curvature;
       ws.shift = k > 0 ? shift_.data() : nullptr;
       const std::size_t begin = nf * std::size_t(k) / std::size_t(chunks_);
       const std::size_t end = nf * std::size_t(k + 1) / std::size_t(chunks_);
@@ -252,6 +256,7 @@ private:
     Any_buffers any;
     std::vector<int> order, original_ring;
     const std::uint16_t* ring_order = nullptr;   // the face's ring sorted (sort_rings), or null: sort it here
+    bool curvature = true;                       // second derivatives and the curvature statistics
     std::vector<double> zeros, mean_curvature;   // kappa values, for any kappa
     double* shared_m = nullptr;   // this chunk's arrays of the shared columns (scatter_local_matrices)
     double* shared_l = nullptr;
@@ -314,7 +319,7 @@ private:
     const int m = cache_.ring_size(f);
     const int* ring = cache_.ring(f);
     const Eigen::Index nq = cache_.quadrature_weights(cache_.category(f)).size();
-    const bool prefiltered = load_face(b, f, X, kappa);
+    const bool prefiltered = load_face(b, f, X, kappa, ws.curvature);
     b.Bm.resize(nq, m);
     b.Bl.resize(2 * nq, m);
     if(ws.zeros.size() != std::size_t(kappa)) { ws.zeros.assign(std::size_t(kappa),
@@ -349,7 +354,7 @@ private:
   // The ring's control points of face f (b.Xr) and their derivatives at the quadrature points (b.T), and
   // those of the prefiltered surface (b.Pr, b.P) when there is one; returns whether there is
   template <typename Buffers>
-  bool load_face(Buffers& b, std::size_t f, const Control_matrix& X, int kappa) const
+  bool load_face(Buffers& b, std::size_t f, const Control_matrix& X, int kappa, bool curvature) const
   {
     typedef Eigen::Map<const typename Buffers::Stencil_rows> Rows;
     const int m = cache_.ring_size(f);
@@ -359,7 +364,7 @@ private:
     b.Xr.resize(m, kappa);
     for(int k = 0; k < m; ++k)
       for(int c = 0; c < kappa; ++c) b.Xr(k, c) = X(ring[k], c);
-    const int derivative_rows = Cache::has_second_derivatives ? 5 : 2;
+    const int derivative_rows = Cache::has_second_derivatives && curvature ? 5 : 2;
     for(int r = 0; r < derivative_rows; ++r)
       b.T[r].noalias() = Rows(cache_.quadrature_rows(cat, D1 + r).data(), nq, m).lazyProduct(b.Xr);
     const bool prefiltered = prefiltered_ && Cache::has_second_derivatives;
@@ -409,10 +414,11 @@ private:
       else sums.lowest_dot = std::min(sums.lowest_dot, n[0] * first[0] + n[1] * first[1] + n[2] * first[2]);
     }
     const double* no_second = ws.zeros.data();
+    const bool second = Cache::has_second_derivatives && ws.curvature;
     g.point = int(q); g.t1 = t1; g.t2 = t2;
-    g.t11 = Cache::has_second_derivatives ? b.T[2].row(q).data() : no_second;
-    g.t12 = Cache::has_second_derivatives ? b.T[3].row(q).data() : no_second;
-    g.t22 = Cache::has_second_derivatives ? b.T[4].row(q).data() : no_second;
+    g.t11 = second ? b.T[2].row(q).data() : no_second;
+    g.t12 = second ? b.T[3].row(q).data() : no_second;
+    g.t22 = second ? b.T[4].row(q).data() : no_second;
     g.g11 = g11; g.g12 = g12; g.g22 = g22; g.det = det;
     const Rows S0(cache_.quadrature_rows(cat, VALUE).data(), nq, m);
     g.basis = S0.row(q).data();
@@ -425,7 +431,7 @@ private:
 
     sums.area += c;
     sums.energy += c * (A.a11 * g11 + 2 * A.a12 * g12 + A.a22 * g22);
-    if(Cache::has_second_derivatives)
+    if(second)
     {
       const double H2 = mean_curvature_squared(g, ws.mean_curvature.data());
       sums.H += c * H2;

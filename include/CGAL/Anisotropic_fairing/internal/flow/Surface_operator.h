@@ -76,7 +76,8 @@ public:
       // the isotropic M and L in M_ and L_ (no two more arrays of the pattern's size), which the tensor's
       // own assembly then overwrites, or leaves as scratch when it computes statistics only
       overwritten_ = true;
-      if(!isotropic_ready) assembler_.assemble(X, metric_columns, Isotropic_diffusion_tensor(), M_, L_);
+      if(!isotropic_ready)   // (its statistics are the tensor's assembly's: no curvature read here)
+        assembler_.assemble(X, metric_columns, Isotropic_diffusion_tensor(), M_, L_, true, false, false);
       Control_matrix& dX = prefilter_dX_;   // warm start: the last M_eps's displacement
       const Solve_statistics sol =
         prefilter_step(assembler_.pattern(), M_, L_, eps_, *block_, prefilter_A_, X, metric_columns, prefilter_solver_,

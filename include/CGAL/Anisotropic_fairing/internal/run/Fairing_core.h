@@ -15,7 +15,7 @@
 #include <CGAL/Anisotropic_fairing/Uniform_diffusion_tensor.h>
 #include <CGAL/Anisotropic_fairing/internal/run/Automatic_parameters.h>
 #include <CGAL/Anisotropic_fairing/internal/run/Fairing_parameters.h>
-#include <CGAL/Anisotropic_fairing/internal/run/Flow_candidates.h>
+#include <CGAL/Anisotropic_fairing/internal/run/Run_log.h>
 #include <CGAL/Anisotropic_fairing/internal/run/Normal_field_run.h>
 #include <CGAL/Anisotropic_fairing/internal/run/Smoother_selection.h>
 #include <CGAL/Anisotropic_fairing/internal/run/Stepper_call.h>
@@ -134,7 +134,10 @@ private:
   {
   public:
     Element_runner(Fairing_core& core, const Cache& cache, bool loop) : core_(core), cache_(cache), loop_(loop) {}
-    Flow_outcome run(const Flow_request& request) { return core_.run_flow(cache_, loop_, request); }
+    Flow_outcome run(const Flow_request& request)
+    {
+      return core_.log_.record(request.name, [&] { return core_.run_flow(cache_, loop_, request); });
+    }
     std::size_t steps_left() const { return core_.steps_left_; }
 
   private:
@@ -294,6 +297,7 @@ private:
     }
     Smoother_choice choice = compare_flows(std::move(candidates), runner);
     choices_ += choice.choices;
+    for(const auto& e : choice.estimates) log_.estimated(e.first, e.second);
     keep(std::move(choice.kept.result));
     if(strength_run()) run_kept_flow_to_strength(runner, choice.kept);
   }
@@ -323,6 +327,7 @@ private:
 
   void keep(Flow_outcome&& outcome)
   {
+    log_.kept(outcome.run);
     X_ = std::move(outcome.Y);
     control_points_ = std::move(outcome.Z);
     report_ = std::move(outcome.report);
@@ -531,6 +536,7 @@ private:
     report.mean_edge_length = mean_edge_;
     report.automatic_parameters = given_.automatic;
     report.choices = choices_;
+    report.runs = log_.runs();
     report.noise_level = noise_->relative_sigma();
     report.strength = given_.settings.strength;
     report.removed_spikes = removed_spikes_;
@@ -576,6 +582,7 @@ private:
   std::unique_ptr<Noise_estimate> noise_;
   Noise_model noise_model_;   // with automatic parameters
   std::string choices_;
+  Run_log log_;
   bool select_tensor_ = false;
   Fairing_report report_;
   double setup_seconds_ = 0;

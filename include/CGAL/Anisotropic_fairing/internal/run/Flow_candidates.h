@@ -43,6 +43,7 @@ struct Flow_outcome
   Control_matrix Y;       // the written positions (and attribute values)
   Control_matrix Z;       // its control points, when asked for (empty otherwise)
   Control_matrix probe;   // where the probe carried along ended, written as Y is (empty: none rode along)
+  std::size_t run = std::size_t(-1);   // its entry in the call's runs (Run_log.h)
 };
 
 /// One run the default run asks for: which flow, from where, for how long, and what rides along.

@@ -84,6 +84,7 @@ struct Smoother_choice
 {
   Flow_candidate kept;
   std::string choices;
+  std::vector<std::pair<std::size_t, double>> estimates;   // each estimated candidate's run and estimate
 };
 
 /// Where the estimate measures (its normals and stiffness): the input's prefiltered surface (`given`), else
@@ -321,7 +322,10 @@ Smoother_choice select_smoother(Candidate_list c, const Selection_context& conte
   if(kept < c.size()) choices = describe_choice(c, kept, any_at_noise, *basis.estimate);
   else std::tie(kept, choices) = first_sound(c, own);
   c[kept].result.report.selected_tensor = c[kept].name;
-  return { std::move(c[kept]), choices };
+  std::vector<std::pair<std::size_t, double>> estimates;
+  for(const Flow_candidate& x : c)
+    if(std::isfinite(x.risk)) estimates.emplace_back(x.result.run, x.risk);
+  return { std::move(c[kept]), choices, std::move(estimates) };
 }
 
 } // namespace internal
