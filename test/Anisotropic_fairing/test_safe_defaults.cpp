@@ -223,6 +223,11 @@ void noise_free(const std::string& file, double bound_percent)
   AF_CHECK(r.succeeded() && r.automatic_parameters, "the default run succeeds with automatic parameters");
   AF_CHECK(moved <= bound_percent, "a noise-free mesh is left nearly alone");
   AF_CHECK(folded_edges(m) <= folded_edges(input), "no new folded edge");
+  // a run that takes no step assembles no anisotropic operator (its M_eps and L(D)): the input's area and
+  // curvature integral are known, the tensor's energy is not
+  if(r.steps.empty())
+    AF_CHECK(!std::isfinite(r.initial.energy) && r.initial.area > 0 && std::isfinite(r.initial.H_integral),
+             "no step: the tensor's operator is not assembled");
 }
 
 void two_spheres()

@@ -166,7 +166,10 @@ struct Fairing_report
   /// (`Stop_reason::STEP_REJECTED`); empty otherwise
   std::string message;
   std::vector<Fairing_step> steps;///< one entry per completed step
-  Fairing_step initial;           ///< area, energy and \f$\int|H|^2\f$ of the input surface (step 0)
+  /// area, energy and \f$\int|H|^2\f$ of the input surface (step 0); the energy is NaN when a run with the
+  /// anisotropic tensor's relative parameters takes no step (a clean mesh at the noise stop, or no step allowed):
+  /// its operator, which needs the prefiltered surface \f$M_\varepsilon\f$, is then not assembled
+  Fairing_step initial;
   /// \f$\ell = \sqrt{\mathrm{Area}(M(0))/4\pi}\f$ , the length unit of relative parameters
   double scale = 0;
   double time_step = 0;           ///< \f$\tau\f$ in model units (length^2, or length^4 for the fourth-order flow)

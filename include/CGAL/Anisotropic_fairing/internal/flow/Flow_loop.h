@@ -107,13 +107,17 @@ private:
     if(!unsupported.empty()) { fail(report_, Fairing_status::SOLVER_FAILED, unsupported, total_); return false; }
     op_.begin_run(s_, fixed_);
     clock_.start();
-    Assembly_statistics a;
-    if(!start_units(op_, X_, metric_columns_, s_, tensor_, report_, a, total_)) return false;
-    assemble_seconds_ = clock_.time();
     Z0_ = Z_;
+    start_noise_measures();
+    // a run that takes no step (a clean mesh at the noise stop) never uses its tensor's operator
+    const bool takes_steps = s_.maximum_steps > 0 && nfree_ > 0 &&
+                             !(noise_stop_ && Noise_level::before_first_step(first_discrepancy_, target_));
+    Assembly_statistics a;
+    if(!start_units(op_, X_, metric_columns_, s_, tensor_, report_, a, total_, takes_steps)) return false;
+    assemble_seconds_ = clock_.time();
     time_unit_ = s_.stopping.relative_units ? std::pow(report_.scale, s_.order) : 1.0;   // (28), steady speed
     start_surface(a);
-    start_solver();
+    if(takes_steps) start_solver();
     rules_.emplace(Stop_rule_setup{ s_, fixed_, noise_stop_, bound_->active(),
                                     fixed_ ? report_.initial.energy : a.H_integral, op_.mesh().mean_edge });
     const std::optional<double> before = Noise_level::before_first_step(first_discrepancy_, target_);
@@ -144,18 +148,29 @@ private:
     row_unit_.assign(std::size_t(Z0_.rows()), spread > 0 ? spread : 1.0);
   }
 
-  // the folds of the input, the user's bound on the written positions and the noise level's distance
+  // the noise criterion (stop once the written surface moved off the input by the noise): the noise level's
+  // distance and the input's own, which need no assembly
+  void start_noise_measures()
+  {
+    noise_stop_ = !fixed_ && s_.noise && s_.stopping.noise_discrepancy > 0;
+    if(!fixed_) op_.measured_positions(Z_, Y_);
+    target_ = noise_stop_ ? s_.stopping.noise_discrepancy * s_.strength * s_.noise->relative_sigma() : 0.0;
+    discrepancy_ = noise_stop_ ? s_.noise->relative_displacement(Y_, Z0_, {}) : 0.0;
+    report_.noise_displacement = discrepancy_;
+    // before the first step, the limit surface of the input may round its creases by more than the
+    // noise while leaving most vertices in place: a clean mesh, whatever the typical vertex says
+    first_discrepancy_ = noise_stop_ ? std::max(discrepancy_, s_.noise->relative_displacement(Y_, Z0_, {}, true)) : 0.0;
+  }
+
+  // the folds of the input and the user's bound on the written positions
   void start_surface(const Assembly_statistics& a)
   {
     start_measures();
-    // the noise criterion: stop once the written surface moved off the input by the noise
-    noise_stop_ = !fixed_ && s_.noise && s_.stopping.noise_discrepancy > 0;
     initial_ = Surface_soundness();
     initial_.statistics = a;
     Surface_soundness input;
     if(!fixed_)
     {
-      op_.measured_positions(Z_, Y_);
       op_.count_folds(Z_, initial_);
       op_.input_folds(Z0_, input);
     }
@@ -168,12 +183,6 @@ private:
     bound_->set_start(anchor_, Z0_);
     accepted_ = initial_;
     lowest_H_.emplace(a);
-    target_ = noise_stop_ ? s_.stopping.noise_discrepancy * s_.strength * s_.noise->relative_sigma() : 0.0;
-    discrepancy_ = noise_stop_ ? s_.noise->relative_displacement(Y_, Z0_, {}) : 0.0;
-    report_.noise_displacement = discrepancy_;
-    // before the first step, the limit surface of the input may round its creases by more than the
-    // noise while leaving most vertices in place: a clean mesh, whatever the typical vertex says
-    first_discrepancy_ = noise_stop_ ? std::max(discrepancy_, s_.noise->relative_displacement(Y_, Z0_, {}, true)) : 0.0;
     // the last surface with no more folded edges than the input mesh (or its limit surface): what the
     // run falls back to if the surface it ends on has more
     allowed_folds_ = std::max(input_folds_, initial_.folded_edges);

@@ -17,6 +17,7 @@
 #include <CGAL/Real_timer.h>
 
 #include <cmath>
+#include <limits>
 #include <string>
 #include <vector>
 
@@ -26,10 +27,11 @@ namespace internal {
 
 /// The units of a run from X (then op.units()), the tensor given its length scale; M and L(D) at X assembled,
 /// their statistics in `a` and the report's initial values. False (and the report failed) when the input has
-/// no surface.
+/// no surface. A run that takes no step (`takes_steps` false) leaves out the operator of a tensor that needs
+/// its units first (M_eps and L(D)): its statistics are the isotropic assembly's, but for the energy (NaN).
 template <typename Operator, typename Tensor>
 bool start_units(Operator& op, const Control_matrix& X, int metric_columns, const Stepper_settings& s, Tensor& tensor,
-                 Fairing_report& report, Assembly_statistics& a, const CGAL::Real_timer& total)
+                 Fairing_report& report, Assembly_statistics& a, const CGAL::Real_timer& total, bool takes_steps = true)
 {
   const Flow_mesh& mesh = op.mesh();
   const bool scaled_tensor = wants_length_scale(tensor);
@@ -80,7 +82,12 @@ bool start_units(Operator& op, const Control_matrix& X, int metric_columns, cons
     report.feature_threshold = std::isfinite(threshold_of(tensor)) ? threshold_of(tensor) : 0.0;
     report.prefilter_time = prefilter_time(tensor);
     op.set_prefilter(std::move(eps), s);
-    a = op.assemble(X, metric_columns, tensor, true);
+    if(takes_steps) a = op.assemble(X, metric_columns, tensor, true);
+    else
+    {
+      op.discard_isotropic();
+      a.energy = std::numeric_limits<double>::quiet_NaN();   // the tensor's, unknown without its operator
+    }
   }
   report.initial.area = a.area;
   report.initial.energy = a.energy;
