@@ -7,12 +7,13 @@
 // "uniform" returns its input unchanged (error 0 along the normals but divergence N: risk 1 per vertex,
 // the noise itself), and the anisotropic candidate is forced to stop early, as a run whose later steps
 // are rejected does: it moves a tenth of the way toward the sphere and reports STEP_REJECTED. Kept must be
-// the isotropic result, with the risks in `choices`; a candidate stopped by the callback is not compared.
-// Then the early candidate is made the truth itself: still not kept (nor estimated) while another reached
-// the noise level, kept when none did, its probe run then replaying its steps. The uniform stand-in carries
-// its probe along, as the uniform flow does; the others are probed by runs of their own. With the normals
-// known before the candidates run (the anisotropic run's prefiltered input), every probe rides along and a
-// run of its own is made only for a candidate whose carried estimate is below the lowest estimate so far.
+// the isotropic result, with the risks in `choices`. A first run the callback ends is kept alone.
+// Then the early candidate is made the truth itself: still not kept while another reached the noise level,
+// kept when none did. The normals are known before the candidates run (the input's prefiltered surface), so
+// every stand-in carries its probe along, as the flows do; the uniform and the anisotropic candidate's carried
+// estimates are their estimates (the anisotropic probe steps with an operator of its own: Probe_flow.h), and
+// they are never run again; the isotropic one's is a lower bound, and a run of its own on the probed input is
+// made only when it could be the lowest (replaying its steps when it stopped early).
 
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/Surface_mesh.h>
@@ -44,32 +45,35 @@ struct Stand_in_flows
   double anisotropic_weight = 0.1, isotropic_weight = 1.0;   // how far each moves onto the sphere
   std::vector<std::string> calls;
   AF::Stop_reason others_stop = AF::Stop_reason::NOISE_LEVEL;   // how the isotropic and the uniform stand-in end
-  bool all_ride = false;   // every stand-in carries its probe along (else only the uniform one)
 
   std::size_t steps_left() const { return 100; }
 
   AFI::Flow_outcome run(const AFI::Flow_request& request)
   {
-    const bool probe = request.probe_start != nullptr || request.make_probe;
+    const bool probe = request.probe_start != nullptr;
     calls.push_back(request.name + (request.fixed_steps > 0 ? " (fixed)" : "") + (probe ? " (probe along)" : ""));
     const bool isotropic = request.flow.tensor == AFI::Candidate_tensor::ISOTROPIC;
     const bool uniform = request.flow.tensor == AFI::Candidate_tensor::UNIFORM;
+    const double weight = uniform ? 0.0 : isotropic ? isotropic_weight : anisotropic_weight;
     AFI::Flow_outcome out;
     AF::Fairing_report& r = out.report;
     r.steps.resize(3);
-    if(isotropic) { out.Y = toward_sphere(request.start, isotropic_weight); r.stop_reason = others_stop; }
-    else if(uniform) { out.Y = request.start; r.stop_reason = others_stop; }   // the probe stays
-    else { out.Y = toward_sphere(request.start, anisotropic_weight); r.stop_reason = anisotropic_stop; }
-    if(request.probe_start && uniform) out.probe = *request.probe_start;
-    else if(request.probe_start && all_ride)
-      out.probe = toward_sphere(*request.probe_start, isotropic ? isotropic_weight : anisotropic_weight);
-    // else only the uniform flow's rides along
+    out.Y = toward_sphere(request.start, weight);   // the uniform stand-in stays, and so does its probe
+    r.stop_reason = isotropic || uniform ? others_stop : anisotropic_stop;
+    if(probe) out.probe = toward_sphere(*request.probe_start, weight);
     if(request.may_be_kept) out.Z = out.Y;
     return out;
   }
+
+  bool ran(const std::string& call) const
+  {
+    for(const std::string& c : calls)
+      if(c.find(call) == 0) return true;
+    return false;
+  }
 };
 
-// The default run's first run (the stand-in anisotropic flow), then its choice.
+// The default run's choice, the estimate's surface (the truth's normals) known before the first run.
 struct Selection
 {
   AF::Fairing_report report;
@@ -77,28 +81,72 @@ struct Selection
   std::string choices;
 };
 
-// `surface` not empty: the estimate's surface, known before the first run, which carries its probe along its
-// normals.
 Selection select(Stand_in_flows& flows, const AFI::Ghost_layer& layer, const AFI::Control_matrix& input,
-                 const std::vector<double>& sigmas, const AFI::Control_matrix& surface = AFI::Control_matrix())
+                 const std::vector<double>& sigmas)
 {
-  AFI::Candidate_list candidates = AFI::default_candidates(2);
   const std::vector<double> b = AFI::risk_probe_values(std::size_t(input.rows()));
-  AFI::Control_matrix probe;
-  if(surface.size() > 0)
-    probe = AFI::probed_input(input, AFI::vertex_normals(*layer.topology, layer.real_faces, surface), sigmas, b);
-  AFI::Flow_request first{ candidates[0].settings, "", input };
-  first.probe_start = surface.size() > 0 ? &probe : nullptr;
-  candidates[0].result = flows.run(first);
-  candidates[0].made = true;
-  AFI::Smoother_choice choice =
-    AFI::select_smoother(std::move(candidates), AFI::Selection_context{ layer, input, sigmas, b, surface }, flows);
+  const AFI::Control_matrix surface = toward_sphere(input, 1.0);
+  AFI::Smoother_choice choice = AFI::select_smoother(AFI::default_candidates(2),
+                                                     AFI::Selection_context{ layer, input, sigmas, b, surface }, flows);
   Selection s;
   s.report = choice.kept.result.report;
   s.X = choice.kept.result.Y;
   s.control = choice.kept.result.Z;
   s.choices = choice.choices;
+  std::printf("kept the %s result; runs:", s.report.selected_tensor.c_str());
+  for(const std::string& c : flows.calls) std::printf(" [%s]", c.c_str());
+  std::printf("\n  choices%s\n", s.choices.c_str());
   return s;
+}
+
+// An estimate whose terms are the first column of the result: what the drop test reads (Candidate_drop.h).
+struct Column_estimate : AFI::Risk_estimate
+{
+  AFI::Control_matrix none;
+  const AFI::Control_matrix& probed() const override { return none; }
+  std::vector<double> terms(const AFI::Control_matrix& f, const AFI::Control_matrix&) const override
+  {
+    std::vector<double> t(std::size_t(f.rows()));
+    for(Eigen::Index i = 0; i < f.rows(); ++i) t[std::size_t(i)] = f(i, 0);
+    return t;
+  }
+  double relative(const AFI::Control_matrix& f, const AFI::Control_matrix& p) const override
+  {
+    double sum = 0;
+    for(double t : terms(f, p)) sum += t;
+    return sum / double(f.rows()) - 1;
+  }
+  double relative_loss(const AFI::Control_matrix&, const AFI::Control_matrix&) const override { return 0; }
+  const char* description() const override { return "the first column"; }
+};
+
+// A candidate dropped against a leader whose terms are all 1 (estimate 0): its estimate per step is the
+// mean of its terms less 1, their spread `spread` around it (alternating signs: a standard error of spread
+// / sqrt(n - 1) for n terms).
+void check_drop_test()
+{
+  const std::size_t n = 400;
+  const std::vector<double> leader(n, 1.0);
+  const auto state = [n](double estimate, double spread) {
+    AFI::Control_matrix Y = AFI::Control_matrix::Zero(Eigen::Index(n), 3);
+    for(std::size_t i = 0; i < n; ++i) Y(Eigen::Index(i), 0) = 1 + estimate + (i % 2 ? spread : -spread);
+    return Y;
+  };
+  const Column_estimate e;
+  std::vector<double> t = e.terms(state(0.3, 2.0), AFI::Control_matrix());
+  const std::pair<double, double> d = AFI::mean_difference(t, leader);
+  AF_CHECK(std::abs(d.first - 0.3) < 1e-12 && std::abs(d.second - 2.0 / std::sqrt(double(n - 1))) < 1e-12,
+           "the mean difference and its standard error");
+  double last = 0;
+  const auto keep_going = AFI::drop_test(e, leader, last);
+  // falling (kept), rising but within 2 standard errors (0.25 against 2 x 0.15: kept), rising by more (dropped)
+  const AFI::Control_matrix none;
+  const bool first = keep_going(state(0.5, 0.1), none), second = keep_going(state(0.2, 0.1), none);
+  const bool third = keep_going(state(0.25, 3.0), none), fourth = keep_going(state(0.3, 0.1), none);
+  std::printf("drop test: %d %d %d %d, last estimate %.3g\n", first, second, third, fourth, last);
+  AF_CHECK(first && second, "a falling estimate is kept, however far above the leader");
+  AF_CHECK(third, "a rising one within twice the standard error of the difference is kept");
+  AF_CHECK(!fourth && std::abs(last - 0.3) < 1e-12, "a rising one above it by more is dropped, at its estimate");
 }
 
 } // namespace
@@ -116,40 +164,33 @@ int main()
   for(Eigen::Index i = 0; i < input.rows(); ++i) input.row(i) *= 1 + gauss(rng);
   const std::vector<double> sigmas(std::size_t(input.rows()), sigma);
 
-  for(const AF::Stop_reason stop : {AF::Stop_reason::STEP_REJECTED, AF::Stop_reason::MAXIMUM_STEPS, AF::Stop_reason::CALLBACK})
+  for(const AF::Stop_reason stop : {AF::Stop_reason::STEP_REJECTED, AF::Stop_reason::MAXIMUM_STEPS})
   {
-    Stand_in_flows flows{stop, 0.1, 1.0, {}};
+    Stand_in_flows flows{stop};
+    std::printf("anisotropic candidate stopped by %s: ", AF::to_string(stop));
     const Selection chosen = select(flows, layer, input, sigmas);
-    const AF::Fairing_report& report = chosen.report;
-    const AFI::Control_matrix &X = chosen.X, &control = chosen.control;
-    const std::string& choices = chosen.choices;
-    std::printf("anisotropic candidate stopped by %s: kept the %s result; runs:", AF::to_string(stop), report.selected_tensor.c_str());
-    for(const std::string& c : flows.calls) std::printf(" [%s]", c.c_str());
-    std::printf("\n  choices%s\n", choices.c_str());
-    const double moved_to_sphere = (X - toward_sphere(input, 1.0)).norm();
-    if(stop == AF::Stop_reason::CALLBACK)
-    {
-      // the user ended the run: nothing else is run, the anisotropic result is kept
-      AF_CHECK(report.selected_tensor == "anisotropic", "a run the callback ended is kept as it is");
-      AF_CHECK(flows.calls.size() == 1, "and no other candidate runs");
-      continue;
-    }
-    AF_CHECK(report.selected_tensor == "isotropic", std::string("the candidate that stopped early (") + AF::to_string(stop) +
-                                                      ") is judged, not preferred: the isotropic result is kept");
-    AF_CHECK(moved_to_sphere < 1e-12 && (control - X).norm() < 1e-12, "X and the control points are the kept candidate's");
-    AF_CHECK(choices.find(std::string("anisotropic not estimated (stopped early: ") + AF::to_string(stop) + ")") != std::string::npos,
-             "choices names the candidate that stopped early");
-    // no probe run for a candidate that cannot be kept; the uniform probe rode along its run
-    bool probed_early = false, uniform_along = false, uniform_probe_run = false;
-    for(const std::string& c : flows.calls)
-    {
-      probed_early = probed_early || c.find("anisotropic flow on the probed input") == 0;
-      uniform_along = uniform_along || c == "uniform fourth-order flow (probe along)";
-      uniform_probe_run = uniform_probe_run || c.find("uniform fourth-order flow on the probed input") == 0;
-    }
-    AF_CHECK(!probed_early, "the early candidate is not probed while another reached the noise level");
-    AF_CHECK(uniform_along && !uniform_probe_run, "the uniform candidate's probe rides along its run");
-    AF_CHECK(choices.find("uniform fourth-order not") == std::string::npos, "and it is estimated: " + choices);
+    AF_CHECK(chosen.report.selected_tensor == "isotropic", std::string("the candidate that stopped early (") +
+                                                             AF::to_string(stop) + ") is judged, not preferred");
+    AF_CHECK((chosen.X - toward_sphere(input, 1.0)).norm() < 1e-12 && (chosen.control - chosen.X).norm() < 1e-12,
+             "X and the control points are the kept candidate's");
+    AF_CHECK(chosen.choices.find(std::string("anisotropic not estimated (stopped early: ") + AF::to_string(stop) + ")") !=
+               std::string::npos, "choices names the candidate that stopped early: " + chosen.choices);
+    AF_CHECK(flows.ran("uniform fourth-order flow (probe along)") && flows.ran("anisotropic flow (probe along)"),
+             "every candidate carries its probe");
+    AF_CHECK(!flows.ran("uniform fourth-order flow on the probed input") && !flows.ran("anisotropic flow on the probed input"),
+             "a candidate whose carried probe is its estimate is never run again");
+    AF_CHECK(flows.ran("isotropic flow on the probed input"), "the isotropic one is, its carried estimate being the lowest");
+    AF_CHECK(chosen.choices.find("uniform fourth-order 0.9") != std::string::npos, "the uniform one is estimated at about 1");
+  }
+
+  // the first run ended by the user's callback: kept alone, nothing else runs
+  {
+    Stand_in_flows flows{AF::Stop_reason::NOISE_LEVEL};
+    flows.others_stop = AF::Stop_reason::CALLBACK;
+    std::printf("first run ended by the callback: ");
+    const Selection chosen = select(flows, layer, input, sigmas);
+    AF_CHECK(chosen.report.selected_tensor == "uniform" && flows.calls.size() == 1,
+             "a first run the callback ended is kept as it is, and no other candidate runs");
   }
 
   // judged, not preferred, however low its estimate: w = 1 (the truth) has the lowest estimate, below
@@ -160,42 +201,42 @@ int main()
   for(const auto& m : cases)
   {
     Stand_in_flows flows{AF::Stop_reason::STEP_REJECTED, 1.0, 0.5, {}, m.others};
+    std::printf("stopped early at w = 1, the others at w = 0.5 (%s): ", AF::to_string(m.others));
     const Selection chosen = select(flows, layer, input, sigmas);
-    std::printf("stopped early at w = 1, the others at w = 0.5 (%s): kept the %s result%s\n", AF::to_string(m.others),
-                chosen.report.selected_tensor.c_str(), chosen.choices.c_str());
     AF_CHECK(chosen.report.selected_tensor == m.kept, std::string("kept the ") + m.kept + " result");
     AF_CHECK(chosen.choices.find("(stopped early: step_rejected)") != std::string::npos &&
              chosen.choices.find("anisotropic not compared") == std::string::npos, "it is named: " + chosen.choices);
     if(m.others == AF::Stop_reason::NOISE_LEVEL) continue;
-    // estimated, since none reached the noise level: its probe run replays its steps (no stopping rule of
-    // its own)
-    bool replayed = false;
-    for(const std::string& c : flows.calls) replayed = replayed || c == "anisotropic flow on the probed input (fixed)";
-    AF_CHECK(replayed, "the early candidate's probe run takes the same steps");
-    AF_CHECK(chosen.choices.find("anisotropic not estimated") == std::string::npos, "and its estimate is shown: " + chosen.choices);
+    // estimated, since none reached the noise level: by its carried probe, not by a run of its own
+    AF_CHECK(!flows.ran("anisotropic flow on the probed input"), "the early candidate is not run again");
+    AF_CHECK(chosen.choices.find("anisotropic not estimated") == std::string::npos, "its estimate is shown: " + chosen.choices);
+    // the isotropic candidate's carried bound is above the anisotropic estimate: it is not run again
+    AF_CHECK(!flows.ran("isotropic flow on the probed input"), "nor is a candidate whose carried bound is not the lowest");
   }
 
-  // the estimate's surface known first: the isotropic stand-in (the truth, its estimate about 0) and the
-  // anisotropic one (a tenth of the way: a hundredth of the noise's square left and a divergence of 0.9 per
-  // vertex, about 0.8) both carry their probes, below the uniform one's 1; the isotropic, the lower, is run again
-  // first, and the anisotropic is then above its estimate and is not
+  // none at the noise level, the isotropic stand-in the truth: its carried bound is the lowest, and it is
+  // estimated by a run on the probed input replaying its steps (no stopping rule)
   {
-    Stand_in_flows flows{AF::Stop_reason::NOISE_LEVEL, 0.1, 1.0, {}};
-    flows.all_ride = true;
-    const Selection chosen = select(flows, layer, input, sigmas, toward_sphere(input, 1.0));
-    std::printf("normals known first: kept the %s result; runs:", chosen.report.selected_tensor.c_str());
-    for(const std::string& c : flows.calls) std::printf(" [%s]", c.c_str());
-    std::printf("\n  choices%s\n", chosen.choices.c_str());
-    bool isotropic_again = false, anisotropic_again = false;
-    for(const std::string& c : flows.calls)
-    {
-      isotropic_again = isotropic_again || c == "isotropic flow on the probed input";
-      anisotropic_again = anisotropic_again || c.find("anisotropic flow on the probed input") == 0;
-    }
-    AF_CHECK(chosen.report.selected_tensor == "isotropic", "the lowest estimate is kept");
-    AF_CHECK(isotropic_again && !anisotropic_again, "only the candidate whose carried estimate could be the lowest runs again");
-    AF_CHECK(chosen.choices.find("anisotropic 0.") != std::string::npos && chosen.choices.find("or more (carried along") != std::string::npos,
-             "the other's carried estimate is shown as a lower bound: " + chosen.choices);
+    Stand_in_flows flows{AF::Stop_reason::STEP_REJECTED, 0.5, 1.0, {}, AF::Stop_reason::MAXIMUM_STEPS};
+    std::printf("none at the noise level, the isotropic stand-in the truth: ");
+    const Selection chosen = select(flows, layer, input, sigmas);
+    AF_CHECK(chosen.report.selected_tensor == "isotropic", "the lowest estimate among the early runs is kept");
+    AF_CHECK(flows.ran("isotropic flow on the probed input (fixed)"), "an early candidate's probe run takes its steps");
   }
+
+  // the anisotropic stand-in the truth at the noise level, the isotropic one half way: the anisotropic estimate
+  // (its carried one, about 0) is the lowest, and the isotropic one, whose carried estimate is above it, is not
+  // run again: its carried estimate is shown as a lower bound
+  {
+    Stand_in_flows flows{AF::Stop_reason::NOISE_LEVEL, 1.0, 0.5, {}};
+    std::printf("the anisotropic stand-in the truth: ");
+    const Selection chosen = select(flows, layer, input, sigmas);
+    AF_CHECK(chosen.report.selected_tensor == "anisotropic", "the lowest estimate is kept");
+    AF_CHECK(!flows.ran("isotropic flow on the probed input") && flows.calls.size() == 3, "no candidate runs again");
+    AF_CHECK(chosen.choices.find("isotropic 0.") != std::string::npos &&
+             chosen.choices.find("or more (carried along") != std::string::npos,
+             "the isotropic carried estimate is shown as a lower bound: " + chosen.choices);
+  }
+  check_drop_test();
   return AF_test::report();
 }

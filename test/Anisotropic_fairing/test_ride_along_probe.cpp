@@ -7,7 +7,10 @@
 //    (the stiffness annihilates constants, so its columns solve the run's own system);
 //  - a probe started from the input plus e d and one from the input plus 2 e d differ from the run's
 //    result by a difference and its double (linear in the start, unlike a run of its own);
-//  - under a deviation bound (vertex fidelities that change with the state) the probe does not ride along.
+//  - under a deviation bound (vertex fidelities that change with the state) the probe does not ride along;
+//  - a probe of the anisotropic flow stepping on an operator of its own surface (internal/flow/Probe_flow.h)
+//    ends where a run of its own from the probed start ends, taking the same steps (no stopping rule): the
+//    whole map, the operator's dependence on the data included, which the shared operator's probe misses.
 
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/Surface_mesh.h>
@@ -47,7 +50,7 @@ struct Result
 
 template <typename Tensor>
 Result run(const Setup& m, const AFI::Ghosted_patch_cache& cache, const AFI::Noise_estimate& noise, const Tensor& tensor, int order,
-           const AFI::Control_matrix* probe, double deviation = 0)
+           const AFI::Control_matrix* probe, double deviation = 0, bool own_operator = false, std::size_t fixed_steps = 0)
 {
   AFI::Stepper_settings s;
   s.order = order;
@@ -59,6 +62,11 @@ Result run(const Setup& m, const AFI::Ghosted_patch_cache& cache, const AFI::Noi
   s.noise = &noise;
   s.measure_limit_surface = s.limit_written = true;
   s.maximum_deviation = deviation;
+  if(fixed_steps > 0)
+  {
+    s.maximum_steps = fixed_steps;
+    s.stopping = AF::Stopping_criteria::none();
+  }
   const std::size_t n = std::size_t(m.X.rows());
   const std::vector<bool> constrained(n, false), border(n, false);
   const auto callback = [](const AF::Fairing_step&) { return true; };
@@ -67,6 +75,7 @@ Result run(const Setup& m, const AFI::Ghosted_patch_cache& cache, const AFI::Noi
                                                             AF::Attribute_mode::GEOMETRY_ONLY, constrained, border };
   AFI::Probe_plan plan;
   plan.start = probe;
+  plan.own_operator = own_operator;
   AFI::Stepper_outcome o = AFI::run_stepper(context, tensor, s, m.X, plan, cb);
   Result r;
   r.report = o.report;
@@ -134,6 +143,26 @@ int main()
     // is about 0.02 here, and the columns of a translated start differ by rounding alone
     AF_CHECK(moved.probe.size() == plain.Y.size() && translation < 1e-9, std::string(name) + ": the translated start ends translated");
     AF_CHECK(size > 1e-8 && linear < 1e-4 * size, std::string(name) + ": the probe is linear in its start");
+  }
+  // the anisotropic probe on its own operator: as a run of its own from the probed start, 3 steps
+  {
+    const std::size_t k = 3;
+    const Result plain = run(m, cache, noise, anisotropic, 2, nullptr, 0, false, k);
+    const Result own = run(m, cache, noise, anisotropic, 2, &once, 0, true, k);
+    const Result shared = run(m, cache, noise, anisotropic, 2, &once, 0, false, k);
+    AFI::Control_matrix input = once;
+    m.X.swap(input);   // the run of its own, from the probed start
+    const Result from_probe = run(m, cache, noise, anisotropic, 2, nullptr, 0, false, k);
+    m.X.swap(input);
+    const double own_off = largest(own.probe - from_probe.Y), shared_off = largest(shared.probe - from_probe.Y);
+    const double moved = largest(from_probe.Y - once);
+    std::printf("anisotropic flow, %zu steps: its own operator's probe off a run from the probed start by %.3g, the "
+                "shared operator's by %.3g (the steps moved it %.3g)\n", k, own_off, shared_off, moved);
+    AF_CHECK(plain.report.steps.size() == k && from_probe.report.steps.size() == k && own.report.steps.size() == k,
+             "the runs take the same steps");
+    AF_CHECK(largest(own.Y - plain.Y) == 0.0, "carrying a probe on its own operator leaves the run's result as it is");
+    AF_CHECK(own.probe.size() == own.Y.size() && own_off < 1e-9 * moved, "its own operator's probe is the run of its own");
+    AF_CHECK(shared_off > 1e3 * own_off, "the shared operator's probe is not: it leaves the operator's change out");
   }
   const Result bounded = run(m, cache, noise, AF::Uniform_diffusion_tensor(), 4, &once, 0.01);
   AF_CHECK(bounded.report.succeeded() && bounded.probe.size() == 0, "under a deviation bound the probe does not ride along");

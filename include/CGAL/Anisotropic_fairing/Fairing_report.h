@@ -57,7 +57,10 @@ enum class Stop_reason {
   DEVIATION_BOUND,
   /// the normal-field candidate (not yet compared by the default run; measured by `bench/bench_estimate_soundness`):
   /// the pass whose estimated error of the face normals is the lowest (the estimate stopped falling)
-  LOWEST_ESTIMATE
+  LOWEST_ESTIMATE,
+  /// a run of the default run's comparison (never the run kept; in `Fairing_report::runs`): its estimated error
+  /// rose, above another run's by more than twice the standard error of their difference, so it was ended
+  DROPPED
 };
 
 /// \ingroup PkgAnisotropicFairingFunctions
@@ -77,6 +80,7 @@ inline const char* to_string(Stop_reason r)
     case Stop_reason::NOISE_REMOVED: return "noise_removed";
     case Stop_reason::DEVIATION_BOUND: return "deviation_bound";
     case Stop_reason::LOWEST_ESTIMATE: return "lowest_estimate";
+    case Stop_reason::DROPPED: return "dropped";
     case Stop_reason::STEP_REJECTED: return "step_rejected";
     case Stop_reason::FAILURE: return "failure";
   }
@@ -131,14 +135,15 @@ struct Fairing_step
   /// the input (`runs` at most), and `number_of_iterations` bounds their steps in all
   std::size_t run = 1;
   std::size_t runs = 1;         ///< the most runs the call makes
-  std::string run_name;         ///< what the run is, e.g. "isotropic flow", "anisotropic flow on the probed input"
+  std::string run_name;         ///< what the run is, e.g. "anisotropic flow", "isotropic flow on the probed input"
 };
 
 /*!
 \ingroup PkgAnisotropicFairingFunctions
-One run a call made, in `Fairing_report::runs`: the default run makes several (its candidate flows, a flow's run on
-the probed input when its risk estimate needs one, the kept flow's run to `strength`), any other call one. What it
-cost, how it ended, and what the comparison made of it.
+One run a call made, in `Fairing_report::runs`: the default run makes several (its candidate flows, the anisotropic
+one's time including its probed copy's own operator, a flow's run on the probed input when its risk estimate needs
+one, the kept flow's run to `strength`), any other call one. What it cost, how it ended (`Stop_reason::DROPPED`: the
+comparison ended it), and what the comparison made of it.
 */
 struct Fairing_run
 {

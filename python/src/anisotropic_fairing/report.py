@@ -47,7 +47,8 @@ class FairingStep(TypedDict):
 class FairingRun(TypedDict):
     """One run the call made (``report['runs'][k]``, in order): the default run's candidate flows, a flow's run on
     the probed input, the kept flow's run to ``strength``; one entry for any other call. ``estimate`` is the risk
-    estimate the comparison gave its result (``None``: none), ``kept`` whether its result was written."""
+    estimate the comparison gave its result (``None``: none), ``kept`` whether its result was written;
+    ``stop_reason`` ``'dropped'``: the comparison ended the run, its estimate above another's."""
     name: str
     steps: int
     rejected_steps: int

@@ -16,6 +16,7 @@
 #include <CGAL/Anisotropic_fairing/internal/flow/Deviation_bound.h>
 #include <CGAL/Anisotropic_fairing/internal/flow/Flow_units.h>
 #include <CGAL/Anisotropic_fairing/internal/flow/Output_fidelity.h>
+#include <CGAL/Anisotropic_fairing/internal/flow/Probe_flow.h>
 #include <CGAL/Anisotropic_fairing/internal/flow/Ride_along_probe.h>
 #include <CGAL/Anisotropic_fairing/internal/flow/Run_report.h>
 #include <CGAL/Anisotropic_fairing/internal/flow/Step_control.h>
@@ -36,12 +37,13 @@ namespace CGAL {
 namespace Anisotropic_fairing {
 namespace internal {
 
-/// The risk estimate's probe a run carries along (Ride_along_probe.h): its start, or a maker of it from the
-/// run's prefiltered start; neither: none.
+/// The risk estimate's probe a run carries along (Ride_along_probe.h): its start (empty: none).
 struct Probe_request
 {
   Control_matrix start;
-  std::function<Control_matrix(const Control_matrix&)> make;
+  // after each accepted step that no rule ends, with the run's and the probe's control points: false ends
+  // the run (Stop_reason::DROPPED: the comparison has a better candidate)
+  std::function<bool(const Control_matrix&, const Control_matrix&)> keep_going;
 };
 
 /// What a run returns besides the moved rows.
@@ -54,7 +56,8 @@ struct Flow_result
 };
 
 /// One run. X: the surface's control points (its first `metric_columns` columns); Z: what moves, X itself, or
-/// on a fixed surface (`fixed`: X's first 3 columns do not move) the attributes' columns.
+/// on a fixed surface (`fixed`: X's first 3 columns do not move) the attributes' columns. `probe_operator`:
+/// makes the probe's own operator (Probe_flow.h; null: the probe shares the run's).
 template <typename Operator, typename Tensor, typename Callback>
 class Flow_loop
 {
@@ -62,10 +65,13 @@ class Flow_loop
 
 public:
   Flow_loop(Operator& op, const Control_matrix& X, Control_matrix& Z, int metric_columns, const Tensor& tensor,
-            const Stepper_settings& s, Callback& callback, bool fixed, Probe_request probe = Probe_request())
+            const Stepper_settings& s, Callback& callback, bool fixed, Probe_request probe = Probe_request(),
+            typename Probe_flow<Operator, Tensor>::Operator_maker probe_operator = nullptr)
     : op_(op), X_(X), Z_(Z), metric_columns_(metric_columns), tensor_(tensor), s_(s), callback_(callback),
       fixed_(fixed), probe_request_(std::move(probe))
-  {}
+  {
+    if(probe_operator) probe_flow_.emplace(std::move(probe_operator), tensor);
+  }
 
   Flow_result run()
   {
@@ -141,10 +147,7 @@ private:
     row_unit_ = op_.units().length;
     if(!fixed_) return;
     report_.initial.energy = op_.dirichlet_energy(Z_);
-    double spread = 0;
-    const Eigen::RowVectorXd mean = Z0_.colwise().mean();
-    for(Eigen::Index i = 0; i < Z0_.rows(); ++i) spread += (Z0_.row(i) - mean).squaredNorm();
-    spread = Z0_.rows() > 0 ? std::sqrt(spread / double(Z0_.rows())) : 0.0;
+    const double spread = row_spread(Z0_);
     row_unit_.assign(std::size_t(Z0_.rows()), spread > 0 ? spread : 1.0);
   }
 
@@ -157,9 +160,7 @@ private:
     target_ = noise_stop_ ? s_.stopping.noise_discrepancy * s_.strength * s_.noise->relative_sigma() : 0.0;
     discrepancy_ = noise_stop_ ? s_.noise->relative_displacement(Y_, Z0_, {}) : 0.0;
     report_.noise_displacement = discrepancy_;
-    // before the first step, the limit surface of the input may round its creases by more than the
-    // noise while leaving most vertices in place: a clean mesh, whatever the typical vertex says
-    first_discrepancy_ = noise_stop_ ? std::max(discrepancy_, s_.noise->relative_displacement(Y_, Z0_, {}, true)) : 0.0;
+    first_discrepancy_ = noise_stop_ ? Noise_level::at_start(*s_.noise, Y_, Z0_) : 0.0;
   }
 
   // the folds of the input and the user's bound on the written positions
@@ -208,13 +209,11 @@ private:
   // fidelities), and the solver of the steps
   void start_solver()
   {
-    if(!fixed_ && !bound_->active())
-    {
-      if(probe_request_.make) probe_.start(probe_request_.make(op_.prefiltered() ? *op_.prefiltered() : Z0_));
-      else if(probe_request_.start.size() > 0) probe_.start(probe_request_.start);
-    }
+    if(!fixed_ && !bound_->active() && probe_request_.start.size() > 0) probe_.start(probe_request_.start);
+    keep_going_ = std::move(probe_request_.keep_going);
     probe_request_ = Probe_request();
-    const Eigen::Index solved_columns = Z_.cols() * (probe_.active() ? 2 : 1);
+    if(probe_flow_) probe_flow_->start(probe_, metric_columns_, s_);
+    const Eigen::Index solved_columns = Z_.cols() * (shared_probe() ? 2 : 1);
     op_.start_solver(s_, solved_columns, fixed_, bound_->active() ? &*fidelity_ : nullptr, &anchor_, Z0_);
   }
 
@@ -266,6 +265,7 @@ private:
     const Outcome judged = judge(step, finite, last_step);
     if(judged != Outcome::NEXT) return judged;
     if(retake_for_bound(finite)) return Outcome::RETRY;
+    if(probe_flow_) probe_flow_->step(probe_, control_.factor(), cut_at);   // the step accepted, on its own
     return accept(st, cut_at);
   }
 
@@ -301,19 +301,15 @@ private:
   {
     clock_.reset();
     Solve_statistics sol;
-    if(probe_.active())
+    Zc_.resize(0, 0);   // the last candidate, accepted or not, is not needed while this step is solved
+    if(shared_probe())
     {
       // [Z | probe], [Z0 | its start]: one solve for both
       Control_matrix ZZ, ZZ0;
       probe_.augment(Z_, Z0_, ZZ, ZZ0);
-      Zc_.resize(0, 0);   // the last candidate, accepted or not, is not needed while this step is solved
       sol = op_.solve(control_.factor(), ZZ, ZZ0, bound_->weights(), st.direct_solve);
     }
-    else
-    {
-      Zc_.resize(0, 0);
-      sol = op_.solve(control_.factor(), Z_, Z0_, bound_->weights(), st.direct_solve);
-    }
+    else sol = op_.solve(control_.factor(), Z_, Z0_, bound_->weights(), st.direct_solve);
     st.solve_seconds = op_.solve_seconds();
     st.assemble_seconds = assemble_seconds_ + clock_.time() - st.solve_seconds;
     assemble_seconds_ = 0;
@@ -344,17 +340,17 @@ private:
     // the tangent planes are those of M_eps when the tensor reads its curvature there: on noise, the current
     // surface's normal is mostly noise, and removing motion in its tangent plane would keep the noise
     const Control_matrix& tangent_surface = op_.prefiltered() ? *op_.prefiltered() : Z_;
-    if(probe_.active())
+    if(shared_probe())
     {
       Control_matrix d = solution.rightCols(Z_.cols());
       op_.normal_part(tangent_surface, metric_columns_, d);
       probe_.make_candidate([&](Control_matrix& P) { op_.add(P, d); });
     }
     Step_motion m;
-    if(op_.moves_normally() || probe_.active())
+    if(op_.moves_normally() || shared_probe())
     {
       // the solution itself stays as it is: the next step's CG starts from it
-      Control_matrix dZ = probe_.active() ? Control_matrix(solution.leftCols(Z_.cols())) : solution;
+      Control_matrix dZ = shared_probe() ? Control_matrix(solution.leftCols(Z_.cols())) : solution;
       op_.normal_part(tangent_surface, metric_columns_, dZ);
       m = op_.move(Zc_, dZ, Z0_, measured_columns_, row_unit_);
     }
@@ -499,7 +495,13 @@ private:
       if(!stop->message.empty()) report_.message = stop->message;
     }
     if(!callback_(report_.steps.back()) && !stop) report_.stop_reason = Stop_reason::CALLBACK;
-    else if(!stop) return Outcome::NEXT;
+    else if(!stop && probe_.active() && keep_going_ && !keep_going_(Z_, probe_.result()))
+      report_.stop_reason = Stop_reason::DROPPED;
+    else if(!stop)
+    {
+      if(probe_flow_) probe_flow_->next(probe_);
+      return Outcome::NEXT;
+    }
     return Outcome::ENDED;
   }
 
@@ -521,6 +523,9 @@ private:
     op_.measured_positions(Z_, Y_);
     st.noise_displacement = s_.noise->relative_displacement(Y_, Z0_, {});
   }
+
+  // the probe's steps are columns of the run's solves (no operator of its own)
+  bool shared_probe() const { return probe_.active() && !probe_flow_; }
 
   // the end: never a surface with more folded edges than the input (stop/New_folds.h)
   void finish()
@@ -562,6 +567,8 @@ private:
   CGAL::Real_timer total_, clock_;
   Fairing_report report_;
   Ride_along_probe probe_;
+  std::optional<Probe_flow<Operator, Tensor>> probe_flow_;
+  std::function<bool(const Control_matrix&, const Control_matrix&)> keep_going_;
   double limit_weight_ = 1;
   double assemble_seconds_ = 0, time_unit_ = 1, time_ = 0;
   Control_matrix Z0_, Y_, Yb_, anchor_, Zc_, Z_previous_, Z_unfolded_;

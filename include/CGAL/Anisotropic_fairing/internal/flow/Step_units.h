@@ -98,6 +98,15 @@ inline Step_units make_step_units(const Assembly_statistics& a0, const Mesh_comp
   return u;
 }
 
+/// The root mean square of the rows of Z off their mean: the unit of a fixed surface's attributes.
+inline double row_spread(const Control_matrix& Z)
+{
+  double spread = 0;
+  const Eigen::RowVectorXd mean = Z.colwise().mean();
+  for(Eigen::Index i = 0; i < Z.rows(); ++i) spread += (Z.row(i) - mean).squaredNorm();
+  return Z.rows() > 0 ? std::sqrt(spread / double(Z.rows())) : 0.0;
+}
+
 } // namespace internal
 } // namespace Anisotropic_fairing
 } // namespace CGAL

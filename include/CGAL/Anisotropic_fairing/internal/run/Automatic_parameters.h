@@ -10,7 +10,9 @@
 #ifndef CGAL_ANISOTROPIC_FAIRING_INTERNAL_RUN_AUTOMATIC_PARAMETERS_H
 #define CGAL_ANISOTROPIC_FAIRING_INTERNAL_RUN_AUTOMATIC_PARAMETERS_H
 
+#include <CGAL/Anisotropic_fairing/Fairing_report.h>
 #include <CGAL/Anisotropic_fairing/internal/flow/Noise_estimate.h>
+#include <CGAL/Anisotropic_fairing/internal/flow/Noise_model.h>
 #include <CGAL/Anisotropic_fairing/internal/flow/Stepper_settings.h>
 
 #include <cstddef>
@@ -69,6 +71,21 @@ inline std::string automatic_choices(const Noise_estimate& noise, const Stepper_
     choices += std::string("; the ") + scaled_flow +
                " flow's time step follows the mesh's density (h: the edge length around each vertex)";
   return choices;
+}
+
+/// The noise the run read from the mesh, in the report (`mean_edge_length` filled).
+inline void report_noise(const Noise_estimate& noise, const Noise_model& model, Fairing_report& report)
+{
+  report.noise_level = noise.relative_sigma();
+  report.noise_deviation = noise.relative_sigma() * report.mean_edge_length;
+  report.noise_correlation = noise.correlation().k;
+  report.noise_correlation_factor = noise.correlation().factor();
+  report.tangential_noise_level = model.tangential;
+  report.noise_level_spread = model.normal_spread;
+  report.tangential_noise_level_spread = model.tangential_spread;
+  report.impulse_share = model.hit_share;
+  report.impulse_deviation = model.hit_deviation;
+  report.lattice_step = model.cell;
 }
 
 } // namespace internal

@@ -295,26 +295,28 @@ private:
       keep(runner.run(Flow_request{ Flow_settings{ Candidate_tensor::RUN_TENSOR, s_.order }, "", input_ }));
       return;
     }
-    Smoother_choice choice = compare_flows(std::move(candidates), runner);
+    Smoother_choice choice = compare_flows(std::move(candidates), runner, cache);
     choices_ += choice.choices;
     for(const auto& e : choice.estimates) log_.estimated(e.first, e.second);
     keep(std::move(choice.kept.result));
     if(strength_run()) run_kept_flow_to_strength(runner, choice.kept);
   }
 
-  // the run's own flow, its probe made of its prefiltered input (make_probe), then the other candidates
-  template <typename Runner>
-  Smoother_choice compare_flows(Candidate_list candidates, Runner& runner)
+  // The estimate's surface first, the input's M_eps as the run's own flow reads it, so that every candidate
+  // carries its probe from its start and the own flow, the costliest, runs last, where it can be dropped; with
+  // a step budget of the user's, first, as the budget's first claim. An input at the noise level already: the
+  // own flow alone (every flow stops before its first step).
+  template <typename Runner, typename Cache>
+  Smoother_choice compare_flows(Candidate_list candidates, Runner& runner, const Cache& cache)
   {
-    for(Flow_candidate& own : candidates)
-      if(own.settings.tensor == Candidate_tensor::RUN_TENSOR)
-      {
-        Flow_request request{ own.settings, own.flow, input_ };
-        request.make_probe = true;
-        own.result = runner.run(request);
-        own.made = true;
-        break;
-      }
+    const std::size_t own = own_candidate(candidates);
+    if(input_at_noise_level())
+    {
+      candidates[own].result = runner.run(Flow_request{ candidates[own].settings, candidates[own].flow, input_ });
+      candidates[own].made = true;
+    }
+    else estimate_surface_ = oracle_surface_.size() > 0 ? oracle_surface_ : prefiltered_input(cache);
+    if(given_.steps_given) std::rotate(candidates.begin(), candidates.begin() + own, candidates.begin() + own + 1);
     Selection_context context{ layer_, input_, noise_sigma_, probe_values_, estimate_surface_ };
     context.kind = risk_kind_;
     context.model = noise_model_.normal_scale.empty() ? nullptr : &noise_model_;
@@ -323,6 +325,24 @@ private:
         observer_(c, e, ordering_.old_of_new_vertex);
       };
     return select_smoother(std::move(candidates), context, runner);
+  }
+
+  // the input's limit surface is off it by the noise already (Noise_level.h)
+  bool input_at_noise_level() const
+  {
+    Control_matrix Y = input_;
+    if(s_.measure_limit_surface) limit_points(layer_, input_, Y);
+    const double target = s_.stopping.noise_discrepancy * s_.strength * noise_->relative_sigma();
+    return bool(Noise_level::before_first_step(Noise_level::at_start(*noise_, Y, input_), target));
+  }
+
+  // the input's M_eps, read by the run's own tensor (empty: it reads none)
+  template <typename Cache>
+  Control_matrix prefiltered_input(const Cache& cache) const
+  {
+    const Stepper_settings settings = with_order(s_, s_.order);
+    return with_tensor(tensor_,
+                       [&](const auto& t) { return prefiltered_start(flow_context(cache), t, settings, input_); });
   }
 
   void keep(Flow_outcome&& outcome)
@@ -374,17 +394,10 @@ private:
     choices_ += text;
   }
 
-  // the tensor of a candidate's flow
-  template <typename F>
-  Stepper_outcome with_candidate_tensor(Candidate_tensor which, F&& f) const
+  template <typename Cache>
+  Flow_context<Cache> flow_context(const Cache& cache) const
   {
-    switch(which)
-    {
-      case Candidate_tensor::ISOTROPIC: return f(Isotropic_diffusion_tensor());
-      case Candidate_tensor::UNIFORM: return f(Uniform_diffusion_tensor());
-      case Candidate_tensor::RUN_TENSOR: break;
-    }
-    return f(tensor_);
+    return { cache, ordering_, components_, component_edge_, mean_edge_, given_.mode, constrained_, border_ };
   }
 
   // One flow as `request` asks, on the given element's cache; the step budget pays for its steps.
@@ -394,12 +407,12 @@ private:
     if(request.flow.stage == Candidate_stage::NORMAL_FIELD) return run_normal_field_candidate(request);
     Probe_plan probe;
     probe.start = request.probe_start;
-    if(request.make_probe) probe.make = [this](const Control_matrix& surface) { return this->make_probe(surface); };
+    probe.own_operator = request.probe_own_operator;
+    if(request.keep_going) probe.keep_going = written_test(request.keep_going, loop);
     auto tagged = [this](const Fairing_step& step) { return this->tagged_callback(step); };
     const Stepper_settings settings = begin_run(request.name, request.flow.order, request.fixed_steps);
-    const Flow_context<Cache> context{ cache,       ordering_,   components_, component_edge_,
-                                       mean_edge_,  given_.mode, constrained_, border_ };
-    Stepper_outcome o = with_candidate_tensor(request.flow.tensor, [&](const auto& t) {
+    const Flow_context<Cache> context = flow_context(cache);
+    Stepper_outcome o = with_candidate_tensor(request.flow.tensor, tensor_, [&](const auto& t) {
       return with_tensor(t, [&](const auto& held) {
         return run_stepper(context, held, settings, request.start, probe, tagged);
       });
@@ -438,7 +451,7 @@ private:
     if(loop && out.report.succeeded() && given_.output == Output_positions::LIMIT_SURFACE)
     {
       write_limit(out.Y, start, o.limit_weight);
-      if(out.probe.size() > 0) write_limit(out.probe, probe_start(request), o.limit_weight);
+      if(out.probe.size() > 0) write_limit(out.probe, *request.probe_start, o.limit_weight);
     }
     bound_written(out.Y, start, out.report);
     // the linear element's control points are its written positions; the Loop element's, when written
@@ -446,10 +459,17 @@ private:
     return out;
   }
 
-  // where the probe carried along a run started
-  const Control_matrix& probe_start(const Flow_request& request) const
+  // a test on the written positions of a run and its probe, made a test on their control points
+  std::function<bool(const Control_matrix&, const Control_matrix&)>
+  written_test(std::function<bool(const Control_matrix&, const Control_matrix&)> test, bool loop) const
   {
-    return request.make_probe ? made_probe_ : *request.probe_start;
+    if(!loop || given_.output != Output_positions::LIMIT_SURFACE) return test;
+    return [this, test](const Control_matrix& Z, const Control_matrix& P) {
+      Control_matrix Y, YP;
+      limit_points(layer_, Z, Y);
+      limit_points(layer_, P, YP);
+      return test(Y, YP);
+    };
   }
 
   // `fixed_steps` > 0: exactly that many steps, no stopping rule (a probe replaying a run: Smoother_selection.h);
@@ -479,17 +499,6 @@ private:
     tagged.runs = planned_runs_;
     tagged.run_name = run_name_;
     return callback_(tagged);
-  }
-
-  // the risk estimate's surface (Smoother_selection.h): the input's prefiltered surface, which the
-  // first run makes before its first step, so that every candidate's probe can ride along from the start
-  Control_matrix make_probe(const Control_matrix& surface)
-  {
-    estimate_surface_ = oracle_surface_.size() > 0 ? oracle_surface_ : surface;
-    const Noise_model* model = noise_model_.normal_scale.empty() ? nullptr : &noise_model_;
-    made_probe_ =
-      make_risk_estimate(risk_kind_, layer_, input_, estimate_surface_, noise_sigma_, probe_values_, model)->probed();
-    return made_probe_;
   }
 
   // the written positions of control points Y of a run from `start`: their limit points, `limit_weight` of the way
@@ -537,18 +546,9 @@ private:
     report.automatic_parameters = given_.automatic;
     report.choices = choices_;
     report.runs = log_.runs();
-    report.noise_level = noise_->relative_sigma();
     report.strength = given_.settings.strength;
     report.removed_spikes = removed_spikes_;
-    report.noise_deviation = noise_->relative_sigma() * report.mean_edge_length;
-    report.noise_correlation = noise_->correlation().k;
-    report.noise_correlation_factor = noise_->correlation().factor();
-    report.tangential_noise_level = noise_model_.tangential;
-    report.noise_level_spread = noise_model_.normal_spread;
-    report.tangential_noise_level_spread = noise_model_.tangential_spread;
-    report.impulse_share = noise_model_.hit_share;
-    report.impulse_deviation = noise_model_.hit_deviation;
-    report.lattice_step = noise_model_.cell;
+    report_noise(*noise_, noise_model_, report);
     if(d > 0) X_.rightCols(d) /= attribute_scale();
     if(d > 0 && control_points_.cols() == 3 + d) control_points_.rightCols(d) /= attribute_scale();
     const std::vector<int>& old_of_new = ordering_.old_of_new_vertex;
@@ -573,7 +573,7 @@ private:
   CGAL::Real_timer setup_;   // from before the numbering to the element's cache
   const Locality_ordering ordering_;
   const Ghost_layer& layer_;
-  Control_matrix X_, input_, control_points_, estimate_surface_, made_probe_, oracle_surface_;
+  Control_matrix X_, input_, control_points_, estimate_surface_, oracle_surface_;
   std::vector<bool> constrained_, border_, isolated_, written_;
   Mesh_components components_;
   std::vector<double> component_edge_, noise_sigma_, probe_values_;

@@ -34,6 +34,7 @@ struct Fairing_parameters
 {
   Stepper_settings settings;   // the stepper's numbers as given (the driver adds the noise and the automatic choices)
   bool automatic = true;       // no time step given: the run chooses its parameters from the mesh
+  bool steps_given = false;    // number_of_iterations given: the default run's own flow runs first
   Finite_element element = Finite_element::LOOP;
   Output_positions output = Output_positions::LIMIT_SURFACE;
   Attribute_mode mode = Attribute_mode::GEOMETRY_ONLY;
@@ -173,6 +174,7 @@ inline Fairing_parameters resolve_fairing_parameters(const Fairing_options& o, b
 #undef AF_PARAMETER
 #undef AF_TENSOR_SETTING
   s.maximum_steps = o.maximum_steps();
+  p.steps_given = bool(o.number_of_iterations);
   s.order = o.flow_order;
   check_parameter(s.order == 2 || s.order == 4, "flow_order must be 2 (diffusion) or 4");
   p.element = o.finite_element;

@@ -9,10 +9,13 @@
 #define CGAL_ANISOTROPIC_FAIRING_INTERNAL_RUN_FLOW_CANDIDATES_H
 
 #include <CGAL/Anisotropic_fairing/Fairing_report.h>
+#include <CGAL/Anisotropic_fairing/Isotropic_diffusion_tensor.h>
+#include <CGAL/Anisotropic_fairing/Uniform_diffusion_tensor.h>
 #include <CGAL/Anisotropic_fairing/internal/types/Control_matrix.h>
 
 #include <cmath>
 #include <cstddef>
+#include <functional>
 #include <string>
 #include <vector>
 
@@ -22,6 +25,19 @@ namespace internal {
 
 /// The tensor of a candidate's flow: the run's own (the tensor given or chosen), or one of the package's.
 enum class Candidate_tensor { RUN_TENSOR, ISOTROPIC, UNIFORM };
+
+/// f called with the tensor of a candidate's flow (`run_tensor`: the run's own)
+template <typename Tensor, typename F>
+decltype(auto) with_candidate_tensor(Candidate_tensor which, const Tensor& run_tensor, F&& f)
+{
+  switch(which)
+  {
+    case Candidate_tensor::ISOTROPIC: return f(Isotropic_diffusion_tensor());
+    case Candidate_tensor::UNIFORM: return f(Uniform_diffusion_tensor());
+    case Candidate_tensor::RUN_TENSOR: break;
+  }
+  return f(run_tensor);
+}
 
 /// How a candidate smooths: a flow of the surface, or its normal field filtered and the vertices fitted to it.
 enum class Candidate_stage { FLOW, NORMAL_FIELD };
@@ -55,7 +71,9 @@ struct Flow_request
   bool may_be_kept = true;                  // its control points are made too (a probe run's are not)
   std::size_t fixed_steps = 0;              // > 0: exactly that many steps, no stopping rule
   const Control_matrix* probe_start = nullptr;   // a probed start carried along (Ride_along_probe.h)
-  bool make_probe = false;                  // carried along from one made of the run's prefiltered surface
+  bool probe_own_operator = false;          // the probe's steps on an operator of its own (Probe_flow.h)
+  // after each step, on the written positions of the run and of its probe: false ends it (Candidate_drop.h)
+  std::function<bool(const Control_matrix&, const Control_matrix&)> keep_going;
   const Risk_estimate* estimate = nullptr;   // the comparison's estimate, once known
 };
 
@@ -79,14 +97,18 @@ struct Flow_candidate
   const char* label;   // in the list of estimates
   const char* flow;    // its runs' name, which the callback sees
   Flow_settings settings;
-  // its operator depends on the connectivity alone, so the probe carried along its run is linear in the
-  // data and gives its estimate; the others' estimates need a run of their own on the probed input
+  // the probe carried along its run gives its estimate: its operator depends on the connectivity alone (the
+  // probe is then linear in the data), or the probe takes its steps with an operator of its own surface
+  // (`probe_own_operator`); the others' estimates need a run of their own on the probed input
   bool carried_is_estimate = false;
+  bool probe_own_operator = false;
   // without the first run's normals, the estimate measures along this candidate's result
   bool gives_normals = false;
   bool made = false;   // its run is made (the run's own flow is, before the selection)
   Flow_outcome result;
   double risk = std::nan(""), carried = std::nan("");   // the estimate, and the one its probe carried along gave
+  std::vector<double> terms;   // the estimate's terms per vertex, once estimated after its run (Candidate_drop.h)
+  double dropped_at = std::nan("");   // its last estimate along its run, where it was dropped
   Control_matrix probe_end;   // where its run on the probed input ended, when it was run again
 
   /// Compared: judged, and at the noise level unless none of the candidates reached it.
@@ -98,18 +120,21 @@ struct Flow_candidate
 
 typedef std::vector<Flow_candidate> Candidate_list;
 
-/// The default run's candidates, in the order they run: the run's own (anisotropic) flow at `order`, the
-/// isotropic flow and the uniform fourth-order flow; with `normal_field` (benchmarks), the normal field last
-/// (it needs the estimate to stop).
+/// The default run's candidates, in the order they run: the uniform fourth-order flow, the isotropic flow and
+/// the run's own (anisotropic) flow at `order`, the costliest (its probe takes its steps on an operator of its
+/// own) last, where it can be dropped against the others (Candidate_drop.h); with `normal_field` (benchmarks),
+/// the normal field after them (it needs the estimate to stop).
 inline Candidate_list default_candidates(int order, bool normal_field = false)
 {
   Candidate_list list(normal_field ? 4 : 3);
-  list[0] = Flow_candidate{ "anisotropic", "anisotropic", "anisotropic flow", { Candidate_tensor::RUN_TENSOR, order } };
+  list[0] = Flow_candidate{ "uniform", "uniform fourth-order", "uniform fourth-order flow",
+                            { Candidate_tensor::UNIFORM, 4 } };
+  list[0].carried_is_estimate = true;
   list[1] = Flow_candidate{ "isotropic", "isotropic", "isotropic flow", { Candidate_tensor::ISOTROPIC, 2 } };
   list[1].gives_normals = true;
-  list[2] = Flow_candidate{ "uniform", "uniform fourth-order", "uniform fourth-order flow",
-                            { Candidate_tensor::UNIFORM, 4 } };
-  list[2].carried_is_estimate = true;
+  list[2] = Flow_candidate{ "anisotropic", "anisotropic", "anisotropic flow", { Candidate_tensor::RUN_TENSOR, order } };
+  // its operator follows the data (the curvature of its prefiltered surface)
+  list[2].carried_is_estimate = list[2].probe_own_operator = true;
   if(!normal_field) return list;
   list[3] = Flow_candidate{ "normal field", "normal field", "normal-field filter",
                             { Candidate_tensor::RUN_TENSOR, 2, Candidate_stage::NORMAL_FIELD } };
@@ -128,12 +153,14 @@ inline std::size_t planned_runs(const Candidate_list& list, bool bounded)
   return runs;
 }
 
-/// The candidate whose run is made before the selection: the run's own flow (list.size() if none).
-inline std::size_t made_candidate(const Candidate_list& list)
+/// The run's own flow: the candidate with the run's tensor (the one kept when nothing else is; its run is
+/// made before the selection when the input is at the noise level already).
+inline std::size_t own_candidate(const Candidate_list& list)
 {
   for(std::size_t k = 0; k < list.size(); ++k)
-    if(list[k].made) return k;
-  return list.size();
+    if(list[k].settings.tensor == Candidate_tensor::RUN_TENSOR && list[k].settings.stage == Candidate_stage::FLOW)
+      return k;
+  return 0;
 }
 
 } // namespace internal

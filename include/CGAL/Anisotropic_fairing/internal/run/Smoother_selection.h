@@ -3,11 +3,14 @@
 //
 // The default run's choice among its candidate flows (Flow_candidates.h): each is judged by the same risk
 // estimate (Tensor_selection.h) and the lowest kept. A candidate that ends short of the noise level (steps
-// rejected, budget spent, steady state) is estimated at the state it reached, its probe run replaying its
-// steps with no stopping rule, and kept only when none reached the noise level: its flow could not go on,
-// and on noise that is not Gaussian its estimate can be far too low. Probes ride along their candidate's run
-// (Ride_along_probe.h); a candidate whose operator follows the surface is run again on the probed input only
-// when its carried estimate could be the lowest. The figures behind these rules: the manual's Validation page.
+// rejected, budget spent, steady state) is estimated at the state it reached and kept only when none reached
+// the noise level: its flow could not go on, and on noise that is not Gaussian its estimate can be far too
+// low. Probes ride along their candidate's run (Ride_along_probe.h; the anisotropic flow's on an operator of
+// its own, Probe_flow.h), and a run is dropped once its estimate rises above the leader's (Candidate_drop.h).
+// A candidate whose carried estimate is only a lower bound (the isotropic flow's) is run again on the probed
+// input, replaying its steps when it stopped early, only when that bound could be the lowest. No candidate
+// whose carried estimate is its estimate runs twice. The figures behind these rules: the manual's Validation
+// page.
 
 #ifndef CGAL_ANISOTROPIC_FAIRING_INTERNAL_RUN_SMOOTHER_SELECTION_H
 #define CGAL_ANISOTROPIC_FAIRING_INTERNAL_RUN_SMOOTHER_SELECTION_H
@@ -15,6 +18,7 @@
 #include <CGAL/Anisotropic_fairing/Fairing_report.h>
 #include <CGAL/Anisotropic_fairing/internal/flow/Noise_model.h>
 #include <CGAL/Anisotropic_fairing/internal/mesh/Ghost_layer.h>
+#include <CGAL/Anisotropic_fairing/internal/run/Candidate_drop.h>
 #include <CGAL/Anisotropic_fairing/internal/run/Flow_candidates.h>
 #include <CGAL/Anisotropic_fairing/internal/run/Normal_error_estimate.h>
 #include <CGAL/Anisotropic_fairing/internal/run/Tensor_selection.h>
@@ -100,7 +104,7 @@ inline const Control_matrix& estimate_surface(const Candidate_list& c, const Sel
   return base ? base->result.Y : context.input;
 }
 
-/// Why the run's own result is kept with nothing compared (empty when its failed run says why itself), or
+/// Why the first run's result is kept with nothing compared (empty when its failed run says why itself), or
 /// nothing when the other candidates are to run.
 inline std::optional<std::string> nothing_to_compare(const Flow_candidate& own, std::size_t steps_left)
 {
@@ -190,7 +194,8 @@ void estimate_risks(Candidate_list& c, const Estimate_context& e, Runner& runner
   for(std::size_t k : estimate_order(c))
   {
     Flow_candidate& x = c[k];
-    if(!x.compared(any_at_noise) || std::isfinite(x.risk)) continue;
+    // (a candidate whose carried probe is its estimate is never run again)
+    if(!x.compared(any_at_noise) || std::isfinite(x.risk) || x.carried_is_estimate) continue;
     if(x.carried >= lowest_estimate_like(c, x) || runner.steps_left() == 0) continue;
     x.risk = estimate_by_probe_run(x, e, runner);
   }
@@ -216,9 +221,12 @@ inline std::size_t lowest_estimate(const Candidate_list& c)
 inline std::string described_estimate(const Flow_candidate& x, bool any_at_noise)
 {
   const Fairing_report& r = x.result.report;
-  char text[160];
+  char text[200];
   const std::string early = std::string(" (stopped early: ") + to_string(r.stop_reason) + ")";
-  if(std::isfinite(x.risk))
+  if(r.succeeded() && r.stop_reason == Stop_reason::DROPPED)
+    std::snprintf(text, sizeof text, "%s %.4g at step %zu, rising (dropped: above the lowest by more than %g standard "
+                  "errors)", x.label, x.dropped_at, r.steps.size(), drop_standard_errors);
+  else if(std::isfinite(x.risk))
     std::snprintf(text, sizeof text, "%s %.4g%s", x.label, x.risk, ended_at_noise_level(r) ? "" : early.c_str());
   else if(std::isfinite(x.carried))
     std::snprintf(text, sizeof text, "%s %.4g or more (carried along: it cannot be the lowest)", x.label, x.carried);
@@ -239,7 +247,8 @@ inline std::string describe_choice(const Candidate_list& c, std::size_t kept, bo
   bool lowest = true;
   for(const Flow_candidate& x : c)
     lowest = lowest && !(x.risk < c[kept].risk) &&
-             !(judged_run(x.result.report) && !ended_at_noise_level(x.result.report) && any_at_noise);
+             !(judged_run(x.result.report) && !ended_at_noise_level(x.result.report) && any_at_noise &&
+               x.result.report.stop_reason != Stop_reason::DROPPED);
   return std::string("; kept the ") + c[kept].name +
          (lowest ? " result, whose estimated error is the lowest"
                  : " result, whose estimated error is the lowest of the runs that reached the noise level; a run that "
@@ -259,51 +268,96 @@ struct Estimate_basis
   }
 };
 
+/// A candidate whose carried probe is its estimate, once its run reached the noise level: its estimate and
+/// the estimate's terms (what later candidates are dropped against).
+inline void estimate_at_end(Flow_candidate& x, const Risk_estimate& e)
+{
+  if(!x.carried_is_estimate || !ended_at_noise_level(x.result.report) || x.result.probe.size() == 0) return;
+  x.terms = e.terms(x.result.Y, x.result.probe);
+  x.risk = e.relative(x.result.Y, x.result.probe);
+}
+
+/// The candidate the next run is dropped against: the lowest estimate with terms so far (null: none).
+inline const Flow_candidate* leader(const Candidate_list& c)
+{
+  const Flow_candidate* lead = nullptr;
+  for(const Flow_candidate& x : c)
+    if(!x.terms.empty() && std::isfinite(x.risk) && (!lead || x.risk < lead->risk)) lead = &x;
+  return lead;
+}
+
+/// The runs' order: the candidates made already, then the others in the list's order.
+inline std::vector<std::size_t> run_order(const Candidate_list& c)
+{
+  std::vector<std::size_t> order;
+  for(int made = 1; made >= 0; --made)
+    for(std::size_t k = 0; k < c.size(); ++k)
+      if(c[k].made == bool(made)) order.push_back(k);
+  return order;
+}
+
 /// Runs the candidates not made yet, in the list's order, from the input. A candidate's probe rides along
-/// once the estimate's surface is known (given, or made after the candidate that gives it).
+/// once the estimate's surface is known (given, or made after the candidate that gives it), and it is dropped
+/// against the leader so far (Candidate_drop.h). The first run alone is kept when nothing is to be compared
+/// after it (nothing_to_compare): its index and what `choices` says, else nothing.
 template <typename Runner>
-void run_candidates(Candidate_list& c, const Selection_context& context, const std::vector<double>& b,
-                    Runner& runner, Estimate_basis& basis)
+std::optional<std::pair<std::size_t, std::string>> run_candidates(Candidate_list& c, const Selection_context& context,
+                                                                  const std::vector<double>& b, Runner& runner,
+                                                                  Estimate_basis& basis)
 {
   if(context.surface.size() > 0) basis.make(context.surface, context, b);
-  for(Flow_candidate& x : c)
+  bool first = true;
+  for(std::size_t k : run_order(c))
   {
-    if(x.made) continue;
-    Flow_request request{ x.settings, x.flow, context.input };
-    request.probe_start = basis.made() ? &basis.estimate->probed() : nullptr;
-    request.estimate = basis.estimate.get();
-    x.result = runner.steps_left() > 0 ? runner.run(request) : run_not_made();
-    x.made = true;
+    Flow_candidate& x = c[k];
+    if(!x.made)
+    {
+      Flow_request request{ x.settings, x.flow, context.input };
+      request.probe_start = basis.made() ? &basis.estimate->probed() : nullptr;
+      request.estimate = basis.estimate.get();
+      request.probe_own_operator = x.probe_own_operator;
+      const Flow_candidate* lead = basis.made() ? leader(c) : nullptr;
+      if(lead) request.keep_going = drop_test(*basis.estimate, lead->terms, x.dropped_at);
+      x.result = runner.steps_left() > 0 ? runner.run(request) : run_not_made();
+      x.made = true;
+    }
+    if(basis.made()) estimate_at_end(x, *basis.estimate);
+    const std::optional<std::string> alone = first ? nothing_to_compare(x, runner.steps_left()) : std::nullopt;
+    if(alone) return std::make_pair(k, *alone);
+    first = false;
     if(!basis.made() && x.gives_normals) basis.make(estimate_surface(c, context), context, b);
   }
   if(!basis.made()) basis.make(estimate_surface(c, context), context, b);
+  return std::nullopt;
 }
 
-/// The candidate kept when none has an estimate: the first that succeeded (the run's own when all failed),
-/// and what `choices` says of it.
+/// The candidate kept when none has an estimate: the run's own if it succeeded, else the first that did (the
+/// run's own when all failed), and what `choices` says of it.
 inline std::pair<std::size_t, std::string> first_sound(const Candidate_list& c, std::size_t own)
 {
-  for(std::size_t k = 0; k < c.size(); ++k)
-    if(c[k].result.report.succeeded())
-      return { k, std::string("; kept the ") + c[k].name + " result (no other could be compared)" };
-  return { own, std::string() };   // all failed: the run's own report says why
+  std::size_t kept = own;
+  for(std::size_t k = 0; k < c.size() && !c[kept].result.report.succeeded(); ++k) kept = k;
+  if(!c[kept].result.report.succeeded()) return { own, std::string() };   // all failed: the own report says why
+  return { kept, std::string("; kept the ") + c[kept].name + " result (no other could be compared)" };
 }
 
-/// Runs the candidates of `c` not made yet (the run's own flow is: its result, and the probe it carried along
-/// the given normals) through `runner` (`run(Flow_request)`, `steps_left()`: the call's step budget; a run
-/// it cannot pay for is not made) and keeps the one whose estimated error is lowest, or the first that
-/// succeeded. (The user's callback sees every run.)
+/// Runs the candidates of `c` not made yet (the run's own flow may be, on an input at the noise level) through
+/// `runner` (`run(Flow_request)`, `steps_left()`: the call's step budget; a run it cannot pay for is not made)
+/// and keeps the one whose estimated error is lowest, or the first that succeeded. (The user's callback sees
+/// every run.)
 template <typename Runner>
 Smoother_choice select_smoother(Candidate_list c, const Selection_context& context, Runner& runner)
 {
-  const std::size_t own = made_candidate(c);
-  c[own].result.report.selected_tensor = c[own].name;
-  const std::optional<std::string> why_not = nothing_to_compare(c[own], runner.steps_left());
-  if(why_not) return { std::move(c[own]), *why_not };
+  const std::size_t own = own_candidate(c);
   std::string choices;
   const std::vector<double>& b = context.probe;
   Estimate_basis basis;
-  run_candidates(c, context, b, runner, basis);
+  const std::optional<std::pair<std::size_t, std::string>> alone = run_candidates(c, context, b, runner, basis);
+  if(alone)
+  {
+    c[alone->first].result.report.selected_tensor = c[alone->first].name;
+    return { std::move(c[alone->first]), alone->second };
+  }
   // a candidate that stopped early is estimated only when none reached the noise level
   bool any_at_noise = false;
   for(const Flow_candidate& x : c) any_at_noise = any_at_noise || ended_at_noise_level(x.result.report);

@@ -81,13 +81,14 @@ struct Flow_context
   const std::vector<bool>& border;
 };
 
-/// The risk estimate's probe carried along a flow (Ride_along_probe.h): from `start`, or from the start
-/// `make` makes of the surface the flow prefilters before its first step; neither: no probe.
+/// The risk estimate's probe carried along a flow (Ride_along_probe.h): from `start` (null: no probe).
 struct Probe_plan
 {
   const Control_matrix* start = nullptr;
-  std::function<Control_matrix(const Control_matrix&)> make;
-  bool carried() const { return start != nullptr || bool(make); }
+  bool own_operator = false;   // its steps solved on an operator of its own surface (Probe_flow.h)
+  // after each step, on the run's and the probe's control points: false ends the run (Flow_loop.h)
+  std::function<bool(const Control_matrix&, const Control_matrix&)> keep_going;
+  bool carried() const { return start != nullptr; }
 };
 
 /// What one call of the stepper gives back.
@@ -100,6 +101,36 @@ struct Stepper_outcome
   double setup_seconds = 0;    // spent before the stepper's run
 };
 
+/// The caller's numbering and border, for the assembler.
+template <typename Cache>
+Assembly_context flow_numbering(const Flow_context<Cache>& context)
+{
+  Assembly_context numbering;
+  numbering.original_vertex = &context.ordering.old_of_new_vertex;
+  numbering.original_face = &context.ordering.old_of_new_face;
+  numbering.border = &context.border;
+  return numbering;
+}
+
+/// The surface a flow with `tensor` from `start` reads its curvature on before its first step (M_eps), made as
+/// its run makes it (Flow_units.h); empty when the tensor reads none or it cannot be made.
+template <typename Cache, typename Tensor>
+Control_matrix prefiltered_start(const Flow_context<Cache>& context, const Tensor& tensor,
+                                 const Stepper_settings& settings, const Control_matrix& start)
+{
+  const Flow_mesh mesh{ context.ordering.layer, context.components, context.component_edge, context.mean_edge };
+  Serial_flow_operator<Cache> op(context.cache, std::size_t(start.rows()), context.constrained, mesh,
+                                 flow_numbering(context));
+  op.begin_run(settings, false);
+  Tensor t = tensor;
+  Fairing_report unread;
+  Assembly_statistics a;
+  const CGAL::Real_timer clock;
+  const int metric_columns = context.mode == Attribute_mode::COUPLED ? int(start.cols()) : 3;
+  const bool made = start_units(op, start, metric_columns, settings, t, unread, a, clock) && op.prefiltered();
+  return made ? *op.prefiltered() : Control_matrix();
+}
+
 /// One flow from `start` with `tensor` and `settings`; the user's `callback` sees every step.
 template <typename Cache, typename Tensor, typename Callback>
 Stepper_outcome run_stepper(const Flow_context<Cache>& context, const Tensor& tensor, const Stepper_settings& settings,
@@ -110,12 +141,8 @@ Stepper_outcome run_stepper(const Flow_context<Cache>& context, const Tensor& te
   // with automatic parameters, only the isotropic and the uniform flow's time step follows the mesh's density
   Stepper_settings s = settings;
   s.local_time_scale = settings.local_time_scale && density_scaled_flow(tensor) != nullptr;
-  Assembly_context numbering;
-  numbering.original_vertex = &context.ordering.old_of_new_vertex;
-  numbering.original_face = &context.ordering.old_of_new_face;
-  numbering.border = &context.border;
   Time_stepper<Cache> stepper(context.cache, std::size_t(start.rows()), context.constrained, context.ordering.layer,
-                              context.components, context.component_edge, context.mean_edge, numbering);
+                              context.components, context.component_edge, context.mean_edge, flow_numbering(context));
   const Tangential_motion_filter filter(context.ordering.layer);
   const bool normal_motion = wants_normal_motion(tensor) && context.mode != Attribute_mode::ATTRIBUTES_ONLY;
   if(normal_motion) stepper.set_tangential_filter(&filter);
@@ -129,7 +156,8 @@ Stepper_outcome run_stepper(const Flow_context<Cache>& context, const Tensor& te
     return out;
   }
   if(probe.start) stepper.set_probe(*probe.start);
-  if(probe.make) stepper.set_probe_maker(probe.make);
+  stepper.set_probe_operator(probe.own_operator);
+  stepper.set_probe_test(probe.keep_going);
   out.report = stepper.run(out.Y, metric_columns, tensor, s, callback);
   out.report.normal_motion_only = normal_motion;
   out.limit_weight = stepper.limit_weight();

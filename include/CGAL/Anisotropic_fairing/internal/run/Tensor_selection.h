@@ -99,6 +99,14 @@ public:
   virtual ~Risk_estimate() = default;
   virtual const Control_matrix& probed() const = 0;
   virtual double relative(const Control_matrix& f, const Control_matrix& f_probed) const = 0;
+  /// Its terms, one per vertex, whose mean less 1 is relative() (empty: the estimate has no such terms, and
+  /// no standard error of a difference of two estimates)
+  virtual std::vector<double> terms(const Control_matrix& f, const Control_matrix& f_probed) const
+  {
+    (void)f;
+    (void)f_probed;
+    return {};
+  }
   virtual double relative_loss(const Control_matrix& f, const Control_matrix& x) const = 0;
   /// how `choices` names it and its unit
   virtual const char* description() const = 0;
@@ -120,8 +128,12 @@ public:
   double relative(const Control_matrix& f, const Control_matrix& f_probed) const override
   {
     double risk = 0;
-    for(double x : risk_terms(y_, f, f_probed, N_, sigma_, b_)) risk += x;
+    for(double x : terms(f, f_probed)) risk += x;
     return risk / double(y_.rows()) - 1;
+  }
+  std::vector<double> terms(const Control_matrix& f, const Control_matrix& f_probed) const override
+  {
+    return risk_terms(y_, f, f_probed, N_, sigma_, b_);
   }
   double relative_loss(const Control_matrix& f, const Control_matrix& x) const override
   {

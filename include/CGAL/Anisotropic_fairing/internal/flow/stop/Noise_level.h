@@ -10,6 +10,7 @@
 
 #include <CGAL/Anisotropic_fairing/internal/flow/stop/Stop_rule.h>
 
+#include <algorithm>
 #include <optional>
 
 namespace CGAL {
@@ -20,6 +21,15 @@ class Noise_level
 {
 public:
   explicit Noise_level(const Stop_rule_setup& s) : on_(s.noise_stop) {}
+
+  /// How far the surface Y measured at the start Z0 is off it, for before_first_step(): by the typical vertex
+  /// or, where the limit surface rounds the creases of a clean mesh while leaving most vertices in place, by
+  /// the root mean square.
+  template <typename Noise, typename Matrix>
+  static double at_start(const Noise& noise, const Matrix& Y, const Matrix& Z0)
+  {
+    return std::max(noise.relative_displacement(Y, Z0, {}), noise.relative_displacement(Y, Z0, {}, true));
+  }
 
   /// Before the first step: the input's own limit surface is off it by `first` already. The result then
   /// lies between the two, this far from the input to its limit surface (empty: the run goes on).
