@@ -10,10 +10,10 @@
 // the isotropic result, with the risks in `choices`. A first run the callback ends is kept alone.
 // Then the early candidate is made the truth itself: still not kept while another reached the noise level,
 // kept when none did. The normals are known before the candidates run (the input's prefiltered surface), so
-// every stand-in carries its probe along, as the flows do; the uniform and the anisotropic candidate's carried
-// estimates are their estimates (the anisotropic probe steps with an operator of its own: Probe_flow.h), and
-// they are never run again; the isotropic one's is a lower bound, and a run of its own on the probed input is
-// made only when it could be the lowest (replaying its steps when it stopped early).
+// every stand-in carries its probe along, as the flows do; the uniform candidate's carried estimate is its
+// estimate, and it is never run again; the others' are lower bounds, and a run on the probed input is made
+// only for one that could be the lowest: the anisotropic flow's probe replaying its run's steps on an
+// operator of its own (Probe_flow.h), the isotropic flow run again (taking its steps when it stopped early).
 
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/Surface_mesh.h>
@@ -51,7 +51,8 @@ struct Stand_in_flows
   AFI::Flow_outcome run(const AFI::Flow_request& request)
   {
     const bool probe = request.probe_start != nullptr;
-    calls.push_back(request.name + (request.fixed_steps > 0 ? " (fixed)" : "") + (probe ? " (probe along)" : ""));
+    calls.push_back(request.name + (request.fixed_steps > 0 ? " (fixed)" : "") + (probe ? " (probe along)" : "") +
+                    (request.replay ? " (replay)" : ""));
     const bool isotropic = request.flow.tensor == AFI::Candidate_tensor::ISOTROPIC;
     const bool uniform = request.flow.tensor == AFI::Candidate_tensor::UNIFORM;
     const double weight = uniform ? 0.0 : isotropic ? isotropic_weight : anisotropic_weight;
@@ -178,7 +179,7 @@ int main()
     AF_CHECK(flows.ran("uniform fourth-order flow (probe along)") && flows.ran("anisotropic flow (probe along)"),
              "every candidate carries its probe");
     AF_CHECK(!flows.ran("uniform fourth-order flow on the probed input") && !flows.ran("anisotropic flow on the probed input"),
-             "a candidate whose carried probe is its estimate is never run again");
+             "neither the candidate whose carried probe is its estimate nor the one that stopped early is run again");
     AF_CHECK(flows.ran("isotropic flow on the probed input"), "the isotropic one is, its carried estimate being the lowest");
     AF_CHECK(chosen.choices.find("uniform fourth-order 0.9") != std::string::npos, "the uniform one is estimated at about 1");
   }
@@ -207,8 +208,8 @@ int main()
     AF_CHECK(chosen.choices.find("(stopped early: step_rejected)") != std::string::npos &&
              chosen.choices.find("anisotropic not compared") == std::string::npos, "it is named: " + chosen.choices);
     if(m.others == AF::Stop_reason::NOISE_LEVEL) continue;
-    // estimated, since none reached the noise level: by its carried probe, not by a run of its own
-    AF_CHECK(!flows.ran("anisotropic flow on the probed input"), "the early candidate is not run again");
+    // estimated, since none reached the noise level: its probe replays its steps
+    AF_CHECK(flows.ran("anisotropic flow on the probed input (fixed) (replay)"), "the early candidate's probe replays its steps");
     AF_CHECK(chosen.choices.find("anisotropic not estimated") == std::string::npos, "its estimate is shown: " + chosen.choices);
     // the isotropic candidate's carried bound is above the anisotropic estimate: it is not run again
     AF_CHECK(!flows.ran("isotropic flow on the probed input"), "nor is a candidate whose carried bound is not the lowest");
@@ -224,15 +225,16 @@ int main()
     AF_CHECK(flows.ran("isotropic flow on the probed input (fixed)"), "an early candidate's probe run takes its steps");
   }
 
-  // the anisotropic stand-in the truth at the noise level, the isotropic one half way: the anisotropic estimate
-  // (its carried one, about 0) is the lowest, and the isotropic one, whose carried estimate is above it, is not
-  // run again: its carried estimate is shown as a lower bound
+  // the anisotropic stand-in the truth at the noise level, the isotropic one half way: the anisotropic carried
+  // estimate (about 0) is the lowest, its probe replays its steps and its estimate is kept; the isotropic one,
+  // whose carried estimate is above it, is not run again: its carried estimate is shown as a lower bound
   {
     Stand_in_flows flows{AF::Stop_reason::NOISE_LEVEL, 1.0, 0.5, {}};
     std::printf("the anisotropic stand-in the truth: ");
     const Selection chosen = select(flows, layer, input, sigmas);
     AF_CHECK(chosen.report.selected_tensor == "anisotropic", "the lowest estimate is kept");
-    AF_CHECK(!flows.ran("isotropic flow on the probed input") && flows.calls.size() == 3, "no candidate runs again");
+    AF_CHECK(!flows.ran("isotropic flow on the probed input") && flows.ran("anisotropic flow on the probed input (replay)") &&
+             flows.calls.size() == 4, "only the anisotropic probe replays");
     AF_CHECK(chosen.choices.find("isotropic 0.") != std::string::npos &&
              chosen.choices.find("or more (carried along") != std::string::npos,
              "the isotropic carried estimate is shown as a lower bound: " + chosen.choices);

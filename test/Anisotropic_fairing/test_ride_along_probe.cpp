@@ -8,9 +8,10 @@
 //  - a probe started from the input plus e d and one from the input plus 2 e d differ from the run's
 //    result by a difference and its double (linear in the start, unlike a run of its own);
 //  - under a deviation bound (vertex fidelities that change with the state) the probe does not ride along;
-//  - a probe of the anisotropic flow stepping on an operator of its own surface (internal/flow/Probe_flow.h)
-//    ends where a run of its own from the probed start ends, taking the same steps (no stopping rule): the
-//    whole map, the operator's dependence on the data included, which the shared operator's probe misses.
+//  - the anisotropic flow's probe replaying the run's steps on an operator of its own surface
+//    (internal/flow/Probe_flow.h) ends where a run of its own from the probed start ends, taking the same
+//    steps: the whole map, the operator's dependence on the data included, which the carried probe misses;
+//    and on the run's own path, with the noise stop's last step cut where the run's was.
 
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/Surface_mesh.h>
@@ -46,11 +47,13 @@ struct Result
 {
   AF::Fairing_report report;
   AFI::Control_matrix Y, probe;
+  AFI::Probe_schedule schedule;
+  AFI::Stepper_settings settings;
 };
 
 template <typename Tensor>
 Result run(const Setup& m, const AFI::Ghosted_patch_cache& cache, const AFI::Noise_estimate& noise, const Tensor& tensor, int order,
-           const AFI::Control_matrix* probe, double deviation = 0, bool own_operator = false, std::size_t fixed_steps = 0)
+           const AFI::Control_matrix* probe, double deviation = 0, std::size_t fixed_steps = 0)
 {
   AFI::Stepper_settings s;
   s.order = order;
@@ -75,13 +78,25 @@ Result run(const Setup& m, const AFI::Ghosted_patch_cache& cache, const AFI::Noi
                                                             AF::Attribute_mode::GEOMETRY_ONLY, constrained, border };
   AFI::Probe_plan plan;
   plan.start = probe;
-  plan.own_operator = own_operator;
   AFI::Stepper_outcome o = AFI::run_stepper(context, tensor, s, m.X, plan, cb);
   Result r;
   r.report = o.report;
   r.Y = o.Y;
   r.probe = o.probe;
+  r.schedule = o.schedule;
+  r.settings = s;
   return r;
+}
+
+// the probe from P replaying the steps of run r on an operator of its own
+template <typename Tensor>
+AFI::Control_matrix replay(const Setup& m, const AFI::Ghosted_patch_cache& cache, const Tensor& tensor, const Result& r,
+                           const AFI::Control_matrix& P)
+{
+  const std::vector<bool> constrained(P.rows(), false), border(P.rows(), false);
+  const AFI::Flow_context<AFI::Ghosted_patch_cache> context{ cache, m.ordering, m.components, m.component_edge, m.mean_edge,
+                                                            AF::Attribute_mode::GEOMETRY_ONLY, constrained, border };
+  return AFI::replayed_probe(context, tensor, r.settings, P, r.schedule).Y;
 }
 
 double largest(const AFI::Control_matrix& A) { return A.cwiseAbs().maxCoeff(); }
@@ -144,25 +159,32 @@ int main()
     AF_CHECK(moved.probe.size() == plain.Y.size() && translation < 1e-9, std::string(name) + ": the translated start ends translated");
     AF_CHECK(size > 1e-8 && linear < 1e-4 * size, std::string(name) + ": the probe is linear in its start");
   }
-  // the anisotropic probe on its own operator: as a run of its own from the probed start, 3 steps
+  // the anisotropic probe replayed on its own operator: as a run of its own from the probed start, 3 steps
   {
     const std::size_t k = 3;
-    const Result plain = run(m, cache, noise, anisotropic, 2, nullptr, 0, false, k);
-    const Result own = run(m, cache, noise, anisotropic, 2, &once, 0, true, k);
-    const Result shared = run(m, cache, noise, anisotropic, 2, &once, 0, false, k);
+    const Result plain = run(m, cache, noise, anisotropic, 2, &once, 0, k);
     AFI::Control_matrix input = once;
     m.X.swap(input);   // the run of its own, from the probed start
-    const Result from_probe = run(m, cache, noise, anisotropic, 2, nullptr, 0, false, k);
+    const Result from_probe = run(m, cache, noise, anisotropic, 2, nullptr, 0, k);
     m.X.swap(input);
-    const double own_off = largest(own.probe - from_probe.Y), shared_off = largest(shared.probe - from_probe.Y);
+    const AFI::Control_matrix own = replay(m, cache, anisotropic, plain, once);
+    const double own_off = largest(own - from_probe.Y), carried_off = largest(plain.probe - from_probe.Y);
     const double moved = largest(from_probe.Y - once);
-    std::printf("anisotropic flow, %zu steps: its own operator's probe off a run from the probed start by %.3g, the "
-                "shared operator's by %.3g (the steps moved it %.3g)\n", k, own_off, shared_off, moved);
-    AF_CHECK(plain.report.steps.size() == k && from_probe.report.steps.size() == k && own.report.steps.size() == k,
-             "the runs take the same steps");
-    AF_CHECK(largest(own.Y - plain.Y) == 0.0, "carrying a probe on its own operator leaves the run's result as it is");
-    AF_CHECK(own.probe.size() == own.Y.size() && own_off < 1e-9 * moved, "its own operator's probe is the run of its own");
-    AF_CHECK(shared_off > 1e3 * own_off, "the shared operator's probe is not: it leaves the operator's change out");
+    std::printf("anisotropic flow, %zu steps: the probe replayed on its own operator off a run from the probed start "
+                "by %.3g, the carried one by %.3g (the steps moved it %.3g)\n", k, own_off, carried_off, moved);
+    AF_CHECK(plain.report.steps.size() == k && from_probe.report.steps.size() == k && plain.schedule.steps.size() == k,
+             "the runs take the same steps, and the schedule has them");
+    AF_CHECK(own.size() == plain.Y.size() && own_off < 1e-9 * moved, "the replayed probe is the run of its own");
+    AF_CHECK(carried_off > 1e3 * own_off, "the carried probe is not: it leaves the operator's change out");
+    // the default run's noise stop: the last step cut at the noise level, replayed cut as well
+    const Result noisy = run(m, cache, noise, anisotropic, 2, &once);
+    const AFI::Control_matrix cut = replay(m, cache, anisotropic, noisy, once);
+    bool was_cut = false;
+    for(const auto& step : noisy.schedule.steps) was_cut = was_cut || (step.cut >= 0 && step.cut < 1);
+    std::printf("  noise stop: %zu steps, the last cut: %d; replayed off the carried probe by %.3g\n",
+                noisy.schedule.steps.size(), int(was_cut), largest(cut - noisy.probe));
+    AF_CHECK(was_cut && largest(cut - noisy.probe) < 0.1 * largest(noisy.probe - once),
+             "a cut path is replayed cut: near the carried probe, not a step beyond");
   }
   const Result bounded = run(m, cache, noise, AF::Uniform_diffusion_tensor(), 4, &once, 0.01);
   AF_CHECK(bounded.report.succeeded() && bounded.probe.size() == 0, "under a deviation bound the probe does not ride along");

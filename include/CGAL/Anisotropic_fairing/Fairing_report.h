@@ -140,9 +140,9 @@ struct Fairing_step
 
 /*!
 \ingroup PkgAnisotropicFairingFunctions
-One run a call made, in `Fairing_report::runs`: the default run makes several (its candidate flows, the anisotropic
-one's time including its probed copy's own operator, a flow's run on the probed input when its risk estimate needs
-one, the kept flow's run to `strength`), any other call one. What it cost, how it ended (`Stop_reason::DROPPED`: the
+One run a call made, in `Fairing_report::runs`: the default run makes several (its candidate flows, a flow's run on
+the probed input when its risk estimate needs one, the anisotropic flow's replaying its steps, the kept flow's run
+to `strength`), any other call one. What it cost, how it ended (`Stop_reason::DROPPED`: the
 comparison ended it), and what the comparison made of it.
 */
 struct Fairing_run

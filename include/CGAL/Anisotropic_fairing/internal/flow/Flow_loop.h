@@ -16,7 +16,7 @@
 #include <CGAL/Anisotropic_fairing/internal/flow/Deviation_bound.h>
 #include <CGAL/Anisotropic_fairing/internal/flow/Flow_units.h>
 #include <CGAL/Anisotropic_fairing/internal/flow/Output_fidelity.h>
-#include <CGAL/Anisotropic_fairing/internal/flow/Probe_flow.h>
+#include <CGAL/Anisotropic_fairing/internal/flow/Probe_schedule.h>
 #include <CGAL/Anisotropic_fairing/internal/flow/Ride_along_probe.h>
 #include <CGAL/Anisotropic_fairing/internal/flow/Run_report.h>
 #include <CGAL/Anisotropic_fairing/internal/flow/Step_control.h>
@@ -51,13 +51,13 @@ struct Flow_result
 {
   Fairing_report report;
   Control_matrix probe;      // where the probe ended (empty: none carried)
+  Probe_schedule schedule;   // the steps it took, for a probe to replay on an operator of its own (Probe_flow.h)
   double limit_weight = 1;   // 1, or how far from the input to its limit points the result lies (a run that
                              // ended before its first step: the limit surface alone moved by more than the noise)
 };
 
 /// One run. X: the surface's control points (its first `metric_columns` columns); Z: what moves, X itself, or
-/// on a fixed surface (`fixed`: X's first 3 columns do not move) the attributes' columns. `probe_operator`:
-/// makes the probe's own operator (Probe_flow.h; null: the probe shares the run's).
+/// on a fixed surface (`fixed`: X's first 3 columns do not move) the attributes' columns.
 template <typename Operator, typename Tensor, typename Callback>
 class Flow_loop
 {
@@ -65,13 +65,10 @@ class Flow_loop
 
 public:
   Flow_loop(Operator& op, const Control_matrix& X, Control_matrix& Z, int metric_columns, const Tensor& tensor,
-            const Stepper_settings& s, Callback& callback, bool fixed, Probe_request probe = Probe_request(),
-            typename Probe_flow<Operator, Tensor>::Operator_maker probe_operator = nullptr)
+            const Stepper_settings& s, Callback& callback, bool fixed, Probe_request probe = Probe_request())
     : op_(op), X_(X), Z_(Z), metric_columns_(metric_columns), tensor_(tensor), s_(s), callback_(callback),
       fixed_(fixed), probe_request_(std::move(probe))
-  {
-    if(probe_operator) probe_flow_.emplace(std::move(probe_operator), tensor);
-  }
+  {}
 
   Flow_result run()
   {
@@ -99,6 +96,7 @@ private:
     Flow_result r;
     r.report = std::move(report_);
     r.probe = probe_.result();
+    r.schedule = std::move(schedule_);
     r.limit_weight = limit_weight_;
     return r;
   }
@@ -212,8 +210,7 @@ private:
     if(!fixed_ && !bound_->active() && probe_request_.start.size() > 0) probe_.start(probe_request_.start);
     keep_going_ = std::move(probe_request_.keep_going);
     probe_request_ = Probe_request();
-    if(probe_flow_) probe_flow_->start(probe_, metric_columns_, s_);
-    const Eigen::Index solved_columns = Z_.cols() * (shared_probe() ? 2 : 1);
+    const Eigen::Index solved_columns = Z_.cols() * (probe_.active() ? 2 : 1);
     op_.start_solver(s_, solved_columns, fixed_, bound_->active() ? &*fidelity_ : nullptr, &anchor_, Z0_);
   }
 
@@ -265,7 +262,7 @@ private:
     const Outcome judged = judge(step, finite, last_step);
     if(judged != Outcome::NEXT) return judged;
     if(retake_for_bound(finite)) return Outcome::RETRY;
-    if(probe_flow_) probe_flow_->step(probe_, control_.factor(), cut_at);   // the step accepted, on its own
+    schedule_.steps.push_back({ control_.factor(), cut_at });
     return accept(st, cut_at);
   }
 
@@ -302,7 +299,7 @@ private:
     clock_.reset();
     Solve_statistics sol;
     Zc_.resize(0, 0);   // the last candidate, accepted or not, is not needed while this step is solved
-    if(shared_probe())
+    if(probe_.active())
     {
       // [Z | probe], [Z0 | its start]: one solve for both
       Control_matrix ZZ, ZZ0;
@@ -340,17 +337,17 @@ private:
     // the tangent planes are those of M_eps when the tensor reads its curvature there: on noise, the current
     // surface's normal is mostly noise, and removing motion in its tangent plane would keep the noise
     const Control_matrix& tangent_surface = op_.prefiltered() ? *op_.prefiltered() : Z_;
-    if(shared_probe())
+    if(probe_.active())
     {
       Control_matrix d = solution.rightCols(Z_.cols());
       op_.normal_part(tangent_surface, metric_columns_, d);
       probe_.make_candidate([&](Control_matrix& P) { op_.add(P, d); });
     }
     Step_motion m;
-    if(op_.moves_normally() || shared_probe())
+    if(op_.moves_normally() || probe_.active())
     {
       // the solution itself stays as it is: the next step's CG starts from it
-      Control_matrix dZ = shared_probe() ? Control_matrix(solution.leftCols(Z_.cols())) : solution;
+      Control_matrix dZ = probe_.active() ? Control_matrix(solution.leftCols(Z_.cols())) : solution;
       op_.normal_part(tangent_surface, metric_columns_, dZ);
       m = op_.move(Zc_, dZ, Z0_, measured_columns_, row_unit_);
     }
@@ -497,11 +494,7 @@ private:
     if(!callback_(report_.steps.back()) && !stop) report_.stop_reason = Stop_reason::CALLBACK;
     else if(!stop && probe_.active() && keep_going_ && !keep_going_(Z_, probe_.result()))
       report_.stop_reason = Stop_reason::DROPPED;
-    else if(!stop)
-    {
-      if(probe_flow_) probe_flow_->next(probe_);
-      return Outcome::NEXT;
-    }
+    else if(!stop) return Outcome::NEXT;
     return Outcome::ENDED;
   }
 
@@ -513,6 +506,7 @@ private:
     {
       Z_ = Z_previous_ + stop.at * (Z_ - Z_previous_);
       probe_.rewind(stop.at);
+      schedule_.rewind = stop.at;
       const Assembly_statistics b = op_.assemble(Z_, metric_columns_, tensor_, false);
       st.area = b.area; st.energy = b.energy; st.H_integral = b.H_integral;
     }
@@ -523,9 +517,6 @@ private:
     op_.measured_positions(Z_, Y_);
     st.noise_displacement = s_.noise->relative_displacement(Y_, Z0_, {});
   }
-
-  // the probe's steps are columns of the run's solves (no operator of its own)
-  bool shared_probe() const { return probe_.active() && !probe_flow_; }
 
   // the end: never a surface with more folded edges than the input (stop/New_folds.h)
   void finish()
@@ -539,6 +530,7 @@ private:
     {
       Z_ = Z_unfolded_;
       probe_.fall_back();
+      schedule_.fall_back = unfolded_steps_;
       report_.steps.resize(unfolded_steps_);
       report_.stop_reason = Stop_reason::STEP_REJECTED;
       report_.message = folds->message;
@@ -567,7 +559,7 @@ private:
   CGAL::Real_timer total_, clock_;
   Fairing_report report_;
   Ride_along_probe probe_;
-  std::optional<Probe_flow<Operator, Tensor>> probe_flow_;
+  Probe_schedule schedule_;
   std::function<bool(const Control_matrix&, const Control_matrix&)> keep_going_;
   double limit_weight_ = 1;
   double assemble_seconds_ = 0, time_unit_ = 1, time_ = 0;

@@ -28,10 +28,12 @@ namespace internal {
 /// The units of a run from X (then op.units()), the tensor given its length scale; M and L(D) at X assembled,
 /// their statistics in `a` and the report's initial values. False (and the report failed) when the input has
 /// no surface. A run that takes no step (`takes_steps` false) leaves out the operator of a tensor that needs
-/// its units first (M_eps and L(D)): its statistics are the isotropic assembly's, but for the energy (NaN).
+/// its units first (M_eps and L(D)): its statistics are the isotropic assembly's, but for the energy (NaN);
+/// with `keep_isotropic`, the isotropic M and L at X are kept for the caller's op.prefilter(X) (M_eps alone).
 template <typename Operator, typename Tensor>
 bool start_units(Operator& op, const Control_matrix& X, int metric_columns, const Stepper_settings& s, Tensor& tensor,
-                 Fairing_report& report, Assembly_statistics& a, const CGAL::Real_timer& total, bool takes_steps = true)
+                 Fairing_report& report, Assembly_statistics& a, const CGAL::Real_timer& total, bool takes_steps = true,
+                 bool keep_isotropic = false)
 {
   const Flow_mesh& mesh = op.mesh();
   const bool scaled_tensor = wants_length_scale(tensor);
@@ -83,7 +85,7 @@ bool start_units(Operator& op, const Control_matrix& X, int metric_columns, cons
     report.prefilter_time = prefilter_time(tensor);
     op.set_prefilter(std::move(eps), s);
     if(takes_steps) a = op.assemble(X, metric_columns, tensor, true);
-    else
+    else if(!keep_isotropic)
     {
       op.discard_isotropic();
       a.energy = std::numeric_limits<double>::quiet_NaN();   // the tensor's, unknown without its operator

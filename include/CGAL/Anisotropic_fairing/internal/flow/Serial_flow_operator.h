@@ -108,6 +108,8 @@ public:
   template <typename Tensor>
   void restore(const Control_matrix& X, int columns, const Tensor& tensor) { operator_.restore(X, columns, tensor); }
   const Control_matrix* prefiltered() const { return operator_.prefiltered(); }
+  /// M_eps at X alone, after the units (prefiltered(), error())
+  void prefilter(const Control_matrix& X, int columns) { operator_.prefilter(X, columns); }
   double dirichlet_energy(const Control_matrix& Z) const
   {
     return internal::dirichlet_energy(operator_.pattern(), operator_.L(), Z);

@@ -59,49 +59,54 @@ public:
   template <typename Tensor>
   Assembly_statistics assemble(const Control_matrix& X, int metric_columns, const Tensor& tensor, bool with_matrices)
   {
-    const bool isotropic_ready = isotropic_ready_;
-    isotropic_ready_ = false;
     error_.clear();
     if(!with_matrices && prefiltered_valid_)
     {
+      isotropic_ready_ = false;
       assembler_.set_prefiltered(&prefiltered_X_);
       const Assembly_statistics a = assembler_.assemble(X, metric_columns, tensor, M_, L_, false);
       assembler_.set_prefiltered(nullptr);
       return a;
     }
-    assembler_.set_prefiltered(nullptr);
-    prefiltered_valid_ = false;
-    if(prefilter_ && block_ && block_->size() > 0)
-    {
-      // the isotropic M and L in M_ and L_ (no two more arrays of the pattern's size), which the tensor's
-      // own assembly then overwrites, or leaves as scratch when it computes statistics only
-      overwritten_ = true;
-      if(!isotropic_ready)   // (its statistics are the tensor's assembly's: no curvature read here)
-        assembler_.assemble(X, metric_columns, Isotropic_diffusion_tensor(), M_, L_, true, false, false);
-      Control_matrix& dX = prefilter_dX_;   // warm start: the last M_eps's displacement
-      const Solve_statistics sol =
-        prefilter_step(assembler_.pattern(), M_, L_, eps_, *block_, prefilter_A_, X, metric_columns, prefilter_solver_,
-                       *prefilter_choice_, *prefilter_cg_, dX);
-      Value_array().swap(prefilter_A_);   // not kept while the step's system is formed
-      if(!sol.ok) dX.resize(0, 0);
-      if(!sol.ok || !dX.allFinite())
-        error_ =
-          "the prefiltered surface M_eps could not be computed: " + (sol.ok ? std::string("not finite") : sol.message);
-      else
-      {
-        prefiltered_X_ = X;
-        for(Eigen::Index i = 0; i < dX.rows(); ++i)
-          prefiltered_X_.row(block_->free[std::size_t(i)]).head(metric_columns) += dX.row(i);
-        assembler_.set_prefiltered(&prefiltered_X_);
-        prefiltered_valid_ = true;
-      }
-    }
+    prefilter(X, metric_columns);
     // after the prefilter's isotropic assembly at this X, M_ is this X's mass matrix already
     const bool mass_kept = prefilter_ && block_ && block_->size() > 0;
+    assembler_.set_prefiltered(prefiltered());
     const Assembly_statistics a = assembler_.assemble(X, metric_columns, tensor, M_, L_, with_matrices, mass_kept);
     assembler_.set_prefiltered(nullptr);
     overwritten_ = overwritten_ || with_matrices;
     return a;
+  }
+
+  /// M_eps at X alone (prefiltered(); error() says why not; none without a prefilter), from the isotropic M and
+  /// L of assemble_isotropic() at X, or assembled here.
+  void prefilter(const Control_matrix& X, int metric_columns)
+  {
+    const bool isotropic_ready = isotropic_ready_;
+    isotropic_ready_ = false;
+    prefiltered_valid_ = false;
+    if(!prefilter_ || !block_ || block_->size() == 0) return;
+    // the isotropic M and L in M_ and L_ (no two more arrays of the pattern's size), which the tensor's
+    // own assembly then overwrites, or leaves as scratch when it computes statistics only
+    overwritten_ = true;
+    if(!isotropic_ready)   // (its statistics are the tensor's assembly's: no curvature read here)
+      assembler_.assemble(X, metric_columns, Isotropic_diffusion_tensor(), M_, L_, true, false, false);
+    Control_matrix& dX = prefilter_dX_;   // warm start: the last M_eps's displacement
+    const Solve_statistics sol =
+      prefilter_step(assembler_.pattern(), M_, L_, eps_, *block_, prefilter_A_, X, metric_columns, prefilter_solver_,
+                     *prefilter_choice_, *prefilter_cg_, dX);
+    Value_array().swap(prefilter_A_);   // not kept while the step's system is formed
+    if(!sol.ok) dX.resize(0, 0);
+    if(!sol.ok || !dX.allFinite())
+    {
+      error_ =
+        "the prefiltered surface M_eps could not be computed: " + (sol.ok ? std::string("not finite") : sol.message);
+      return;
+    }
+    prefiltered_X_ = X;
+    for(Eigen::Index i = 0; i < dX.rows(); ++i)
+      prefiltered_X_.row(block_->free[std::size_t(i)]).head(metric_columns) += dX.row(i);
+    prefiltered_valid_ = true;
   }
 
   /// The isotropic M and L at X and their statistics, before the prefilter's times are known (they follow

@@ -18,7 +18,6 @@
 #include <CGAL/Anisotropic_fairing/internal/types/Control_matrix.h>
 
 #include <functional>
-#include <memory>
 #include <vector>
 
 namespace CGAL {
@@ -35,19 +34,12 @@ public:
   Time_stepper(const Cache& cache, std::size_t n, const std::vector<bool>& constrained, const Ghost_layer& layer,
                const Mesh_components& components, const std::vector<double>& component_edge, double mean_edge,
                const Assembly_context& numbering = Assembly_context())
-    : cache_(cache), n_(n), constrained_(constrained), mesh_{ layer, components, component_edge, mean_edge },
-      numbering_(numbering), operator_(cache, n, constrained, mesh_, numbering) {}
+    : operator_(cache, n, constrained, Flow_mesh{ layer, components, component_edge, mean_edge }, numbering) {}
 
   /// Each step's displacement of the surface's columns then loses its tangential part (null: kept).
-  void set_tangential_filter(const Tangential_motion_filter* f)
-  {
-    filter_ = f;
-    operator_.set_tangential_filter(f);
-  }
+  void set_tangential_filter(const Tangential_motion_filter* f) { operator_.set_tangential_filter(f); }
   /// The next run carries the probed start P along (Ride_along_probe.h), unless it holds a deviation bound.
   void set_probe(const Control_matrix& P) { probe_.start = P; }
-  /// The probe's steps are solved on an operator of its own surface (Probe_flow.h), not as columns of the run's.
-  void set_probe_operator(bool own) { own_probe_operator_ = own; }
   /// After each step that no rule ends, `keep_going(Z, probe)` may end the run (Stop_reason::DROPPED).
   void set_probe_test(std::function<bool(const Control_matrix&, const Control_matrix&)> keep_going)
   {
@@ -55,6 +47,8 @@ public:
   }
   /// After a run: where its probe ended (empty: it carried none).
   const Control_matrix& probe_result() const { return probe_result_; }
+  /// After a run: the steps it accepted (Probe_schedule.h).
+  const Probe_schedule& schedule() const { return schedule_; }
   /// 1, or the fraction of the way from the input to the limit points of the result to write (a run
   /// that ended before its first step because the limit surface alone moved by more than the noise)
   double limit_weight() const { return limit_weight_; }
@@ -66,16 +60,8 @@ public:
   Fairing_report run(Control_matrix& X, int metric_columns, const Tensor& tensor, const Stepper_settings& s,
                      Callback& callback)
   {
-    typedef Serial_flow_operator<Cache> Operator;
-    std::function<std::unique_ptr<Operator>()> probe_operator;
-    if(own_probe_operator_)
-      probe_operator = [this]() {
-        auto op = std::make_unique<Operator>(cache_, n_, constrained_, mesh_, numbering_);
-        op->set_tangential_filter(filter_);
-        return op;
-      };
-    return kept(Flow_loop<Operator, Tensor, Callback>(operator_, X, X, metric_columns, tensor, s, callback, false,
-                                                      std::move(probe_), std::move(probe_operator))
+    return kept(Flow_loop<Serial_flow_operator<Cache>, Tensor, Callback>(operator_, X, X, metric_columns, tensor, s,
+                                                                         callback, false, std::move(probe_))
                   .run());
   }
 
@@ -101,22 +87,16 @@ private:
   Fairing_report kept(Flow_result r)
   {
     probe_ = Probe_request();
-    own_probe_operator_ = false;
     probe_result_ = std::move(r.probe);
+    schedule_ = std::move(r.schedule);
     limit_weight_ = r.limit_weight;
     return std::move(r.report);
   }
 
-  const Cache& cache_;
-  const std::size_t n_;
-  const std::vector<bool>& constrained_;
-  const Flow_mesh mesh_;
-  const Assembly_context numbering_;
   Serial_flow_operator<Cache> operator_;
-  const Tangential_motion_filter* filter_ = nullptr;
   Probe_request probe_;
-  bool own_probe_operator_ = false;
   Control_matrix probe_result_;
+  Probe_schedule schedule_;
   double limit_weight_ = 1;
 };
 

@@ -2,12 +2,13 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 //
 // A candidate of the default run's comparison ended early: its risk estimate is read after each of its steps
-// from the probe it carries (Ride_along_probe.h, Probe_flow.h), and the run ends as soon as that estimate
-// rises while above the leader's (the lowest estimate of the runs made, at the noise level) by more than twice
-// the standard error of their difference. Along every run of the benchmark the estimate falls to one lowest
-// value and then rises to the noise level, where the runs are compared (bench/results-speed-2026-11-29.md):
-// once it rises above the leader's, the run can only end higher. The standard error is that of the mean of the
-// per-vertex differences of the two estimates' terms (Tensor_selection.h), read as independent.
+// from the probe it carries (Ride_along_probe.h; for a flow whose operator follows the data, a lower bound of
+// it), and the run ends as soon as that estimate rises while above the leader's (the lowest estimate of the
+// runs made, at the noise level, that is an estimate) by more than twice the standard error of their
+// difference. Along every run of the benchmark the estimate falls to one lowest value and then rises to the
+// noise level, where the runs are compared (bench/results-speed-2026-11-29.md): once it rises above the
+// leader's, the run can only end higher. The standard error is that of the mean of the per-vertex differences
+// of the two estimates' terms (Tensor_selection.h), read as independent.
 
 #ifndef CGAL_ANISOTROPIC_FAIRING_INTERNAL_RUN_CANDIDATE_DROP_H
 #define CGAL_ANISOTROPIC_FAIRING_INTERNAL_RUN_CANDIDATE_DROP_H

@@ -11,8 +11,6 @@
 
 #include <CGAL/Anisotropic_fairing/Fairing_report.h>
 #include <CGAL/Anisotropic_fairing/Fairing_settings.h>
-#include <CGAL/Anisotropic_fairing/Isotropic_diffusion_tensor.h>
-#include <CGAL/Anisotropic_fairing/Uniform_diffusion_tensor.h>
 #include <CGAL/Anisotropic_fairing/internal/run/Automatic_parameters.h>
 #include <CGAL/Anisotropic_fairing/internal/run/Fairing_parameters.h>
 #include <CGAL/Anisotropic_fairing/internal/run/Run_log.h>
@@ -405,10 +403,11 @@ private:
   Flow_outcome run_flow(const Cache& cache, bool loop, const Flow_request& request)
   {
     if(request.flow.stage == Candidate_stage::NORMAL_FIELD) return run_normal_field_candidate(request);
+    if(request.replay) return replay_flow(cache, loop, request);
     Probe_plan probe;
     probe.start = request.probe_start;
-    probe.own_operator = request.probe_own_operator;
-    if(request.keep_going) probe.keep_going = written_test(request.keep_going, loop);
+    const bool limit = loop && given_.output == Output_positions::LIMIT_SURFACE;
+    if(request.keep_going) probe.keep_going = limit ? on_limit_points(request.keep_going, layer_) : request.keep_going;
     auto tagged = [this](const Fairing_step& step) { return this->tagged_callback(step); };
     const Stepper_settings settings = begin_run(request.name, request.flow.order, request.fixed_steps);
     const Flow_context<Cache> context = flow_context(cache);
@@ -419,6 +418,19 @@ private:
     });
     setup_seconds_ += o.setup_seconds;
     steps_left_ -= (std::min)(steps_left_, o.report.steps.size());
+    return written_outcome(std::move(o), request, loop);
+  }
+
+  // a run's probe replaying its steps on an operator of its own (Probe_flow.h), written as the run is
+  template <typename Cache>
+  Flow_outcome replay_flow(const Cache& cache, bool loop, const Flow_request& request)
+  {
+    const Stepper_settings settings = begin_run(request.name, request.flow.order, 0);
+    Stepper_outcome o = with_candidate_tensor(request.flow.tensor, tensor_, [&](const auto& t) {
+      return with_tensor(t, [&](const auto& held) {
+        return replayed_probe(flow_context(cache), held, settings, request.start, *request.replay);
+      });
+    });
     return written_outcome(std::move(o), request, loop);
   }
 
@@ -444,6 +456,7 @@ private:
     out.report = std::move(o.report);
     out.Y = std::move(o.Y);
     out.probe = std::move(o.probe);
+    out.schedule = std::move(o.schedule);
     const bool control = in_.wants_control && request.may_be_kept;
     const Control_matrix& start = request.start;
     if(loop) out.report.limit_weight = o.limit_weight;
@@ -457,19 +470,6 @@ private:
     // the linear element's control points are its written positions; the Loop element's, when written
     if(control && (!loop || given_.output == Output_positions::CONTROL_POINTS)) out.Z = out.Y;
     return out;
-  }
-
-  // a test on the written positions of a run and its probe, made a test on their control points
-  std::function<bool(const Control_matrix&, const Control_matrix&)>
-  written_test(std::function<bool(const Control_matrix&, const Control_matrix&)> test, bool loop) const
-  {
-    if(!loop || given_.output != Output_positions::LIMIT_SURFACE) return test;
-    return [this, test](const Control_matrix& Z, const Control_matrix& P) {
-      Control_matrix Y, YP;
-      limit_points(layer_, Z, Y);
-      limit_points(layer_, P, YP);
-      return test(Y, YP);
-    };
   }
 
   // `fixed_steps` > 0: exactly that many steps, no stopping rule (a probe replaying a run: Smoother_selection.h);

@@ -11,6 +11,7 @@
 #include <CGAL/Anisotropic_fairing/Fairing_report.h>
 #include <CGAL/Anisotropic_fairing/Isotropic_diffusion_tensor.h>
 #include <CGAL/Anisotropic_fairing/Uniform_diffusion_tensor.h>
+#include <CGAL/Anisotropic_fairing/internal/flow/Probe_schedule.h>
 #include <CGAL/Anisotropic_fairing/internal/types/Control_matrix.h>
 
 #include <cmath>
@@ -59,6 +60,7 @@ struct Flow_outcome
   Control_matrix Y;       // the written positions (and attribute values)
   Control_matrix Z;       // its control points, when asked for (empty otherwise)
   Control_matrix probe;   // where the probe carried along ended, written as Y is (empty: none rode along)
+  Probe_schedule schedule;   // the steps the run accepted, for its probe to replay (Probe_flow.h)
   std::size_t run = std::size_t(-1);   // its entry in the call's runs (Run_log.h)
 };
 
@@ -71,7 +73,7 @@ struct Flow_request
   bool may_be_kept = true;                  // its control points are made too (a probe run's are not)
   std::size_t fixed_steps = 0;              // > 0: exactly that many steps, no stopping rule
   const Control_matrix* probe_start = nullptr;   // a probed start carried along (Ride_along_probe.h)
-  bool probe_own_operator = false;          // the probe's steps on an operator of its own (Probe_flow.h)
+  const Probe_schedule* replay = nullptr;   // a probe's run: the steps to replay on its own operator (Probe_flow.h)
   // after each step, on the written positions of the run and of its probe: false ends it (Candidate_drop.h)
   std::function<bool(const Control_matrix&, const Control_matrix&)> keep_going;
   const Risk_estimate* estimate = nullptr;   // the comparison's estimate, once known
@@ -97,11 +99,11 @@ struct Flow_candidate
   const char* label;   // in the list of estimates
   const char* flow;    // its runs' name, which the callback sees
   Flow_settings settings;
-  // the probe carried along its run gives its estimate: its operator depends on the connectivity alone (the
-  // probe is then linear in the data), or the probe takes its steps with an operator of its own surface
-  // (`probe_own_operator`); the others' estimates need a run of their own on the probed input
+  // its operator depends on the connectivity alone, so the probe carried along its run is linear in the
+  // data and gives its estimate; the others' estimates need a run of their own on the probed input
   bool carried_is_estimate = false;
-  bool probe_own_operator = false;
+  // that run replays its steps on an operator of its own (Probe_flow.h) rather than running the flow again
+  bool probe_replays = false;
   // without the first run's normals, the estimate measures along this candidate's result
   bool gives_normals = false;
   bool made = false;   // its run is made (the run's own flow is, before the selection)
@@ -121,9 +123,9 @@ struct Flow_candidate
 typedef std::vector<Flow_candidate> Candidate_list;
 
 /// The default run's candidates, in the order they run: the uniform fourth-order flow, the isotropic flow and
-/// the run's own (anisotropic) flow at `order`, the costliest (its probe takes its steps on an operator of its
-/// own) last, where it can be dropped against the others (Candidate_drop.h); with `normal_field` (benchmarks),
-/// the normal field after them (it needs the estimate to stop).
+/// the run's own (anisotropic) flow at `order`, the costliest, last, where it can be dropped against the others
+/// (Candidate_drop.h); with `normal_field` (benchmarks), the normal field after them (it needs the estimate to
+/// stop).
 inline Candidate_list default_candidates(int order, bool normal_field = false)
 {
   Candidate_list list(normal_field ? 4 : 3);
@@ -134,7 +136,7 @@ inline Candidate_list default_candidates(int order, bool normal_field = false)
   list[1].gives_normals = true;
   list[2] = Flow_candidate{ "anisotropic", "anisotropic", "anisotropic flow", { Candidate_tensor::RUN_TENSOR, order } };
   // its operator follows the data (the curvature of its prefiltered surface)
-  list[2].carried_is_estimate = list[2].probe_own_operator = true;
+  list[2].probe_replays = true;
   if(!normal_field) return list;
   list[3] = Flow_candidate{ "normal field", "normal field", "normal-field filter",
                             { Candidate_tensor::RUN_TENSOR, 2, Candidate_stage::NORMAL_FIELD } };

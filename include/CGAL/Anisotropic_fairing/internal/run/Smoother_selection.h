@@ -5,12 +5,11 @@
 // estimate (Tensor_selection.h) and the lowest kept. A candidate that ends short of the noise level (steps
 // rejected, budget spent, steady state) is estimated at the state it reached and kept only when none reached
 // the noise level: its flow could not go on, and on noise that is not Gaussian its estimate can be far too
-// low. Probes ride along their candidate's run (Ride_along_probe.h; the anisotropic flow's on an operator of
-// its own, Probe_flow.h), and a run is dropped once its estimate rises above the leader's (Candidate_drop.h).
-// A candidate whose carried estimate is only a lower bound (the isotropic flow's) is run again on the probed
-// input, replaying its steps when it stopped early, only when that bound could be the lowest. No candidate
-// whose carried estimate is its estimate runs twice. The figures behind these rules: the manual's Validation
-// page.
+// low. Probes ride along their candidate's run (Ride_along_probe.h), and a run is dropped once its estimate
+// rises above the leader's (Candidate_drop.h). A candidate whose carried estimate is only a lower bound is
+// estimated anew only when that bound could be the lowest: the anisotropic flow's probe replaying its run's
+// steps on an operator of its own (Probe_flow.h), the isotropic flow run again on the probed input (taking its
+// steps when it stopped early). The figures behind these rules: the manual's Validation page.
 
 #ifndef CGAL_ANISOTROPIC_FAIRING_INTERNAL_RUN_SMOOTHER_SELECTION_H
 #define CGAL_ANISOTROPIC_FAIRING_INTERNAL_RUN_SMOOTHER_SELECTION_H
@@ -162,7 +161,8 @@ inline double lowest_estimate_like(const Candidate_list& c, const Flow_candidate
 }
 
 /// The estimate of candidate `x` by a run of its own on the probed input (NaN when it cannot be made); one
-/// that ended short of the noise level has its probe take exactly its steps.
+/// that ended short of the noise level has its probe take exactly its steps, and one whose probe replays
+/// (Probe_flow.h) the very steps of its run.
 template <typename Runner>
 double estimate_by_probe_run(Flow_candidate& x, const Estimate_context& e, Runner& runner)
 {
@@ -172,10 +172,11 @@ double estimate_by_probe_run(Flow_candidate& x, const Estimate_context& e, Runne
   Flow_request request{ x.settings, std::string(x.flow) + " on the probed input", e.probed() };
   request.may_be_kept = false;
   request.fixed_steps = replay;
+  request.replay = x.probe_replays ? &x.result.schedule : nullptr;
   const Flow_outcome probe = runner.run(request);
   const Fairing_report& rp = probe.report;
-  if(!rp.succeeded() || (rp.stop_reason == Stop_reason::MAXIMUM_STEPS && runner.steps_left() == 0 && replay == 0))
-    return std::nan("");   // cut short by the budget
+  const bool budget_spent = !request.replay && rp.stop_reason == Stop_reason::MAXIMUM_STEPS && runner.steps_left() == 0;
+  if(!rp.succeeded() || (budget_spent && replay == 0)) return std::nan("");   // cut short by the budget
   if(replay > 0 && rp.steps.size() != replay) return std::nan("");   // the probe could not take the same steps
   x.probe_end = probe.Y;
   return e.risk_of(x.result.Y, probe.Y);
@@ -315,7 +316,6 @@ std::optional<std::pair<std::size_t, std::string>> run_candidates(Candidate_list
       Flow_request request{ x.settings, x.flow, context.input };
       request.probe_start = basis.made() ? &basis.estimate->probed() : nullptr;
       request.estimate = basis.estimate.get();
-      request.probe_own_operator = x.probe_own_operator;
       const Flow_candidate* lead = basis.made() ? leader(c) : nullptr;
       if(lead) request.keep_going = drop_test(*basis.estimate, lead->terms, x.dropped_at);
       x.result = runner.steps_left() > 0 ? runner.run(request) : run_not_made();

@@ -12,12 +12,14 @@
 #include <CGAL/Anisotropic_fairing/Isotropic_diffusion_tensor.h>
 #include <CGAL/Anisotropic_fairing/Uniform_diffusion_tensor.h>
 #include <CGAL/Anisotropic_fairing/internal/flow/Tensor_hooks.h>
+#include <CGAL/Anisotropic_fairing/internal/flow/Probe_flow.h>
 #include <CGAL/Anisotropic_fairing/internal/flow/Time_stepper.h>
 #include <CGAL/Anisotropic_fairing/internal/mesh/Locality_ordering.h>
 #include <CGAL/Anisotropic_fairing/internal/mesh/Mesh_components.h>
 
 #include <CGAL/Real_timer.h>
 
+#include <algorithm>
 #include <functional>
 #include <type_traits>
 #include <variant>
@@ -85,7 +87,6 @@ struct Flow_context
 struct Probe_plan
 {
   const Control_matrix* start = nullptr;
-  bool own_operator = false;   // its steps solved on an operator of its own surface (Probe_flow.h)
   // after each step, on the run's and the probe's control points: false ends the run (Flow_loop.h)
   std::function<bool(const Control_matrix&, const Control_matrix&)> keep_going;
   bool carried() const { return start != nullptr; }
@@ -97,6 +98,7 @@ struct Stepper_outcome
   Fairing_report report;
   Control_matrix Y;            // the control points (and attribute values) the flow ends at
   Control_matrix probe;        // where the probe ended (empty: none rode along)
+  Probe_schedule schedule;     // the steps the flow accepted (Probe_flow.h)
   double limit_weight = 1;     // how far toward their limit points the written positions go
   double setup_seconds = 0;    // spent before the stepper's run
 };
@@ -112,6 +114,30 @@ Assembly_context flow_numbering(const Flow_context<Cache>& context)
   return numbering;
 }
 
+/// The columns that make the surface: the positions, with the attributes in the coupled mode.
+template <typename Cache>
+int metric_columns_of(const Flow_context<Cache>& context, const Control_matrix& X)
+{
+  return context.mode == Attribute_mode::COUPLED ? int(X.cols()) : 3;
+}
+
+/// The flow's own settings: with automatic parameters, only the isotropic and the uniform flow's time step
+/// follows the mesh's density.
+template <typename Tensor>
+Stepper_settings flow_settings(const Stepper_settings& settings, const Tensor& tensor)
+{
+  Stepper_settings s = settings;
+  s.local_time_scale = settings.local_time_scale && density_scaled_flow(tensor) != nullptr;
+  return s;
+}
+
+/// Whether the flow moves the surface along its normals only (its tangential motion removed).
+template <typename Cache, typename Tensor>
+bool normal_motion_of(const Flow_context<Cache>& context, const Tensor& tensor)
+{
+  return wants_normal_motion(tensor) && context.mode != Attribute_mode::ATTRIBUTES_ONLY;
+}
+
 /// The surface a flow with `tensor` from `start` reads its curvature on before its first step (M_eps), made as
 /// its run makes it (Flow_units.h); empty when the tensor reads none or it cannot be made.
 template <typename Cache, typename Tensor>
@@ -121,14 +147,52 @@ Control_matrix prefiltered_start(const Flow_context<Cache>& context, const Tenso
   const Flow_mesh mesh{ context.ordering.layer, context.components, context.component_edge, context.mean_edge };
   Serial_flow_operator<Cache> op(context.cache, std::size_t(start.rows()), context.constrained, mesh,
                                  flow_numbering(context));
-  op.begin_run(settings, false);
+  const Stepper_settings s = flow_settings(settings, tensor);
+  op.begin_run(s, false);
   Tensor t = tensor;
   Fairing_report unread;
   Assembly_statistics a;
   const CGAL::Real_timer clock;
-  const int metric_columns = context.mode == Attribute_mode::COUPLED ? int(start.cols()) : 3;
-  const bool made = start_units(op, start, metric_columns, settings, t, unread, a, clock) && op.prefiltered();
-  return made ? *op.prefiltered() : Control_matrix();
+  const int columns = metric_columns_of(context, start);
+  if(!start_units(op, start, columns, s, t, unread, a, clock, false, true)) return Control_matrix();
+  op.prefilter(start, columns);
+  return op.prefiltered() ? *op.prefiltered() : Control_matrix();
+}
+
+/// The probe from P replaying, on an operator of its own, the steps `schedule` of a flow with `tensor` and
+/// `settings` (Probe_flow.h): where it ends (P when it could not, and the report failed), as many steps as the
+/// flow's report gives.
+template <typename Cache, typename Tensor>
+Stepper_outcome replayed_probe(const Flow_context<Cache>& context, const Tensor& tensor,
+                               const Stepper_settings& settings, const Control_matrix& P,
+                               const Probe_schedule& schedule)
+{
+  const Flow_mesh mesh{ context.ordering.layer, context.components, context.component_edge, context.mean_edge };
+  Serial_flow_operator<Cache> op(context.cache, std::size_t(P.rows()), context.constrained, mesh,
+                                 flow_numbering(context));
+  const Tangential_motion_filter filter(context.ordering.layer);
+  if(normal_motion_of(context, tensor)) op.set_tangential_filter(&filter);
+  Stepper_outcome o;
+  o.Y = replay_probe(op, tensor, flow_settings(settings, tensor), metric_columns_of(context, P), P, schedule);
+  const bool made = o.Y.size() > 0;
+  o.report.status = made ? Fairing_status::SUCCESS : Fairing_status::SOLVER_FAILED;
+  o.report.stop_reason = made ? Stop_reason::MAXIMUM_STEPS : Stop_reason::FAILURE;
+  o.report.steps.resize((std::min)(schedule.steps.size(), schedule.fall_back));
+  if(!made) o.Y = P;
+  return o;
+}
+
+/// A test on the written positions of a run and its probe made a test on their control points, whose Loop
+/// limit points they are.
+inline std::function<bool(const Control_matrix&, const Control_matrix&)>
+on_limit_points(std::function<bool(const Control_matrix&, const Control_matrix&)> test, const Ghost_layer& layer)
+{
+  return [test, &layer](const Control_matrix& Z, const Control_matrix& P) {
+    Control_matrix Y, YP;
+    limit_points(layer, Z, Y);
+    limit_points(layer, P, YP);
+    return test(Y, YP);
+  };
 }
 
 /// One flow from `start` with `tensor` and `settings`; the user's `callback` sees every step.
@@ -138,15 +202,13 @@ Stepper_outcome run_stepper(const Flow_context<Cache>& context, const Tensor& te
 {
   CGAL::Real_timer clock;
   clock.start();
-  // with automatic parameters, only the isotropic and the uniform flow's time step follows the mesh's density
-  Stepper_settings s = settings;
-  s.local_time_scale = settings.local_time_scale && density_scaled_flow(tensor) != nullptr;
+  const Stepper_settings s = flow_settings(settings, tensor);
   Time_stepper<Cache> stepper(context.cache, std::size_t(start.rows()), context.constrained, context.ordering.layer,
                               context.components, context.component_edge, context.mean_edge, flow_numbering(context));
   const Tangential_motion_filter filter(context.ordering.layer);
-  const bool normal_motion = wants_normal_motion(tensor) && context.mode != Attribute_mode::ATTRIBUTES_ONLY;
+  const bool normal_motion = normal_motion_of(context, tensor);
   if(normal_motion) stepper.set_tangential_filter(&filter);
-  const int metric_columns = context.mode == Attribute_mode::COUPLED ? int(start.cols()) : 3;
+  const int metric_columns = metric_columns_of(context, start);
   Stepper_outcome out;
   out.Y = start;
   out.setup_seconds = clock.time();
@@ -156,12 +218,12 @@ Stepper_outcome run_stepper(const Flow_context<Cache>& context, const Tensor& te
     return out;
   }
   if(probe.start) stepper.set_probe(*probe.start);
-  stepper.set_probe_operator(probe.own_operator);
   stepper.set_probe_test(probe.keep_going);
   out.report = stepper.run(out.Y, metric_columns, tensor, s, callback);
   out.report.normal_motion_only = normal_motion;
   out.limit_weight = stepper.limit_weight();
   if(probe.carried()) out.probe = stepper.probe_result();
+  out.schedule = stepper.schedule();
   return out;
 }
 
