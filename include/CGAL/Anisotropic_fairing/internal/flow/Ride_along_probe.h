@@ -32,8 +32,6 @@ public:
     unfolded_ = P;
   }
   bool active() const { return Z_.size() > 0; }
-  /// The probe is dropped (its own operator failed): the run carries none from here on.
-  void drop() { Z_.resize(0, 0); }
   /// Where the probe is: its control points, after the run.
   const Control_matrix& result() const { return Z_; }
 
@@ -56,8 +54,8 @@ public:
     add(candidate_);
   }
   // What the run does, the probe does (nothing without a probe):
-  /// the run's candidate ends theta of the way into its step (a probe of its own operator: once made);
-  void shorten(double theta) { if(active() && candidate_.size() > 0) candidate_ = Z_ + theta * (candidate_ - Z_); }
+  /// the run's candidate ends theta of the way into its step;
+  void shorten(double theta) { if(active()) candidate_ = Z_ + theta * (candidate_ - Z_); }
   void accept() { if(active()) { previous_.swap(Z_); Z_.swap(candidate_); candidate_.resize(0, 0); } }
   /// the run's accepted step is taken back to theta of its length;
   void rewind(double theta) { if(active()) Z_ = previous_ + theta * (Z_ - previous_); }
