@@ -13,6 +13,7 @@
 #include <CGAL/Anisotropic_fairing/Quadrature_point_geometry.h>
 #include <CGAL/Anisotropic_fairing/Surface_curvature.h>
 #include <CGAL/Anisotropic_fairing/internal/types/Control_matrix.h>
+#include <CGAL/Anisotropic_fairing/internal/assembly/Local_gram.h>
 #include <CGAL/Anisotropic_fairing/internal/assembly/Local_matrix_scatter.h>
 #include <CGAL/Anisotropic_fairing/internal/types/Parallel_blocks.h>
 #include <CGAL/Anisotropic_fairing/internal/types/Sparse_structure.h>
@@ -450,15 +451,15 @@ private:
     b.Bl.row(2 * q + 1) = r22 * S2.row(q);
   }
 
-  // The face's local matrices B^T B, added into the value arrays mv (null: M kept) and lv (only the lower
-  // triangle is read by the scatter, so symmetry is exact)
+  // The face's local matrices B^T B (their lower triangles: all the scatter reads, so symmetry is exact),
+  // added into the value arrays mv (null: M kept) and lv
   template <typename Buffers>
   void add_local_matrices(Buffers& b, const int* ring, int m, Workspace& ws, double* mv, double* lv) const
   {
-    if(Buffers::fixed)
+    if constexpr(Buffers::fixed)
     {
-      if(mv) b.localM.noalias() = b.Bm.transpose().lazyProduct(b.Bm);
-      b.localL.noalias() = b.Bl.transpose().lazyProduct(b.Bl);
+      if(mv) lower_gram(b.Bm, b.localM);
+      lower_gram(b.Bl, b.localL);
     }
     else
     {
