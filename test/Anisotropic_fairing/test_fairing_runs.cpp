@@ -296,10 +296,8 @@ void linear_element_sphere()
   }
 }
 
-// Linear_solver::AUTOMATIC: a CG failure is retried by the factorisation; a slow CG step makes the
-// next step a timed factorised trial (the policy, fed with the statistics of such steps: on the sound
-// surfaces the step control keeps, the Loop system needs 20-60 iterations even at tau/h^2 = 100).
-// Results agree with the explicit solvers.
+// Linear_solver::AUTOMATIC: a CG failure is retried by the factorisation (a slow CG step making the next
+// one a factorised trial: automatic_solver_gives_way). Results agree with the explicit solvers.
 void automatic_solver(const std::string& data)
 {
   Mesh hemisphere;
@@ -321,23 +319,6 @@ void automatic_solver(const std::string& data)
   std::printf("AUTOMATIC vs CHOLESKY: max |difference| %.3g (hemisphere of radius 1)\n", e);
   AF_CHECK(rb.succeeded() && rb.steps.size() == 4, "AUTOMATIC runs the 4 steps");
   AF_CHECK(e < 1e-7, "AUTOMATIC agrees with the factorised run to the CG tolerance");
-
-  // the policy: a step above the trial threshold makes the next one a factorised trial, kept while faster
-  CGAL::Anisotropic_fairing::internal::Solver_choice choice(AF::Linear_solver::AUTOMATIC, 1000);
-  CGAL::Anisotropic_fairing::internal::Solve_statistics slow;
-  slow.iterations = AF::automatic_cholesky_trial_iterations + 1;
-  AF_CHECK(!choice.factorise_now(), "AUTOMATIC starts with conjugate gradients");
-  choice.record(false, slow, 1.0);
-  AF_CHECK(choice.factorise_now(), "after a CG step above the trial threshold, the next step is a factorised trial");
-  CGAL::Anisotropic_fairing::internal::Solve_statistics direct;
-  direct.iterations = 1;
-  choice.record(true, direct, 0.5);
-  AF_CHECK(choice.factorise_now(), "a trial faster than the predicted CG step is kept");
-  CGAL::Anisotropic_fairing::internal::Solve_statistics fast = slow;
-  fast.iterations = 10;
-  CGAL::Anisotropic_fairing::internal::Solver_choice other(AF::Linear_solver::AUTOMATIC, 1000);
-  other.record(false, fast, 0.01);
-  AF_CHECK(!other.factorise_now(), "a fast CG step keeps conjugate gradients");
 }
 
 // Conjugate gradients that stall give way to the factorisation early: on the path graph's Laplacian plus
@@ -420,6 +401,37 @@ void automatic_solver_gives_way()
   AF_CHECK(choice.factorise_now(), "a step as long as the one that gave way is factorised");
   choice.set_step_factor(0.25);
   AF_CHECK(!choice.factorise_now(), "a step retried shorter than the one that gave way is iterated again");
+
+  // the policy, on counted operations: a CG solve above the trial threshold makes the next one a factorised
+  // trial, kept while it costs less than the CG step predicted (the path's factor is as sparse as the matrix:
+  // it does); a fast CG solve keeps conjugate gradients. The same counts on every machine.
+  const auto structure_of = [n](const Eigen::SparseMatrix<double>& M) {
+    return I::Sparse_structure(n, std::vector<int>(M.outerIndexPtr(), M.outerIndexPtr() + n + 1),
+                               std::vector<int>(M.innerIndexPtr(), M.innerIndexPtr() + M.nonZeros()));
+  };
+  S.makeCompressed();
+  const I::Sparse_structure slow_structure = structure_of(S);
+  const I::Value_array slow_values(S.valuePtr(), S.valuePtr() + S.nonZeros());
+  I::Solver_choice policy(AF::Linear_solver::AUTOMATIC, std::size_t(n));
+  I::Control_matrix Y = I::Control_matrix::Zero(n, 1);
+  const I::Solve_statistics iterated = policy.solve(slow_structure, slow_values, B, Y, cg, direct);
+  policy.record(direct, iterated, 1.0);
+  AF_CHECK(iterated.ok && !direct && iterated.iterations > AF::automatic_cholesky_trial_iterations && policy.factorise_now(),
+           "after a CG step above the trial threshold, the next step is a factorised trial");
+  Y.setZero();
+  const I::Solve_statistics trial = policy.solve(slow_structure, slow_values, B, Y, cg, direct);
+  policy.record(direct, trial, 1e6);   // the time is not read: the operations are counted
+  AF_CHECK(trial.ok && direct && policy.factorise_now(), "a trial that costs less than the predicted CG step is kept");
+  Eigen::SparseMatrix<double> W = A;
+  for(int i = 0; i < n; ++i) W.coeffRef(i, i) = 4.0;
+  W.makeCompressed();
+  const I::Sparse_structure fast_structure = structure_of(W);
+  const I::Value_array fast_values(W.valuePtr(), W.valuePtr() + W.nonZeros());
+  I::Solver_choice other(AF::Linear_solver::AUTOMATIC, std::size_t(n));
+  Y.setZero();
+  const I::Solve_statistics fast = other.solve(fast_structure, fast_values, B, Y, cg, direct);
+  other.record(direct, fast, 1e6);
+  AF_CHECK(fast.ok && !direct && !other.factorise_now(), "a fast CG step keeps conjugate gradients");
 }
 
 // The sparse_linear_solver named parameter (CGAL's SparseLinearAlgebraWithFactorTraits_d) replaces the

@@ -71,15 +71,17 @@ enum class Linear_solver {
   /// sparse LDL^T (Eigen's `SimplicialLDLT`); the symbolic analysis is done once, only the numeric
   /// factorisation is repeated; exact, but its cost grows faster than linearly with the mesh size
   CHOLESKY,
-  /// the default: conjugate gradients, measured against the factorisation when they become slow. When a
+  /// the default: conjugate gradients, weighed against the factorisation when they become slow. When a
   /// step needs more than `automatic_cholesky_trial_iterations` iterations (large \f$\tau/h^2\f$, poorly shaped
-  /// meshes), the next step is factorised and timed; from then on the run factorises whenever that is
-  /// faster than the next conjugate-gradient step is predicted to be (the last one's time, scaled by the
-  /// growth of the iteration count). A step whose iterations fail to converge is solved
+  /// meshes), the next step is factorised; from then on the run factorises whenever that costs less than
+  /// the next conjugate-gradient step is predicted to (the last one's cost, scaled by the growth of the
+  /// iteration count). A step whose iterations fail to converge is solved
   /// again by `CHOLESKY`; the iterations give way after as many as cost one factorised step (before one
-  /// was timed: ten times `automatic_cholesky_trial_iterations`), and the next step is iterated again
+  /// was made: ten times `automatic_cholesky_trial_iterations`), and the next step is iterated again
   /// unless they gave way twice in a row. Factorisation is only tried up to `automatic_cholesky_limit` free vertices
-  /// (its fill grows faster than linearly).
+  /// (its fill grows faster than linearly). The costs are counted operations (the iterations' sparse
+  /// products, the factor's columns), not times, so that the choice and the result are the same on every
+  /// machine and at any number of threads; a `sparse_linear_solver` of the user's is timed instead.
   AUTOMATIC
 };
 
@@ -88,7 +90,7 @@ enum class Linear_solver {
 constexpr int automatic_cholesky_limit = 50000;
 
 /// \ingroup PkgAnisotropicFairingFunctions
-/// Conjugate-gradient iterations in a step above which `Linear_solver::AUTOMATIC` times the factorisation.
+/// Conjugate-gradient iterations in a step above which `Linear_solver::AUTOMATIC` tries the factorisation.
 constexpr int automatic_cholesky_trial_iterations = 100;
 
 /*!

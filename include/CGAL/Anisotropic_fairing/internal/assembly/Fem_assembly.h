@@ -13,6 +13,7 @@
 #include <CGAL/Anisotropic_fairing/Quadrature_point_geometry.h>
 #include <CGAL/Anisotropic_fairing/Surface_curvature.h>
 #include <CGAL/Anisotropic_fairing/internal/types/Control_matrix.h>
+#include <CGAL/Anisotropic_fairing/internal/assembly/Face_chunks.h>
 #include <CGAL/Anisotropic_fairing/internal/assembly/Local_gram.h>
 #include <CGAL/Anisotropic_fairing/internal/assembly/Local_matrix_scatter.h>
 #include <CGAL/Anisotropic_fairing/internal/types/Parallel_blocks.h>
@@ -24,7 +25,6 @@
 
 #ifdef CGAL_LINKED_WITH_TBB
 #include <tbb/parallel_for.h>
-#include <tbb/task_arena.h>
 #endif
 
 #include <Eigen/Dense>
@@ -108,11 +108,9 @@ public:
       pattern_ = ring_sparsity_pattern(cache, number_of_vertices, faces);
       sort_rings();
     }
-#ifdef CGAL_LINKED_WITH_TBB
-    chunks_ = std::max(1, tbb::this_task_arena::max_concurrency());
-#endif
-    chunks_ = int(std::min<std::size_t>(std::size_t(chunks_), std::max<std::size_t>(1, assembled_faces() / 256)));
-    if(with_pattern && chunks_ > 1) share_columns(number_of_vertices);
+    chunks_ = Face_chunks(assembled_faces(), number_of_vertices, [this](std::size_t i, const auto& visit) {
+      for(int r = 0; r < cache_.ring_size(face(i)); ++r) visit(cache_.ring(face(i))[r]);
+    }, with_pattern);
   }
 
   /// What the faces' numbers and components are (Assembly_context); read at every assembly.
@@ -138,7 +136,7 @@ public:
                                Value_array& M, Value_array& L, bool with_matrices = true, bool mass_kept = false,
                                bool curvature = true)
   {
-    const std::size_t nnz = number_of_nonzeros(), nf = assembled_faces();
+    const std::size_t nnz = number_of_nonzeros();
     if(!Cache::has_second_derivatives) with_matrices = true;   // the curvature integral needs them
     mass_kept = mass_kept && with_matrices && M.size() == nnz;
     if(with_matrices)
@@ -150,54 +148,30 @@ public:
         std::fill(L.begin() + std::ptrdiff_t(first), L.begin() + std::ptrdiff_t(last), 0.0);
       }, std::size_t(65536));
     }
-    std::vector<Assembly_statistics> stats{ std::size_t(chunks_) };
+    std::vector<Assembly_statistics> stats{ chunks_.size() };
     for(Assembly_statistics& st : stats) st.component_area.assign(context_.components, 0.0);
-    // chunk k: the k-th range of faces. Each writes the columns only its faces touch into M and L; chunk 0
-    // writes the shared columns there too, every other chunk into its own short arrays, added below
-    auto run_chunk = [&](int k) {
-      double* sm = nullptr;
-      double* sl = nullptr;
-      if(k > 0 && with_matrices)
-      {
-        std::vector<double>& pm = shared_values_[2 * std::size_t(k - 1)];
-        std::vector<double>& pl = shared_values_[2 * std::size_t(k - 1) + 1];
-        if(!mass_kept) { pm.assign(shared_size_, 0.0); sm = pm.data(); }
-        pl.assign(shared_size_, 0.0);
-        sl = pl.data();
-      }
+    // chunk k: its faces, writing into M and L; the chunks of a colour share no column (Face_chunks.h)
+    auto run_chunk = [&](std::size_t k) {
       Workspace ws;
-      ws.shared_m = sm; ws.shared_l = sl;
       ws.curvature = curvature;
-      ws.shift = k > 0 ? shift_.data() : nullptr;
-      const std::size_t begin = nf * std::size_t(k) / std::size_t(chunks_);
-      const std::size_t end = nf * std::size_t(k + 1) / std::size_t(chunks_);
-      for(std::size_t i = begin; i < end; ++i)
+      for(std::size_t i = chunks_.begin(k); i < chunks_.end(k); ++i)
       {
         ws.ring_order = ring_order_offset_.empty() ? nullptr : ring_order_.data() + ring_order_offset_[i];
         assemble_face(face(i), X, metric_columns, tensor, ws, with_matrices && !mass_kept ? M.data() : nullptr,
-                      with_matrices ? L.data() : nullptr, stats[std::size_t(k)]);
+                      with_matrices ? L.data() : nullptr, stats[k]);
       }
     };
+    for(const std::vector<int>& colour : chunks_.by_colour())
+    {
 #ifdef CGAL_LINKED_WITH_TBB
-    if(chunks_ > 1)
-      tbb::parallel_for(0, chunks_, run_chunk);
-    else
+      if(colour.size() > 1)
+      {
+        tbb::parallel_for(std::size_t(0), colour.size(), [&](std::size_t c) { run_chunk(std::size_t(colour[c])); });
+        continue;
+      }
 #endif
-      for(int k = 0; k < chunks_; ++k) run_chunk(k);
-    // a shared entry: chunk 0's part, then the others' in order (as a sum over chunks)
-    if(with_matrices && chunks_ > 1)
-      for(int j : shared_columns_)
-        for(int k = 1; k < chunks_; ++k)
-        {
-          const double* pm = shared_values_[2 * std::size_t(k - 1)].data();
-          const double* pl = shared_values_[2 * std::size_t(k - 1) + 1].data();
-          const std::ptrdiff_t d = shift_[std::size_t(j)];
-          for(int p = pattern_.outerIndexPtr()[j]; p < pattern_.outerIndexPtr()[j + 1]; ++p)
-          {
-            if(!mass_kept) M[std::size_t(p)] += pm[p + d];
-            L[std::size_t(p)] += pl[p + d];
-          }
-        }
+      for(int k : colour) run_chunk(std::size_t(k));
+    }
     Assembly_statistics total;
     total.component_area.assign(context_.components, 0.0);
     for(const Assembly_statistics& s : stats) total.add(s);
@@ -259,37 +233,7 @@ private:
     const std::uint16_t* ring_order = nullptr;   // the face's ring sorted (sort_rings), or null: sort it here
     bool curvature = true;                       // second derivatives and the curvature statistics
     std::vector<double> zeros, mean_curvature;   // kappa values, for any kappa
-    double* shared_m = nullptr;   // this chunk's arrays of the shared columns (scatter_local_matrices)
-    double* shared_l = nullptr;
-    const std::ptrdiff_t* shift = nullptr;
   };
-
-  // The columns touched by the faces of more than one chunk, and where each chunk but the first adds into
-  // them: its own arrays, as long as those columns' entries. The faces are in the locality order, so a
-  // chunk's faces touch a band of vertices and few columns are shared.
-  void share_columns(std::size_t n)
-  {
-    std::vector<int> owner(n, -2);   // -2: no face, -1: several chunks
-    const std::size_t nf = assembled_faces();
-    for(int k = 0; k < chunks_; ++k)
-      for(std::size_t i = nf * std::size_t(k) / std::size_t(chunks_);
-          i < nf * std::size_t(k + 1) / std::size_t(chunks_); ++i)
-        for(int r = 0; r < cache_.ring_size(face(i)); ++r)
-        {
-          int& o = owner[std::size_t(cache_.ring(face(i))[r])];
-          o = o == -2 || o == k ? k : -1;
-        }
-    shift_.assign(n, owned_column);
-    shared_size_ = 0;
-    for(std::size_t j = 0; j < n; ++j)
-      if(owner[j] == -1)
-      {
-        shared_columns_.push_back(int(j));
-        shift_[j] = std::ptrdiff_t(shared_size_) - pattern_.outerIndexPtr()[j];
-        shared_size_ += std::size_t(pattern_.outerIndexPtr()[j + 1] - pattern_.outerIndexPtr()[j]);
-      }
-    shared_values_.resize(std::size_t(chunks_ - 1) * 2);
-  }
 
   template <typename Tensor>
   void assemble_face(std::size_t f, const Control_matrix& X, int kappa, const Tensor& tensor, Workspace& ws,
@@ -490,14 +434,12 @@ private:
     {
       const Local* const locals[1] = { &b.localL };
       double* const values[1] = { lv };
-      double* const shared[1] = { ws.shared_l };
-      scatter_local_matrices<1>(locals, ring, m, order, outer, rows, values, shared, ws.shift);
+      scatter_local_matrices<1>(locals, ring, m, order, outer, rows, values);
       return;
     }
     const Local* const locals[2] = { &b.localM, &b.localL };
     double* const values[2] = { mv, lv };
-    double* const shared[2] = { ws.shared_m, ws.shared_l };
-    scatter_local_matrices<2>(locals, ring, m, order, outer, rows, values, shared, ws.shift);
+    scatter_local_matrices<2>(locals, ring, m, order, outer, rows, values);
   }
 
   // |H|^2, H the mean-curvature vector (Surface_curvature.h), written into h
@@ -534,13 +476,9 @@ private:
   const Cache& cache_;
   const std::vector<std::size_t>* faces_ = nullptr;   // the faces assembled (null: all)
   Sparse_structure pattern_;
-  int chunks_ = 1;
-  std::vector<int> shared_columns_;
+  Face_chunks chunks_;
   std::vector<std::size_t> ring_order_offset_;   // per assembled face (sort_rings; empty: none)
   std::vector<std::uint16_t> ring_order_;
-  std::vector<std::ptrdiff_t> shift_;               // per column (share_columns)
-  std::size_t shared_size_ = 0;
-  std::vector<std::vector<double>> shared_values_;  // M and L of the shared columns, per chunk but the first
   Assembly_context context_;
   const Control_matrix* prefiltered_ = nullptr;
 };

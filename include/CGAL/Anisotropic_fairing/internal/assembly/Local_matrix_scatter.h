@@ -9,15 +9,10 @@
 
 #include <algorithm>
 #include <cstddef>
-#include <limits>
 
 namespace CGAL {
 namespace Anisotropic_fairing {
 namespace internal {
-
-/// Where a column's entries go: its pattern positions p in `values`, or, for a column shared with other
-/// threads (shift[j] != owned_column), positions p + shift[j] in `shared` (shift null: every column is owned).
-constexpr std::ptrdiff_t owned_column = std::numeric_limits<std::ptrdiff_t>::min();
 
 /// The ring's positions 0..m-1 in increasing vertex order, the order scatter_local_matrices merges in.
 template <typename Index>
@@ -33,26 +28,17 @@ void sorted_ring_order(const int* ring, int m, Index* order)
 /// column is merged into the global one in one pass, in the ring's `order` (sorted_ring_order).
 template <int N, typename Local, typename Index>
 void scatter_local_matrices(const Local* const (&local)[N], const int* ring, int m, const Index* order,
-                            const int* outer, const int* rows, double* const (&values)[N],
-                            double* const (&shared)[N], const std::ptrdiff_t* shift)
+                            const int* outer, const int* rows, double* const (&values)[N])
 {
   for(int s = 0; s < m; ++s)
   {
     const int j = ring[s];
-    double* target[N];
-    std::ptrdiff_t offset = 0;
-    for(int i = 0; i < N; ++i) target[i] = values[i];
-    if(shift && shift[j] != owned_column)
-    {
-      offset = shift[j];
-      for(int i = 0; i < N; ++i) target[i] = shared[i];
-    }
     int p = outer[j];
     for(int k = 0; k < m; ++k)
     {
       const int r = int(order[k]);
       while(rows[p] < ring[r]) ++p;
-      for(int i = 0; i < N; ++i) target[i][p + offset] += (r >= s) ? (*local[i])(r, s) : (*local[i])(s, r);
+      for(int i = 0; i < N; ++i) values[i][p] += (r >= s) ? (*local[i])(r, s) : (*local[i])(s, r);
     }
   }
 }

@@ -120,7 +120,8 @@ public:
     Fourth_order_system* q = fourth_order_.get();
     const Solve_statistics sol = !q ? choice_.solve(block_.structure(), A_, B, dX_, cg_, direct)
       : choice_.solve([q](const Control_matrix& P, Control_matrix& AP) { q->product(P, AP); }, q->diagonal(),
-                      [q]() -> const Eigen::SparseMatrix<double>& { return q->matrix(); }, B, dX_, cg_, direct);
+                      [q]() -> const Eigen::SparseMatrix<double>& { return q->matrix(); }, B, dX_, cg_, direct,
+                      3.0 * double(pattern_.nonZeros()));   // M, L and L again
     solve_seconds_ = clock.time();
     choice_.record(direct, sol, solve_seconds_);
     // on a surface that moves the system is formed anew at every solve: not kept while the next is assembled

@@ -23,6 +23,7 @@
 #include <cstddef>
 #include <cmath>
 #include <functional>
+#include <limits>
 #include <memory>
 #include <string>
 #include <vector>
@@ -355,6 +356,13 @@ public:
   void keep_factorisation(bool keep) { keep_factorisation_ = keep; }
   /// The kept factorisation no longer fits the matrix: factorise at the next solve.
   void matrix_changed() { factorised_ = false; }
+  /// The floating-point operations of the last factorisation and of a solve with it for `columns` right-hand
+  /// sides, counted from the factor; NaN when the solver cannot count them (then it is timed).
+  virtual double operations(Eigen::Index columns) const
+  {
+    (void)columns;
+    return std::numeric_limits<double>::quiet_NaN();
+  }
 
 protected:
   bool keep_factorisation_ = false;
@@ -410,6 +418,20 @@ public:
     st.iterations = 1;
     st.residual = relative_residual(A, b, x);
     return st;
+  }
+
+  /// sum over the factor's columns of (entries)^2 for the factorisation, 4 per entry and column to solve
+  double operations(Eigen::Index columns) const override
+  {
+    if(!factorised_) return std::numeric_limits<double>::quiet_NaN();
+    const auto& factor = ldlt_.matrixL().nestedExpression();
+    double work = 0;
+    for(Eigen::Index j = 0; j < factor.outerSize(); ++j)
+    {
+      const double c = double(factor.outerIndexPtr()[j + 1] - factor.outerIndexPtr()[j]);
+      work += c * c;
+    }
+    return work + 4.0 * double(factor.nonZeros()) * double(columns);
   }
 
 private:
