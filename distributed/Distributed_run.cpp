@@ -121,11 +121,9 @@ void write_result(const af_tool::Options& o, Input& in, const Replicated_setup& 
     af_tool::write_mesh(tmp.string(), format, in.mesh, in.info, false, o.text_output);
     af_tool::merge_copies_in_file(tmp.string(), format, in.info.split);
   }
-  catch(const af_tool::Failure&)
+  catch(const af_tool::Failure& f)
   {
-    std::error_code ec;
-    std::filesystem::remove(tmp, ec);
-    af_tool::fail("write_error", "cannot write " + o.output);
+    af_tool::fail_writing(f, tmp, o.output);
   }
   std::error_code ec;
   std::filesystem::rename(tmp, o.output, ec);

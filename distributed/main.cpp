@@ -79,10 +79,11 @@ int run_program(const std::vector<std::string>& arguments, MPI_Comm comm, int ra
     const bool ok = status == "success";
     if(!ok) std::fprintf(stderr, "anisotropic_fairing_mpi: %s\n", af_tool::one_line(message).c_str());
     const std::string refused = ok ? std::string() : af_tool::report_refused_on_failure(o);
-    if(!o.report.empty() && refused.empty() &&
-       !af_tool::write_file_atomically(o.report, af_distributed::summary_json(o, summary, ok, status, message)))
+    const std::string why = o.report.empty() || !refused.empty() ? std::string()
+      : af_tool::write_file_atomically(o.report, af_distributed::summary_json(o, summary, ok, status, message));
+    if(!why.empty())
     {
-      std::fprintf(stderr, "anisotropic_fairing_mpi: cannot write the report %s\n", o.report.c_str());
+      std::fprintf(stderr, "anisotropic_fairing_mpi: cannot write the report %s: %s\n", o.report.c_str(), why.c_str());
       if(ok) code = 1;
     }
     if(ok && !o.quiet)

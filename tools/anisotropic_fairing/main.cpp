@@ -78,9 +78,11 @@ int main(int argc, char** argv)
   const std::string refused = report_refused_on_failure(o);
   if(!o.report.empty() && !o.report_refused && !refused.empty())
     line += " (the report " + one_line(o.report) + " is not written: " + refused + ")";
-  else if(!o.report.empty() && refused.empty() && !report_failed &&
-          !write_file_atomically(o.report, report_json(o, r, elapsed_seconds())))
-    line += " (and cannot write the report " + one_line(o.report) + ")";
+  else if(!o.report.empty() && refused.empty() && !report_failed)
+  {
+    const std::string why = write_file_atomically(o.report, report_json(o, r, elapsed_seconds()));
+    if(!why.empty()) line += " (and cannot write the report " + one_line(o.report) + ": " + why + ")";
+  }
   std::fprintf(stderr, "%s\n", line.c_str());
   return code;
 }

@@ -5,6 +5,7 @@
 #include "text_tokens.h"
 
 #include <algorithm>
+#include <cerrno>
 #include <cstring>
 #include <fstream>
 #include <map>
@@ -14,11 +15,12 @@ namespace af_tool {
 
 std::string file_contents(const std::string& path)
 {
+  errno = 0;
   std::ifstream in(path, std::ios::binary);
-  if(!in) throw File_problem("cannot open " + path);
+  if(!in) throw File_problem("cannot open " + path + (errno ? ": " + std::string(std::strerror(errno)) : ""));
   std::ostringstream s;
   s << in.rdbuf();
-  if(in.bad()) throw File_problem("cannot read " + path);
+  if(in.bad()) throw File_problem(path + (errno ? ": " + std::string(std::strerror(errno)) : ": a read failed"));
   return s.str();
 }
 

@@ -295,7 +295,9 @@ void check_openable(const std::string& path, Input_info& info)
 {
   if(!format_of(path, info.format)) usage_error("INPUT must be an .off, .obj, .ply or .stl file: " + path);
   std::error_code ec;
-  if(!fs::is_regular_file(path, ec)) fail("read_error", "cannot open " + path + ": no such file");
+  if(fs::is_directory(path, ec)) fail("read_error", "cannot open " + path + ": it is a directory");
+  if(!fs::exists(path, ec)) fail("read_error", "cannot open " + path + ": no such file");
+  if(!fs::is_regular_file(path, ec)) fail("read_error", "cannot open " + path + ": not a regular file");
   std::ifstream probe(path);
   if(!probe) fail("read_error", "cannot open " + path + ": " + std::strerror(errno));
 }

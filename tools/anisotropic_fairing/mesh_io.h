@@ -59,14 +59,18 @@ bool is_numeric_property(const Mesh& mesh, const std::string& property)
 std::vector<std::string> dropped_properties(const Mesh& mesh, Format f);
 
 // Writes the mesh in format `f`: PLY binary if the input was a binary PLY, STL binary; as text if `text`.
-// Throws Failure.
+// Throws Failure, naming the path and the system's reason.
 void write_mesh(const std::string& path, Format f, const Mesh& mesh, const Input_info& info, bool with_normals,
                 bool text);
 
 // A temporary file next to `path`, renamed to it once everything succeeded.
 std::filesystem::path temporary_next_to(const std::string& path);
-// Writes `text` to `path` through a temporary file next to it.
-bool write_file_atomically(const std::string& path, const std::string& text);
+// Removes the temporary file `written` that `f` failed to write, then fails naming `shown` (the user's path)
+// with f's reason.
+[[noreturn]] void fail_writing(const Failure& f, const std::filesystem::path& written, const std::string& shown);
+// Writes `text` to `path` through a temporary file next to it (removed on failure); returns the system's
+// reason why it could not ("No space left on device", ...), empty when written.
+std::string write_file_atomically(const std::string& path, const std::string& text);
 
 } // namespace af_tool
 

@@ -10,6 +10,8 @@
 #include <CGAL/boost/graph/IO/OBJ.h>
 #include <CGAL/boost/graph/IO/STL.h>
 
+#include <cerrno>
+#include <cstring>
 #include <fstream>
 #include <string>
 #include <vector>
@@ -122,6 +124,7 @@ void write_mesh(const std::string& path, Format f, const Mesh& mesh, const Input
                 bool text)
 {
   bool ok = false;
+  errno = 0;   // the failing open, write or close says why (system_reason)
   {
     Capture_streams capture;
     if(f == Format::STL)
@@ -187,7 +190,7 @@ void write_mesh(const std::string& path, Format f, const Mesh& mesh, const Input
       }
     }
   }
-  if(!ok) fail("write_error", "cannot write " + path);
+  if(!ok) fail("write_error", "cannot write " + path + system_reason(errno));
 }
 
 fs::path temporary_next_to(const std::string& path)
@@ -198,20 +201,38 @@ fs::path temporary_next_to(const std::string& path)
   return dir / ("." + p.stem().string() + ".tmp" + std::to_string(long(::getpid())) + p.extension().string());
 }
 
-bool write_file_atomically(const std::string& path, const std::string& text)
+void fail_writing(const Failure& f, const fs::path& written, const std::string& shown)
+{
+  std::error_code ec;
+  fs::remove(written, ec);
+  std::string message = f.message;
+  const std::size_t at = message.find(written.string());
+  if(at == std::string::npos) fail("write_error", "cannot write " + shown);
+  message.replace(at, written.string().size(), shown);
+  fail("write_error", message);
+}
+
+std::string write_file_atomically(const std::string& path, const std::string& text)
 {
   const fs::path tmp = temporary_next_to(path);
+  errno = 0;
   {
     std::ofstream out(tmp, std::ios::binary);
-    if(!out) return false;
+    if(!out) return std::strerror(errno ? errno : EIO);
     out << text;
     out.close();
-    if(out.fail()) { std::error_code ec; fs::remove(tmp, ec); return false; }
+    if(out.fail())
+    {
+      const int err = errno ? errno : EIO;
+      std::error_code ec;
+      fs::remove(tmp, ec);
+      return std::strerror(err);
+    }
   }
   std::error_code ec;
   fs::rename(tmp, path, ec);
-  if(ec) { fs::remove(tmp, ec); return false; }
-  return true;
+  if(ec) { std::error_code ec2; fs::remove(tmp, ec2); return ec.message(); }
+  return std::string();
 }
 
 } // namespace af_tool

@@ -49,11 +49,9 @@ void write_mesh_next_to(const Options& o, const Mesh& mesh, const Input_info& in
     // resampled: a new mesh, copies and all
     if(!o.has_resample) merge_copies_in_file(tmp.string(), format, info.split);
   }
-  catch(const Failure&)
+  catch(const Failure& f)
   {
-    std::error_code ec;
-    fs::remove(tmp, ec);
-    fail("write_error", "cannot write " + o.output);
+    fail_writing(f, tmp, o.output);
   }
 }
 
@@ -123,11 +121,13 @@ void commit_outputs(const Options& o, const std::string& renderer, const Mesh& m
   r.output_written = true;  // as far as the report is concerned
   r.write_seconds = elapsed_seconds() - write_from;
   // wall time up to here; the rename is negligible
-  if(!o.report.empty() && !write_file_atomically(o.report, report_json(o, r, elapsed_seconds())))
+  const std::string why =
+    o.report.empty() ? std::string() : write_file_atomically(o.report, report_json(o, r, elapsed_seconds()));
+  if(!why.empty())
   {
     tmp.remove();
     r.output_written = false;
-    throw Failure{1, "write_error", "cannot write the report " + o.report};
+    throw Failure{1, "write_error", "cannot write the report " + o.report + ": " + why};
   }
   rename_into_place(o, tmp, r);
 }

@@ -11,6 +11,7 @@
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/Surface_mesh.h>
 
+#include <cstring>
 #include <string>
 
 namespace CGAL {
@@ -49,6 +50,13 @@ struct Failure
 [[noreturn]] inline void fail(const std::string& status, const std::string& message)
 {
   throw Failure{ 1, status, message };
+}
+
+/// ": " and the system's reason for the error number `err` (strerror: "No space left on device", "Permission
+/// denied", ...), or nothing when there is none (0)
+inline std::string system_reason(int err)
+{
+  return err != 0 ? ": " + std::string(std::strerror(err)) : std::string();
 }
 
 // seconds since the program started (the report's wall_seconds)

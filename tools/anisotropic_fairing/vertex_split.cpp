@@ -4,6 +4,7 @@
 #include "element_properties.h"
 
 #include <array>
+#include <cerrno>
 #include <cmath>
 #include <cstdint>
 #include <fstream>
@@ -348,10 +349,11 @@ void merge_copies_in_file(const std::string& path, Format format, const Vertex_s
   {
     cannot(path, std::string("unexpected content (") + e.what() + ")");
   }
+  errno = 0;
   std::ofstream out(path, std::ios::binary | std::ios::trunc);
   out << merged;
   out.close();
-  if(out.fail()) fail("write_error", "cannot write " + path);
+  if(out.fail()) fail("write_error", "cannot write " + path + system_reason(errno));
 }
 
 } // namespace af_tool
