@@ -164,6 +164,7 @@ std::vector<Candidate_truth> run_case(const std::string& name, const Mesh& noisy
     }
     core.measure_on(X);
   }
+  core.prepare();
   core.run();
   {
     const AFI::Ghost_layer& layer = im.ghost_layer();

@@ -62,6 +62,7 @@ std::string unsupported(const af_tool::Options& o)
   if(o.has_resample) return "--resample" + no;
   if(!o.snapshot.empty()) return "--snapshot" + no;
   if(o.repair) return "--repair" + no;
+  if(f.memory_limit) return "--memory-limit" + no + " (a process's memory is not predicted yet)";
   return std::string();
 }
 

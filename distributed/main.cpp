@@ -46,7 +46,8 @@ const char* const usage_text =
   "Single-dash options are PETSc's: -pc_type jacobi|gamg|hypre, -ksp_rtol, -ksp_monitor, -mat_partitioning_type,\n"
   "-log_view; the prefilter's solver: -prefilter_ksp_rtol, -prefilter_pc_type. Not supported (refused): the\n"
   "automatic run, --stop noise, --order 4, --element linear, deviation bounds, --mode attributes,\n"
-  "--solver cholesky, --hold, --curvature, --resample, --snapshot, --repair, inputs with vertex normals.\n"
+  "--solver cholesky, --hold, --curvature, --resample, --snapshot, --repair, --memory-limit, inputs with vertex\n"
+  "normals.\n"
   "anisotropic_fairing's options, with the same meaning:\n\n";
 
 // the run on every process; returns the exit code (the same on every process)

@@ -84,6 +84,19 @@ struct Py_number : Keyword_kind
     field = number_argument(name, v);
   }
 };
+// bytes, >= 0; infinity (math.inf): no check
+struct Py_memory_size : Keyword_kind
+{
+  void operator()(Options&, std::optional<double>& field, const std::string& name, py::handle v) const
+  {
+    if(py::isinstance<py::bool_>(v) || py::isinstance<py::str>(v)) throw py::type_error(name + " expects a number");
+    double x = 0;
+    try { x = v.cast<double>(); }
+    catch(const py::cast_error&) { throw py::type_error(name + " expects a number of bytes"); }
+    if(!(x >= 0)) throw py::value_error(name + " must be >= 0 bytes (math.inf: no check)");
+    field = x;
+  }
+};
 struct Py_integer : Keyword_kind
 {
   void operator()(Options&, int& field, const std::string& name, py::handle v) const

@@ -262,6 +262,23 @@ def test_a_failed_run_raises_with_its_report():
     assert isinstance(e.value, RuntimeError)
 
 
+def test_a_run_that_cannot_fit_is_refused_before_it_starts(fandisk):
+    V, F = fandisk
+    with pytest.raises(af.FairingError) as e:
+        af.fair(V, F, memory_limit=1 << 20)
+    r = e.value.report
+    assert r['status'] == 'insufficient_memory' and r['steps'] == []
+    assert r['available_memory_mb'] == 1 and r['predicted_memory_mb'] > 1
+    assert r['memory_limited_by'] == 'the memory_limit given' and '1 MB are available' in r['message']
+    P, _, report = af.fair(V, F, memory_limit=math.inf, quiet=True)
+    assert report['status'] == 'success' and report['available_memory_mb'] is None
+    assert report['predicted_memory_mb'] == r['predicted_memory_mb'] and report['peak_memory_mb'] > 0
+    with pytest.raises(ValueError, match='memory_limit'):
+        af.fair(V, F, memory_limit=-1)
+    with pytest.raises(TypeError, match='memory_limit'):
+        af.fair(V, F, memory_limit='6G')
+
+
 def test_callback_and_gil(fandisk):
     V, F = fandisk
     seen = []

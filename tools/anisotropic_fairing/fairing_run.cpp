@@ -211,7 +211,7 @@ int run(const Options& o, Run_record& r)
   Mesh mesh;
   Input_info info;
   read_mesh(o, heartbeat, mesh, info, r);
-  if(o.has_resample) check_resample_size(mesh, o.resample);
+  if(o.has_resample) check_resample_size(mesh, o.resample, o.fairing.memory_limit);
   check_curvature_properties_free(o, mesh);
   Fairing_plan plan;
   plan_attributes(o, mesh, info, plan);

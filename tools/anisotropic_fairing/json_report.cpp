@@ -5,7 +5,10 @@
 
 #include <nlohmann/json.hpp>
 
+#include <sys/resource.h>
+
 #include <cmath>
+#include <fstream>
 #include <string>
 #include <variant>
 
@@ -218,6 +221,34 @@ void add_times(Json& j, const Run_record& r, double wall_seconds)
   j["wall_seconds"] = number(wall_seconds);
 }
 
+// The process's largest resident set so far, kB: Linux's VmHWM, which (unlike getrusage's ru_maxrss) does not
+// count the memory of the process that started this one before it became this program; NaN where unknown
+double peak_resident_kb()
+{
+  std::ifstream status("/proc/self/status");
+  std::string key;
+  double kb = 0;
+  while(status >> key)
+    if(key == "VmHWM:" && status >> kb) return kb;
+  rusage usage;
+  return getrusage(RUSAGE_SELF, &usage) == 0 ? double(usage.ru_maxrss) : std::nan("");
+}
+
+// The run's memory: what it was predicted to take and could take (checked before its set-up), and what the
+// process took at its peak (its maximum resident set so far), in MB
+void add_memory(Json& j, const Run_record& r)
+{
+  const AF::Fairing_report& f = r.report;
+  const bool ran = r.fairing_ran;
+  const double mb = 1024.0 * 1024.0;
+  j["memory_in_use_mb"] = ran ? number(f.memory_in_use / mb) : Json(nullptr);
+  j["predicted_memory_mb"] = ran ? number(f.predicted_memory / mb) : Json(nullptr);
+  j["predicted_peak_memory_mb"] = ran ? number((f.memory_in_use + f.predicted_memory) / mb) : Json(nullptr);
+  j["available_memory_mb"] = ran ? number(f.available_memory / mb) : Json(nullptr);
+  j["memory_limited_by"] = ran && std::isfinite(f.available_memory) ? Json(f.memory_limited_by) : Json(nullptr);
+  j["peak_memory_mb"] = number(peak_resident_kb() / 1024.0);
+}
+
 } // namespace
 
 std::string report_json(const Options& o, const Run_record& r, double wall_seconds)
@@ -231,6 +262,7 @@ std::string report_json(const Options& o, const Run_record& r, double wall_secon
   add_deviations(j, o, r);
   add_steps(j, r);
   add_times(j, r, wall_seconds);
+  add_memory(j, r);
   // bytes that are not UTF-8 (a path, a message quoting the input) are replaced rather than refused
   return j.dump(2, ' ', false, Json::error_handler_t::replace) + "\n";
 }

@@ -29,6 +29,15 @@ struct Number
   }
 };
 
+// a size in bytes, or off (option_values.h)
+struct Memory_size
+{
+  void operator()(Options&, std::optional<double>& field, const std::string& flag, const std::string& v) const
+  {
+    field = parse_memory_size(flag, v);
+  }
+};
+
 // a count of steps
 struct Count
 {

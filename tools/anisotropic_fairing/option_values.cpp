@@ -2,6 +2,7 @@
 #include "option_values.h"
 
 #include <algorithm>
+#include <cctype>
 #include <cerrno>
 #include <cmath>
 #include <cstdlib>
@@ -71,6 +72,20 @@ void set_number(std::optional<double>& value, const std::string& flag, const std
   bool given = false;
   set_number(v, given, flag, text, zero_allowed);
   value = v;
+}
+
+double parse_memory_size(const std::string& flag, const std::string& text)
+{
+  if(text == "off") return std::numeric_limits<double>::infinity();
+  const std::string units = "KMGT";
+  const std::size_t unit = text.empty() ? std::string::npos : units.find(char(std::toupper(text.back())));
+  const std::string number = unit == std::string::npos ? text : text.substr(0, text.size() - 1);
+  errno = 0;
+  char* end = nullptr;
+  const double v = std::strtod(number.c_str(), &end);
+  if(number.empty() || end != number.c_str() + number.size() || !std::isfinite(v) || !(v >= 0))
+    usage_error(flag + " expects a size such as 6G, 500M or 1048576 (bytes), or off, not " + quoted_excerpt(text));
+  return unit == std::string::npos ? v : v * std::pow(1024.0, double(unit + 1));
 }
 
 std::size_t choice_index(const std::string& flag, const std::string& text, const std::vector<const char*>& names)

@@ -29,6 +29,9 @@ void set_number(double& value, bool& given, const std::string& flag, const std::
 // A number option of the library's: set once read and checked as above.
 void set_number(std::optional<double>& value, const std::string& flag, const std::string& text, bool zero_allowed);
 
+// A size in bytes: a number with an optional K, M, G or T (powers of 1024), e.g. 6G or 500M; "off": infinity.
+double parse_memory_size(const std::string& flag, const std::string& text);
+
 // The index of `text` among `names`; for any other text a usage error that lists them ("a, b or c").
 std::size_t choice_index(const std::string& flag, const std::string& text, const std::vector<const char*>& names);
 

@@ -7,6 +7,7 @@
 #include "mesh_io.h"
 #include "tool_common.h"
 
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -15,8 +16,9 @@ namespace af_tool {
 // The faces --resample may write at most (a Surface_mesh of that size takes several GiB).
 constexpr double resample_face_budget = 5e7;
 
-// Fails (status invalid_parameter) if `levels` would give more faces than the budget; before the run.
-void check_resample_size(const Mesh& mesh, unsigned levels);
+// Fails (status invalid_parameter) if `levels` would give more faces than the budget, or (insufficient_memory)
+// if they would not fit in what the process may take (`memory_limit`: --memory-limit); before the run.
+void check_resample_size(const Mesh& mesh, unsigned levels, const std::optional<double>& memory_limit);
 
 // What the run gives the resampling: the faired control points and, for the faired attribute columns,
 // their control values (one vector per vertex, the columns in order).

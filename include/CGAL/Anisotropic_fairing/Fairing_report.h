@@ -28,7 +28,10 @@ enum class Fairing_status {
   COLLAPSED,
   /// the first step folded the surface (or made \f$\int|H|^2\f$ explode) even when retried with 1/1024 of the time
   /// step, or every step taken left more folded edges than the input had
-  FOLDED
+  FOLDED,
+  /// the run's predicted memory (`Fairing_report::predicted_memory`) exceeds what the process may take
+  /// (`Fairing_report::available_memory`): refused before its set-up; the named parameter `memory_limit` overrides
+  INSUFFICIENT_MEMORY
 };
 
 /// \ingroup PkgAnisotropicFairingFunctions
@@ -99,6 +102,7 @@ inline const char* to_string(Fairing_status s)
     case Fairing_status::DEGENERATE_METRIC: return "degenerate_metric";
     case Fairing_status::FOLDED: return "folded";
     case Fairing_status::COLLAPSED: return "collapsed";
+    case Fairing_status::INSUFFICIENT_MEMORY: return "insufficient_memory";
   }
   return "collapsed";   // not an enumerator: a value cast from an integer
 }
@@ -290,6 +294,17 @@ struct Fairing_report
   double setup_seconds = 0;
   double write_back_seconds = 0;  ///< the result written into the caller's maps
   double total_seconds = 0;       ///< the whole call
+  /// bytes the process held when the run was checked against the memory available (its resident set, once the
+  /// input was read and its noise estimated; 0 where it cannot be read)
+  double memory_in_use = 0;
+  /// bytes the run was predicted to take above `memory_in_use` at its peak, from the mesh's size and the parameters;
+  /// with an automatic factorisation's factor where it fits beside the run (the check asks for the run without it)
+  double predicted_memory = 0;
+  /// bytes the process could still take at the check: the named parameter `memory_limit`, or the tightest of the
+  /// cgroup's memory limit, the address-space and data limits (`ulimit -v`, `ulimit -d`) and the memory the system
+  /// has available; infinity when nothing is known or the check is off
+  double available_memory = std::numeric_limits<double>::infinity();
+  std::string memory_limited_by;  ///< what sets `available_memory`, e.g. "the address-space limit (ulimit -v)"
 
   /// true when the result was written back
   bool succeeded() const { return status == Fairing_status::SUCCESS; }

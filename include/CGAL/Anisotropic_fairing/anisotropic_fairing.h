@@ -288,6 +288,14 @@ of its area per step. `time_step` and `fidelity_weight` give them in model units
     \cgalParamDescription{adaptive quadrature near extraordinary vertices (see `Loop_limit_surface`)}
     \cgalParamType{int in [0, 12]} \cgalParamDefault{`0`}
   \cgalParamNEnd
+  \cgalParamNBegin{memory_limit}
+    \cgalParamDescription{the bytes the run may take: a run whose predicted memory (`Fairing_report::predicted_memory`)
+      is larger is refused before its set-up with `Fairing_status::INSUFFICIENT_MEMORY` and a message naming both;
+      infinity: no check}
+    \cgalParamType{double, >= 0}
+    \cgalParamDefault{what the process may still take: the tightest of its cgroup's memory limit, its address-space
+      and data limits (`ulimit -v`, `ulimit -d`) and the memory the system has available}
+  \cgalParamNEnd
 \cgalNamedParamsEnd
 
 \returns a `Fairing_report`: the status, why the run stopped, and per step the solver's iterations and

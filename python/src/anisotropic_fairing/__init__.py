@@ -47,7 +47,9 @@ def fair(V, F, *, attributes=None, vertex_is_constrained=None, callback=None, qu
     ('limit', 'control'), ``tensor`` ('isotropic', 'anisotropic', 'uniform') with, for 'anisotropic',
     ``lambda_``, ``epsilon`` and ``tangential_motion`` ('remove', 'keep'), ``linear_solver`` ('auto', 'cg',
     'cholesky'), ``boundary_handling`` ('curve', 'vertices'), ``quadrature_degree``, ``attribute_mode``
-    ('separate', 'coupled', 'attributes', 'geometry') and ``attribute_weight``.
+    ('separate', 'coupled', 'attributes', 'geometry'), ``attribute_weight`` and ``memory_limit`` (bytes the run
+    may take; default: what the process may still take; ``math.inf``: no check; a run predicted to need more
+    raises :class:`FairingError` with status 'insufficient_memory' before it starts).
 
     Returns the faired positions (N x 3), the faired attributes (the shape given; None without) and the
     report (:class:`FairingReport`: the keys of the program's JSON report). Raises ValueError for invalid

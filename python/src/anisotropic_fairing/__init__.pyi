@@ -42,8 +42,8 @@ def fair(V: npt.ArrayLike, F: npt.ArrayLike, *, attributes: Optional[npt.ArrayLi
          output_positions: Optional[Literal['limit', 'control']] = None,
          attribute_mode: Optional[Literal['separate', 'coupled', 'attributes', 'geometry']] = None,
          attribute_weight: Optional[float] = None, boundary_handling: Optional[Literal['curve', 'vertices']] = None,
-         linear_solver: Optional[Literal['auto', 'cg', 'cholesky']] = None, quadrature_degree: Optional[int] = None
-         ) -> Tuple[_Points, Optional[npt.NDArray[np.float64]], FairingReport]: ...
+         linear_solver: Optional[Literal['auto', 'cg', 'cholesky']] = None, quadrature_degree: Optional[int] = None,
+         memory_limit: Optional[float] = None) -> Tuple[_Points, Optional[npt.NDArray[np.float64]], FairingReport]: ...
 
 class LimitSurface:
     """The Loop limit surface of a triangle mesh (see limit_surface())."""

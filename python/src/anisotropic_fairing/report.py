@@ -159,6 +159,12 @@ FairingReport = TypedDict('FairingReport', {
     'total_seconds': Optional[float],
     'write_seconds': Optional[float],
     'wall_seconds': Optional[float],
+    'memory_in_use_mb': Optional[float],
+    'predicted_memory_mb': Optional[float],
+    'predicted_peak_memory_mb': Optional[float],
+    'available_memory_mb': Optional[float],
+    'memory_limited_by': Optional[str],
+    'peak_memory_mb': Optional[float],
 })
 FairingReport.__doc__ = """The report of a run: the program's JSON report (``anisotropic_fairing --report``) as a
 dict."""

@@ -209,6 +209,8 @@ def failures(args, closed):
     fails_cleanly(args, "folded_first_step", camel, flags, 2, 1, [serial.stderr.strip().split("\n")[0].split(": ", 1)[1]])
     fails_cleanly(args, "automatic_refused", closed, [], 2, 2, ["--relative-time-step", "not supported"])
     fails_cleanly(args, "noise_stop_refused", closed, ["--relative-time-step", "1e-3", "--stop", "noise"], 1, 2, ["--stop noise"])
+    fails_cleanly(args, "memory_limit_refused", closed, ["--relative-time-step", "1e-3", "--memory-limit", "1G"], 1, 2,
+                  ["--memory-limit is not supported"])
 
 if __name__ == "__main__":
     main()

@@ -153,5 +153,12 @@ AF_PARAMETER(quadrature_degree, int, 8, OWN, nullptr, Unchecked(),
   "Gauss rule per face for the Loop element (default 8; quadrature_degree)")
 AF_PARAMETER(quadrature_tiling_depth, int, 0, OWN, nullptr, Unchecked(),
   nullptr, nullptr, No_flag(), No_keyword(), "")
+AF_PARAMETER(memory_limit, std::optional<double>, {}, OWN, nullptr, Unchecked(),
+  "--memory-limit", "SIZE|off", Memory_size(), Py_memory_size(),
+  "the memory the run may take, e.g. 6G or 500M (K, M, G, T: powers of 1024;\n"
+  "default: what the process may still take, the tightest of its cgroup's\n"
+  "limit, ulimit -v and the memory the system has available). A run\n"
+  "predicted to need more is refused before it starts, naming both; off:\n"
+  "no check (memory_limit, in bytes; infinity: no check)")
 AF_PARAMETER(verbose, bool, false, CGAL, &Stepper_settings::verbose, Unchecked(),
   nullptr, nullptr, No_flag(), No_keyword(), "")

@@ -20,6 +20,7 @@
 #include <Eigen/Sparse>
 
 #include <cstddef>
+#include <limits>
 #include <vector>
 
 namespace CGAL {
@@ -34,6 +35,7 @@ struct Prefilter_solver
   double tolerance = 1e-10;
   int maximum_iterations = 10000;
   Direct_solver_factory direct;   // empty: Sparse_cholesky
+  double factor_budget = std::numeric_limits<double>::infinity();   // Stepper_settings::factor_budget
 };
 
 /// M, L: value arrays over `pattern` (isotropic); A: the system's values over `block.structure()`,

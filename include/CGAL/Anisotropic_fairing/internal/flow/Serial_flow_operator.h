@@ -73,6 +73,7 @@ public:
     prefilter.tolerance = s.solver_tolerance / 100;
     prefilter.maximum_iterations = s.solver_maximum_iterations;
     prefilter.direct = s.direct_solver;
+    prefilter.factor_budget = s.factor_budget;
     operator_.set_prefilter(std::move(eps), &block_, prefilter);
   }
   /// The run's units; `component_scale`: the tensor is read at each component's scale. Several components:

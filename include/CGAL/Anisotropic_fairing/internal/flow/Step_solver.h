@@ -38,7 +38,7 @@ public:
               bool constant_matrix, const Output_fidelity* fidelity = nullptr, const Control_matrix* anchor = nullptr)
     : pattern_(pattern), block_(block), fidelity_(fidelity), anchor_(anchor),
       cg_(s.solver_tolerance, s.solver_maximum_iterations),
-      choice_(s.solver, block.size(), constant_matrix, s.direct_solver), constant_(constant_matrix),
+      choice_(s.solver, block.size(), constant_matrix, s.direct_solver, s.factor_budget), constant_(constant_matrix),
       dX_(Control_matrix::Zero(Eigen::Index(block.size()), columns))
   {
     if(s.order == 4) fourth_order_.reset(new Fourth_order_system(pattern, block.free));

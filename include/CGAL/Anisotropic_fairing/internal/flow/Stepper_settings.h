@@ -12,6 +12,7 @@
 #include <CGAL/Anisotropic_fairing/internal/solve/Spd_solvers.h>
 
 #include <cstddef>
+#include <limits>
 
 namespace CGAL {
 namespace Anisotropic_fairing {
@@ -30,6 +31,9 @@ struct Stepper_settings
   double solver_tolerance = 1e-8;
   int solver_maximum_iterations = 10000;
   Direct_solver_factory direct_solver;   // the factorisation (empty: Sparse_cholesky)
+  // bytes a factorisation may take beyond the run's predicted memory (Memory_estimate.h): AUTOMATIC does not
+  // factorise a system whose factor would not fit, and iterates instead
+  double factor_budget = std::numeric_limits<double>::infinity();
   bool verbose = false;
   bool measure_limit_surface = false;   // the positions measured are the Loop limit points of the control points
   bool limit_written = false;       // the positions written are (a bound holds them: Deviation_bound.h)

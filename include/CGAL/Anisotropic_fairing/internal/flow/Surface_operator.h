@@ -42,7 +42,8 @@ public:
     eps_ = std::move(eps);
     block_ = block;
     prefilter_solver_ = solver;
-    prefilter_choice_.reset(block ? new Solver_choice(solver.solver, block->size(), false, solver.direct) : nullptr);
+    prefilter_choice_.reset(
+      block ? new Solver_choice(solver.solver, block->size(), false, solver.direct, solver.factor_budget) : nullptr);
     prefilter_cg_.reset(new Block_conjugate_gradient(solver.tolerance, solver.maximum_iterations));
     prefilter_ = false;
     for(double e : eps_) prefilter_ = prefilter_ || e > 0;

@@ -81,13 +81,27 @@ public:
     scale_attribute_bound();
   }
 
-  Fairing_result run()
+  /// The choices from the mesh (units, spikes, noise, automatic parameters): before run() and the memory check
+  void prepare()
   {
     measure_units();
     remove_spikes();
     estimate_noise();
     choose_measured_surface();
     choose_automatically();
+  }
+  /// The input's limit surface is off it by the noise already (Noise_level.h): the noise stop then ends every flow
+  /// before its first step. X_ is the input until a run is kept.
+  bool input_at_noise_level() const
+  {
+    Control_matrix Y = X_;
+    if(s_.measure_limit_surface) limit_points(layer_, X_, Y);
+    const double target = s_.stopping.noise_discrepancy * s_.strength * noise_->relative_sigma();
+    return bool(Noise_level::before_first_step(Noise_level::at_start(*noise_, Y, X_), target));
+  }
+
+  Fairing_result run()
+  {
     if(given_.element == Finite_element::LOOP)
     {
       Ghosted_patch_cache cache(layer_, given_.quadrature);
@@ -144,12 +158,7 @@ private:
     bool loop_;
   };
 
-  static CGAL::Real_timer started_timer()
-  {
-    CGAL::Real_timer t;
-    t.start();
-    return t;
-  }
+  static CGAL::Real_timer started_timer() { CGAL::Real_timer t; t.start(); return t; }
   bool coupled() const { return given_.mode == Attribute_mode::COUPLED; }
   double attribute_scale() const { return coupled() ? given_.attribute_weight : 1.0; }
 
@@ -257,12 +266,7 @@ private:
     select_tensor_ = compares_flows();
   }
 
-  // the default run compares the anisotropic, the isotropic and the uniform fourth-order flow
-  bool compares_flows() const
-  {
-    return given_.automatic && is_automatic_tensor(tensor_) && given_.mode != Attribute_mode::ATTRIBUTES_ONLY &&
-           s_.stopping.noise_discrepancy > 0;
-  }
+  bool compares_flows() const { return internal::compares_flows(given_, tensor_); }
 
   // a bound on the motion: no probe rides along (Ride_along_probe.h)
   bool bounded() const { return s_.maximum_deviation > 0 || s_.attribute_maximum_deviation > 0; }
@@ -323,15 +327,6 @@ private:
         observer_(c, e, ordering_.old_of_new_vertex);
       };
     return select_smoother(std::move(candidates), context, runner);
-  }
-
-  // the input's limit surface is off it by the noise already (Noise_level.h)
-  bool input_at_noise_level() const
-  {
-    Control_matrix Y = input_;
-    if(s_.measure_limit_surface) limit_points(layer_, input_, Y);
-    const double target = s_.stopping.noise_discrepancy * s_.strength * noise_->relative_sigma();
-    return bool(Noise_level::before_first_step(Noise_level::at_start(*noise_, Y, input_), target));
   }
 
   // the input's M_eps, read by the run's own tensor (empty: it reads none)

@@ -16,6 +16,7 @@
 #include <CGAL/Anisotropic_fairing/internal/run/Caller_maps.h>
 #include <CGAL/Anisotropic_fairing/internal/run/Fairing_core.h>
 #include <CGAL/Anisotropic_fairing/internal/run/Fairing_parameters.h>
+#include <CGAL/Anisotropic_fairing/internal/run/Memory_estimate.h>
 
 #include <CGAL/Real_timer.h>
 
@@ -35,6 +36,56 @@ std::true_type named_parameters_test(const CGAL::Named_function_parameters<T, Ta
 std::false_type named_parameters_test(...);
 template <typename X>
 struct is_named_parameters : decltype(named_parameters_test(static_cast<const X*>(nullptr))) {};
+
+/// What decides the memory of a run of `given` with `tensor` on `vertices` and `attributes` columns.
+template <typename Tensor>
+Memory_plan memory_plan(const Fairing_parameters& given, const Tensor& tensor, std::size_t vertices,
+                        Eigen::Index attributes)
+{
+  Memory_plan p;
+  p.vertices = vertices;
+  p.columns = given.mode == Attribute_mode::GEOMETRY_ONLY     ? 3
+              : given.mode == Attribute_mode::ATTRIBUTES_ONLY ? int(attributes)
+                                                              : 3 + int(attributes);
+  p.comparison = compares_flows(given, tensor);
+  p.flow = with_tensor(tensor, [](const auto& t) {
+    typedef std::decay_t<decltype(t)> T;
+    return std::is_same<T, Uniform_diffusion_tensor>::value     ? Memory_plan::UNIFORM
+           : std::is_same<T, Isotropic_diffusion_tensor>::value ? Memory_plan::ISOTROPIC
+                                                                : Memory_plan::ANISOTROPIC;
+  });
+  p.order = given.settings.order;
+  p.loop = given.element == Finite_element::LOOP;
+  p.factorised = given.settings.solver == Linear_solver::CHOLESKY;
+  // a fixed surface's constant system is factorised once by AUTOMATIC where it may (Solver_choice.h)
+  p.constant_factorised = given.settings.solver == Linear_solver::AUTOMATIC &&
+                          given.mode == Attribute_mode::ATTRIBUTES_ONLY &&
+                          vertices <= std::size_t(automatic_cholesky_limit);
+  return p;
+}
+
+inline void report_memory(Fairing_report& r, double expected, const Available_memory& a)
+{
+  r.memory_in_use = a.in_use;
+  r.predicted_memory = expected;
+  r.available_memory = a.bytes;
+  r.memory_limited_by = a.source;
+}
+
+/// The report of a run refused for its memory (`why`): nothing was done
+inline Fairing_report memory_refused(const std::string& why, double need, const Available_memory& available,
+                                     std::size_t vertices, std::size_t faces, double seconds)
+{
+  Fairing_report refused;
+  refused.status = Fairing_status::INSUFFICIENT_MEMORY;
+  refused.stop_reason = Stop_reason::FAILURE;
+  refused.message = why;
+  refused.vertices = vertices;
+  refused.faces = faces;
+  report_memory(refused, need, available);
+  refused.input_seconds = refused.total_seconds = seconds;
+  return refused;
+}
 
 /// The run of anisotropic_fairing() on `options` with `tensor` (a package tensor chosen at run time, or a
 /// tensor type of the caller's own).
@@ -72,12 +123,26 @@ Fairing_report fair_with_options(TriangleMesh& tm, VertexPointMap vpm, Attribute
 
   const Fairing_input in{ im.ghost_layer(), P, A, held, bool(hooks.control_point) || bool(hooks.attribute_control) };
   const double input_seconds = total.time();
+  Memory_plan plan = memory_plan(given, tensor, im.number_of_vertices(), A.cols());
+  // what an automatic factorisation may take beside the run (Solver_choice.h)
+  given.settings.factor_budget = available_memory(given.memory_limit).bytes - predicted_memory(plan);
   Fairing_core<Tensor> core(in, given, tensor, hooks.callback);
   im.release_ghost_layer();   // the run has its own numbering's, and its own copy of the points
   P.resize(0, 0);
+  core.prepare();
+  // what the run will take, against what the process may: refused before its set-up, where its cost begins
+  plan.at_noise_level = given.settings.stopping.noise_discrepancy > 0 && mode != Attribute_mode::ATTRIBUTES_ONLY &&
+                        core.input_at_noise_level();
+  const double need = predicted_memory(plan);
+  const Available_memory available = available_memory(given.memory_limit);
+  const double expected = expected_memory(plan, available.bytes);
+  const std::string refusal = memory_refusal(need, available);
+  if(!refusal.empty())
+    return memory_refused(refusal, need, available, im.number_of_vertices(), im.number_of_faces(), total.time());
   Fairing_result result = core.run();
   Fairing_report& report = result.report;
   report.input_seconds = input_seconds;
+  report_memory(report, expected, available);
   if(mode == Attribute_mode::COUPLED && A.cols() > 0 && report.status == Fairing_status::DEGENERATE_METRIC)
     report.message += "; in the coupled mode the surface is that of the points and the attributes times the "
                       "attribute weight (" + Mesh::to_text(weight) + "): a weight that makes the attributes dwarf or "

@@ -15,6 +15,7 @@
 #include <CGAL/Anisotropic_fairing/named_function_parameters.h>
 #include <CGAL/Anisotropic_fairing/internal/element/Quadrature_parameters.h>
 #include <CGAL/Anisotropic_fairing/internal/flow/Stepper_settings.h>
+#include <CGAL/Anisotropic_fairing/internal/flow/Tensor_hooks.h>
 #include <CGAL/Anisotropic_fairing/internal/solve/User_direct_solver.h>
 
 #include <cmath>
@@ -41,7 +42,16 @@ struct Fairing_parameters
   double attribute_weight = 1;  // of the attribute columns in the coupled mode
   Boundary_handling boundary = Boundary_handling::HOLD_BOUNDARY_CURVE;
   Quadrature_spec quadrature;   // checked for the Loop element only (the linear element has none)
+  std::optional<double> memory_limit;   // bytes the run may take (empty: what the process may; infinity: no check)
 };
+
+/// The default run: it compares the anisotropic, the isotropic and the uniform fourth-order flow (Fairing_core.h)
+template <typename Tensor>
+bool compares_flows(const Fairing_parameters& given, const Tensor& tensor)
+{
+  return given.automatic && is_automatic_tensor(tensor) && given.mode != Attribute_mode::ATTRIBUTES_ONLY &&
+         given.settings.stopping.noise_discrepancy > 0;
+}
 
 /// sparse_linear_solver: the user's factorisation, or none given
 inline Direct_solver_factory direct_solver_of(CGAL::internal_np::Param_not_found) { return Direct_solver_factory(); }
@@ -208,6 +218,8 @@ inline Fairing_parameters resolve_fairing_parameters(const Fairing_options& o, b
   p.quadrature.degree = o.quadrature_degree;
   p.quadrature.tiling_depth = o.quadrature_tiling_depth;
   if(p.element == Finite_element::LOOP) check_quadrature_spec(p.quadrature);
+  check_parameter(!o.memory_limit || *o.memory_limit >= 0, "memory_limit must be >= 0 bytes (infinity: no check)");
+  p.memory_limit = o.memory_limit;
   return p;
 }
 

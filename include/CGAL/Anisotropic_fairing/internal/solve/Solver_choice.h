@@ -14,6 +14,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstddef>
+#include <limits>
 #include <memory>
 
 namespace CGAL {
@@ -31,15 +32,23 @@ class Solver_choice
 public:
   /// `constant_matrix`: every solve has the same matrix (a fixed surface): AUTOMATIC factorises it once
   /// when it may, else iterates, without timing trials.
-  /// `direct`: makes the factorising solver (empty: Sparse_cholesky).
+  /// `direct`: makes the factorising solver (empty: Sparse_cholesky). `factor_budget`: bytes a factorisation
+  /// may take; AUTOMATIC iterates where the factor (factor_memory()) would need more.
   Solver_choice(Linear_solver requested, std::size_t free_vertices, bool constant_matrix = false,
-                Direct_solver_factory direct = Direct_solver_factory())
+                Direct_solver_factory direct = Direct_solver_factory(),
+                double factor_budget = std::numeric_limits<double>::infinity())
     : automatic_(requested == Linear_solver::AUTOMATIC && !constant_matrix),
       may_factorise_(requested == Linear_solver::CHOLESKY ||
-                     (requested == Linear_solver::AUTOMATIC && free_vertices <= std::size_t(automatic_cholesky_limit))),
+                     (requested == Linear_solver::AUTOMATIC && free_vertices <= std::size_t(automatic_cholesky_limit) &&
+                      factor_memory(free_vertices) <= factor_budget)),
       mode_(requested == Linear_solver::CHOLESKY || (constant_matrix && may_factorise_) ? FACTORISE : ITERATE),
       constant_(constant_matrix), counted_(!direct), make_direct_(std::move(direct))
   {}
+
+  /// The bytes a factorisation of a system of `n` rows takes (its factor, and the matrix formed for it): its
+  /// fill under the minimum-degree ordering grows as n^1.2 (Eigen's SimplicialLDLT on the 3-ring patterns of
+  /// Loop-refined meshes of 18,000 and 72,000 vertices: 64 and 327 MB above an iterated step; bench/memory_estimate.py)
+  static double factor_memory(std::size_t n) { return 475.0 * std::pow(double(n), 1.2); }
 
   bool factorise_now() const { return mode_ != ITERATE; }
   /// The next solve is of a step of `f` times the time step. One shorter than a step whose iterations
