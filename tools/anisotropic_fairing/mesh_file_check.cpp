@@ -17,10 +17,10 @@ std::string file_contents(const std::string& path)
 {
   errno = 0;
   std::ifstream in(path, std::ios::binary);
-  if(!in) throw File_problem("cannot open " + path + (errno ? ": " + std::string(std::strerror(errno)) : ""));
+  if(!in) throw File_problem("cannot open " + path + system_reason(errno));
   std::ostringstream s;
   s << in.rdbuf();
-  if(in.bad()) throw File_problem(path + (errno ? ": " + std::string(std::strerror(errno)) : ": a read failed"));
+  if(in.bad()) throw File_problem(path + (errno ? system_reason(errno) : ": a read failed"));
   return s.str();
 }
 

@@ -299,7 +299,7 @@ void check_openable(const std::string& path, Input_info& info)
   if(!fs::exists(path, ec)) fail("read_error", "cannot open " + path + ": no such file");
   if(!fs::is_regular_file(path, ec)) fail("read_error", "cannot open " + path + ": not a regular file");
   std::ifstream probe(path);
-  if(!probe) fail("read_error", "cannot open " + path + ": " + std::strerror(errno));
+  if(!probe) fail("read_error", "cannot open " + path + system_reason(errno ? errno : EIO));
 }
 
 // The file read and checked before CGAL's readers see it (mesh_file_check.h).

@@ -5,6 +5,7 @@
 
 #include <cstddef>
 #include <cstdio>
+#include <cstring>
 #include <string>
 #include <string_view>
 
@@ -64,6 +65,13 @@ inline std::string one_line(std::string s)
   s = printable(s);
   while(!s.empty() && s.back() == ' ') s.pop_back();
   return s;
+}
+
+/// ": " and the system's reason for the error number `err` (strerror: "No space left on device", "Permission
+/// denied", ...), or nothing when there is none (0)
+inline std::string system_reason(int err)
+{
+  return err != 0 ? ": " + std::string(std::strerror(err)) : std::string();
 }
 
 } // namespace af_tool

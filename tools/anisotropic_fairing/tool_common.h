@@ -52,13 +52,6 @@ struct Failure
   throw Failure{ 1, status, message };
 }
 
-/// ": " and the system's reason for the error number `err` (strerror: "No space left on device", "Permission
-/// denied", ...), or nothing when there is none (0)
-inline std::string system_reason(int err)
-{
-  return err != 0 ? ": " + std::string(std::strerror(err)) : std::string();
-}
-
 // seconds since the program started (the report's wall_seconds)
 double elapsed_seconds();
 
