@@ -1,103 +1,82 @@
 // Copyright (c) 2026 Anisotropic_fairing developers.
 // SPDX-License-Identifier: GPL-3.0-or-later
 //
-// The library's flow loop (internal/flow/Flow_loop.h) on distributed matrices: this file is its operator
-// (internal/flow/Flow_operator.h says what one provides). M and L(D) come from Distributed_operator, each step
-// is solved by PETSc, and every measure the loop decides on (motion, finiteness, folds, statistics) is reduced
-// over the processes, so every process takes the same decision. What needs row-wise measures of the whole
-// mesh (the noise level, a deviation bound, a local time scale, the fourth-order flow, a fixed surface) is
-// refused: by the program before a run starts (Run_request.h), and by unsupported() here.
+// The flow operator (internal/flow/Flow_operator.h says what one provides) of every run the library makes on
+// a Distributed_patch_cache: the library's flow loop, and the whole call around it (the default run's
+// candidates, probes and comparison), run on every process as they run on one. M and L(D) come from
+// Distributed_operator, each step is solved by PETSc (Distributed_solver: the second- and fourth-order
+// steps, the local time scale), and every process holds every row (Whole_rows), so that the measures are the
+// library's own on the whole mesh (limit points, folds, the noise level) and every process decides alike.
 
 #ifndef AF_DISTRIBUTED_DISTRIBUTED_FLOW_H
 #define AF_DISTRIBUTED_DISTRIBUTED_FLOW_H
 
 #include "Collective_failure.h"
+#include "Distributed_cache.h"
 #include "Distributed_operator.h"
 #include "Distributed_solver.h"
-#include "Surface_folds.h"
 
-#include <CGAL/Anisotropic_fairing/Fairing_report.h>
-#include <CGAL/Anisotropic_fairing/internal/flow/Flow_loop.h>
 #include <CGAL/Anisotropic_fairing/internal/flow/Flow_operator.h>
+#include <CGAL/Anisotropic_fairing/internal/flow/Local_time_scale.h>
 #include <CGAL/Anisotropic_fairing/internal/flow/Normal_motion.h>
+#include <CGAL/Anisotropic_fairing/internal/flow/Output_fidelity.h>
+#include <CGAL/Anisotropic_fairing/internal/flow/Step_safety.h>
 #include <CGAL/Anisotropic_fairing/internal/flow/Step_units.h>
 #include <CGAL/Anisotropic_fairing/internal/flow/Stepper_settings.h>
+#include <CGAL/Anisotropic_fairing/internal/loop/Vertex_limit_masks.h>
 
 #include <CGAL/Real_timer.h>
 
 #include <algorithm>
-#include <functional>
+#include <memory>
 #include <string>
 #include <vector>
 
 namespace af_distributed {
 
-namespace AF = CGAL::Anisotropic_fairing;
-
-/// What a run reads of the mesh, the same on every process.
-struct Flow_input
-{
-  const AFI::Ghost_layer& layer;
-  const AFI::Mesh_components& components;
-  const std::vector<double>& component_edge;
-  double mean_edge;
-  const std::vector<bool>& constrained;   // per real vertex
-  AFI::Assembly_context numbering;        // the caller's numbering and border (Assembly_context's first three)
-  int metric_columns;                     // of the surface: 3, or all (coupled attributes)
-  bool normal_motion;                     // each step's displacement loses its tangential part
-};
-
-/// Per-phase times and counts of a run (the program's JSON report).
-struct Flow_timing
-{
-  double assemble_seconds = 0, solve_seconds = 0, judge_seconds = 0;
-  std::size_t iterations = 0, solves = 0;
-};
-
 class Distributed_flow_operator
 {
 public:
-  Distributed_flow_operator(MPI_Comm comm, const Distributed_layout& d, Ghosted_rows& rows, Distributed_operator& op,
-                            const Flow_input& in, const AFI::Stepper_settings& s)
-    : comm_(comm), d_(d), rows_(rows), op_(op), in_(in),
-      mesh_{ in.layer, in.components, in.component_edge, in.mean_edge }, filter_(in.layer),
-      solver_(comm, d, in.constrained, "", s.solver_tolerance, s.solver_maximum_iterations),
-      context_(AFI::flow_context(in.numbering, mesh_, curvature_bound_))
+  /// As Serial_flow_operator is made: `constrained[i]` holds vertex i fixed.
+  Distributed_flow_operator(const Distributed_patch_cache& cache, std::size_t, const std::vector<bool>& constrained,
+                            const AFI::Flow_mesh& mesh, const AFI::Assembly_context& numbering)
+    : state_(cache.state()), comm_(state_.comm), d_(*state_.layout), rows_(comm_, d_, state_.volume), mesh_(mesh),
+      constrained_(constrained), op_(comm_, cache, d_, rows_, constrained),
+      context_(AFI::flow_context(numbering, mesh_, curvature_bound_))
   {
     op_.assembler().set_context(context_);
-    for(std::size_t k = 0; k < d.owned_vertices.size(); ++k)
-      if(!in.constrained[std::size_t(d.owned_vertices[k])])
-      {
-        free_.push_back(k);
-        free_rows_.push_back(d.owned_vertices[k]);
-      }
+    for(std::size_t k = 0; k < d_.owned_vertices.size(); ++k)
+      if(!constrained[std::size_t(d_.owned_vertices[k])]) free_.push_back(k);
+    for(std::size_t i = 0; i < d_.vertex_owner.size(); ++i)
+      if(!constrained[i]) all_free_rows_.push_back(int(i));
+    state_.off_process_columns = op_.off_process_columns();
   }
+  ~Distributed_flow_operator() { state_.prefilter_iterations += op_.prefilter_iterations(); }
 
-  const Flow_timing& timing() const { return timing_; }
+  /// Each step's displacement of the surface's columns then loses its tangential part (null: kept).
+  void set_tangential_filter(const AFI::Tangential_motion_filter* f) { filter_ = f; }
 
   const AFI::Flow_mesh& mesh() const { return mesh_; }
-  std::string unsupported(const AFI::Stepper_settings& s, bool fixed) const
+  std::string unsupported(const AFI::Stepper_settings&, bool) const { return std::string(); }
+  std::size_t free_count() const { return all_free_rows_.size(); }
+  void begin_run(const AFI::Stepper_settings& s, bool)
   {
-    std::string what = fixed ? "a fixed surface (the attributes-only mode)" : s.noise ? "the noise criterion"
-                     : s.maximum_deviation > 0 || s.attribute_maximum_deviation > 0 ? "a deviation bound"
-                     : s.local_time_scale ? "a local time scale" : s.order != 2 ? "the fourth-order flow" : "";
-    return what.empty() ? what : what + " is not supported by the distributed program";
+    settings_ = &s;
+    if(!solver_)
+      solver_.reset(
+        new Distributed_solver(comm_, d_, constrained_, "", s.solver_tolerance, s.solver_maximum_iterations));
   }
-  std::size_t free_count() const
-  {
-    unsigned long long mine = free_.size(), all = 0;
-    MPI_Allreduce(&mine, &all, 1, MPI_UNSIGNED_LONG_LONG, MPI_SUM, comm_);
-    return std::size_t(all);
-  }
-  void begin_run(const AFI::Stepper_settings& s, bool) { settings_ = &s; }
 
   // --- the units
   AFI::Assembly_statistics assemble_isotropic(const Control_matrix& X, int columns, bool)
   {
-    return assemble(X, columns, AF::Isotropic_diffusion_tensor(), false);
+    return assemble(X, columns, CGAL::Anisotropic_fairing::Isotropic_diffusion_tensor(), false);
   }
   void discard_isotropic() {}
-  void set_prefilter(std::vector<double> eps, const AFI::Stepper_settings&) { op_.set_prefilter(std::move(eps)); }
+  void set_prefilter(std::vector<double> eps, const AFI::Stepper_settings& s)
+  {
+    op_.set_prefilter(std::move(eps), s.solver_tolerance / 100, s.solver_maximum_iterations);
+  }
   void set_units(const AFI::Step_units& u, const AFI::Assembly_statistics&, bool component_scale)
   {
     units_ = u;
@@ -109,8 +88,8 @@ public:
   /// which process's part holds the degenerate face named by `a` (the caller's numbering), when there are several
   std::string where_face(const AFI::Assembly_statistics& a) const
   {
-    if(d_.size == 1 || !a.degenerate || !in_.numbering.original_face) return std::string();
-    const std::vector<std::size_t>& original = *in_.numbering.original_face;
+    if(d_.size == 1 || !a.degenerate || !context_.original_face) return std::string();
+    const std::vector<std::size_t>& original = *context_.original_face;
     for(std::size_t f = 0; f < original.size(); ++f)
       if(original[f] == a.degenerate_face) return " (in the part of process " + std::to_string(d_.face_owner[f]) + ")";
     return std::string();
@@ -125,8 +104,8 @@ public:
     error_.clear();
     AFI::Assembly_statistics a;
     try { a = op_.assemble(X, columns, tensor, with_matrices); }
-    catch(const std::exception& e) { error_ = e.what(); }
-    (stepping_ ? timing_.judge_seconds : timing_.assemble_seconds) += clock.time();
+    catch(const std::runtime_error& e) { error_ = e.what(); }
+    (stepping_ ? state_.timing.judge_seconds : state_.timing.assemble_seconds) += clock.time();
     return a;
   }
   const std::string& error() const { return error_; }
@@ -134,25 +113,39 @@ public:
   template <typename Tensor>
   void restore(const Control_matrix&, int, const Tensor&) { op_.restore(); }
   const Control_matrix* prefiltered() const { return op_.prefiltered(); }
-  double dirichlet_energy(const Control_matrix& Z) { return solver_.quadratic_form(op_.L(), Z); }
+  void prefilter(const Control_matrix& X, int columns)
+  {
+    error_.clear();
+    try { op_.prefilter(X, columns); }
+    catch(const std::runtime_error& e) { error_ = e.what(); }
+  }
+  double dirichlet_energy(const Control_matrix& Z) { return solver_->quadratic_form(op_.L(), Z); }
 
-  // --- the step (the solver was made with the run's settings)
-  void start_solver(const AFI::Stepper_settings&, Eigen::Index, bool, const AFI::Output_fidelity*,
-                    const Control_matrix*, const Control_matrix&)
-  {}
+  // --- the step: the local time scale read at the run's start Z0, as the library reads it
+  void start_solver(const AFI::Stepper_settings& s, Eigen::Index, bool fixed, const AFI::Output_fidelity* fidelity,
+                    const Control_matrix* anchor, const Control_matrix& Z0)
+  {
+    solver_->set_fidelity(fidelity, anchor, constrained_);
+    std::vector<double> weight;
+    if(s.local_time_scale && !fixed)
+      weight = AFI::mass_weights(AFI::local_time_scale(*mesh_.layer.topology, mesh_.layer.real_faces, Z0,
+                                                       mesh_.components, mesh_.component_edge));
+    solver_->set_step_kind(std::move(weight), s.order == 4);
+  }
   AFI::Solve_statistics solve(double factor, const Control_matrix& Z, const Control_matrix& Z0,
-                              const std::vector<double>&, bool& direct)
+                              const std::vector<double>& weights, bool& direct)
   {
     stepping_ = true;
     CGAL::Real_timer clock;
     clock.start();
     std::vector<double> t(units_.tau);
     for(double& x : t) x *= factor;
-    const Distributed_solve sol = solver_.solve(op_.M(), op_.L(), t, units_.omega, Z, Z0, int(Z.cols()), dZ_);
+    const Distributed_solve sol =
+      solver_->solve(op_.M(), op_.L(), t, units_.omega, Z, Z0, int(Z.cols()), dZ_, weights);
     solve_seconds_ = clock.time();
-    timing_.solve_seconds += solve_seconds_;
-    timing_.iterations += std::size_t(sol.iterations);
-    ++timing_.solves;
+    state_.timing.solve_seconds += solve_seconds_;
+    state_.timing.iterations += std::size_t(sol.iterations);
+    ++state_.timing.solves;
     direct = false;
     AFI::Solve_statistics s;
     s.ok = sol.ok;
@@ -169,7 +162,7 @@ public:
   }
   double solve_seconds() const { return solve_seconds_; }
 
-  // --- the motion: dZ's rows are the owned vertices; the overlap refreshed after every move
+  // --- the motion: dZ's rows are the owned vertices; every process's rows received after every move
   AFI::Step_motion move(Control_matrix& Zc, const Control_matrix& dZ, const Control_matrix& Z0, int columns,
                         const std::vector<double>& row_unit)
   {
@@ -203,80 +196,57 @@ public:
     for(std::size_t k : free_) X.row(d_.owned_vertices[k]) += dZ.row(Eigen::Index(k));
     rows_.refresh(X);
   }
-  bool moves_normally() const { return in_.normal_motion; }
+  bool moves_normally() const { return filter_ != nullptr; }
   void normal_part(const Control_matrix& surface, int columns, Control_matrix& dZ) const
   {
-    if(in_.normal_motion) filter_.remove(surface, columns, d_.owned_vertices, dZ);
+    if(filter_) filter_->remove(surface, columns, d_.owned_vertices, dZ);
   }
 
-  // --- the measures, of every process's rows
-  void measured_positions(const Control_matrix& X, Control_matrix& Y)
+  // --- the measures: the library's own, on the whole rows every process holds alike
+  void measured_positions(const Control_matrix& X, Control_matrix& Y) const
   {
-    if(settings_->measure_limit_surface) limit_points(X, Y);
+    if(settings_->measure_limit_surface) AFI::limit_points(mesh_.layer, X, Y);
     else Y = X;
   }
-  void limit_points(const Control_matrix& X, Control_matrix& Y)
-  {
-    distributed_limit_points(in_.layer, d_, rows_, X, Y);
-  }
-  /// the folds of the mesh of X's limit points
+  void limit_points(const Control_matrix& X, Control_matrix& Y) const { AFI::limit_points(mesh_.layer, X, Y); }
   void count_folds(const Control_matrix& X, AFI::Surface_soundness& s)
   {
     CGAL::Real_timer clock;
     clock.start();
-    limit_points(X, Y_);
-    count_distributed_folds(comm_, in_.layer, d_, in_.components.of_face, in_.component_edge, Y_, s);
-    if(stepping_) timing_.judge_seconds += clock.time();
+    AFI::count_folds(mesh_.layer, AFI::Ghosted_patch_cache::has_second_derivatives, mesh_.components.of_face,
+                     mesh_.component_edge, X, s);
+    if(stepping_) state_.timing.judge_seconds += clock.time();
   }
-  /// the folds of the mesh of X itself (the input's control mesh)
-  void input_folds(const Control_matrix& X, AFI::Surface_soundness& s)
+  void input_folds(const Control_matrix& X, AFI::Surface_soundness& s) const
   {
-    count_distributed_folds(comm_, in_.layer, d_, in_.components.of_face, in_.component_edge, X, s);
+    s.folded_edges = AFI::count_folded_edges(*mesh_.layer.topology, mesh_.layer.real_faces, X, mesh_.components.of_face,
+                                             mesh_.component_edge, AFI::turn_120, nullptr, &s.folded_edge_list);
   }
-  bool all_finite(const Control_matrix& X) const { return finite_everywhere(comm_, d_, X); }
-  /// this process's free rows
-  const std::vector<int>& free_rows() const { return free_rows_; }
+  bool all_finite(const Control_matrix& X) const { return X.allFinite(); }
+  /// the free rows of the whole mesh: a bound's weights are decided on every row, alike on every process
+  const std::vector<int>& free_rows() const { return all_free_rows_; }
 
 private:
+  Distributed_state& state_;
   MPI_Comm comm_;
   const Distributed_layout& d_;
-  Ghosted_rows& rows_;
-  Distributed_operator& op_;
-  const Flow_input& in_;
+  Whole_rows rows_;
   const AFI::Flow_mesh mesh_;
-  const AFI::Tangential_motion_filter filter_;
-  Distributed_solver solver_;
+  const std::vector<bool>& constrained_;
+  Distributed_operator op_;
   std::vector<double> curvature_bound_;
   AFI::Assembly_context context_;
+  std::unique_ptr<Distributed_solver> solver_;
+  const AFI::Tangential_motion_filter* filter_ = nullptr;
   std::vector<std::size_t> free_;   // positions in d_.owned_vertices of the free ones
-  std::vector<int> free_rows_;      // ... and their rows
+  std::vector<int> all_free_rows_;  // of the whole mesh
   const AFI::Stepper_settings* settings_ = nullptr;
   AFI::Step_units units_;
-  Control_matrix dZ_, Y_;
+  Control_matrix dZ_;
   std::string error_;
   bool stepping_ = false;   // the first step was solved: assemblies from now on judge candidates
   double solve_seconds_ = 0;
-  Flow_timing timing_;
 };
-
-/// The run from Z (owned and overlap rows) on this process's part; on success Z's owned and overlap rows hold
-/// the result. `progress` is told of every accepted step; `timing` gets the run's.
-template <typename Tensor>
-AF::Fairing_report run_distributed_flow(MPI_Comm comm, const Distributed_layout& d, Ghosted_rows& rows,
-                                        Distributed_operator& op, const Flow_input& in, const AFI::Stepper_settings& s,
-                                        const Tensor& tensor, Control_matrix& Z,
-                                        const std::function<void(const AF::Fairing_step&)>& progress,
-                                        Flow_timing& timing)
-{
-  Distributed_flow_operator flow(comm, d, rows, op, in, s);
-  const auto told = [&](const AF::Fairing_step& st) { if(progress) progress(st); return true; };
-  AF::Fairing_report report = AFI::Flow_loop<Distributed_flow_operator, Tensor, decltype(told)>(
-                                flow, Z, Z, in.metric_columns, tensor, s, told, false)
-                                .run()
-                                .report;
-  timing = flow.timing();
-  return report;
-}
 
 } // namespace af_distributed
 

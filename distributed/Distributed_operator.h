@@ -6,7 +6,7 @@
 // MPIAIJ matrices (ADD_VALUES: the entries of rows owned elsewhere travel to their owners at
 // MatAssemblyEnd), preallocated once from the processes' patterns (MATPREALLOCATOR). The statistics of the
 // surface are sums over the faces, one MPI_Allreduce. For a tensor that reads the prefiltered surface
-// M_eps, that surface first: the isotropic matrices, one prefilter solve, the overlap's rows refreshed.
+// M_eps, that surface first: the isotropic matrices, one prefilter solve, the other processes' rows received.
 // The accepted surface's matrices are kept aside while a candidate is judged (save, restore).
 
 #ifndef AF_DISTRIBUTED_DISTRIBUTED_OPERATOR_H
@@ -16,8 +16,7 @@
 #include "Distributed_layout.h"
 #include "Distributed_solver.h"
 #include "Face_partition.h"
-#include "Ghosted_rows.h"
-#include "Surface_folds.h"
+#include "Whole_rows.h"
 
 #include <CGAL/Anisotropic_fairing/Isotropic_diffusion_tensor.h>
 #include <CGAL/Anisotropic_fairing/internal/assembly/Fem_assembly.h>
@@ -26,6 +25,7 @@
 #include <petscmat.h>
 
 #include <limits>
+#include <memory>
 #include <string>
 #include <utility>
 #include <vector>
@@ -33,6 +33,23 @@
 namespace af_distributed {
 
 namespace AFI = CGAL::Anisotropic_fairing::internal;
+
+/// Every process's entries of `mine` (a few folds: numbers of the whole mesh), in the order of the
+/// processes, on every process.
+template <typename T>
+std::vector<T> gather_everywhere(MPI_Comm comm, const std::vector<T>& mine)
+{
+  int processes = 1;
+  MPI_Comm_size(comm, &processes);
+  const int bytes = int(mine.size() * sizeof(T));
+  const std::size_t n = std::size_t(processes);
+  std::vector<int> counts(n, 0), offsets(n, 0);
+  MPI_Allgather(&bytes, 1, MPI_INT, counts.data(), 1, MPI_INT, comm);
+  for(std::size_t p = 1; p < counts.size(); ++p) offsets[p] = offsets[p - 1] + counts[p - 1];
+  std::vector<T> all(std::size_t(offsets.back() + counts.back()) / sizeof(T));
+  MPI_Allgatherv(mine.data(), bytes, MPI_BYTE, all.data(), counts.data(), offsets.data(), MPI_BYTE, comm);
+  return all;
+}
 
 /// The statistics of every process's faces added up, the same on every process.
 inline AFI::Assembly_statistics reduce_statistics(MPI_Comm comm, const AFI::Assembly_statistics& a)
@@ -60,10 +77,8 @@ class Distributed_operator
 {
 public:
   Distributed_operator(MPI_Comm comm, const AFI::Ghosted_patch_cache& cache, const Distributed_layout& d,
-                       Ghosted_rows& rows, const std::vector<bool>& held, double prefilter_tolerance,
-                       int maximum_iterations)
-    : comm_(comm), d_(d), rows_(rows), assembler_(cache, d.vertex_owner.size(), true, &d.owned_faces),
-      prefilter_solver_(comm, d, held, "prefilter_", prefilter_tolerance, maximum_iterations)
+                       Whole_rows& rows, const std::vector<bool>& held)
+    : comm_(comm), d_(d), rows_(rows), held_(held), assembler_(cache, d.vertex_owner.size(), true, &d.owned_faces)
   {
     const auto& p = assembler_.pattern();
     for(Eigen::Index k = 0; k < p.nonZeros(); ++k)
@@ -80,12 +95,21 @@ public:
   AFI::Fem_assembler<AFI::Ghosted_patch_cache>& assembler() { return assembler_; }
   Mat M() const { return M_; }
   Mat L() const { return L_; }
-  /// the prefilter time per row (all 0: none)
-  void set_prefilter(std::vector<double> eps)
+  /// the prefilter time per row (all 0: none), its solver's tolerance and most iterations (PETSc's options
+  /// with the prefix -prefilter_ override them)
+  void set_prefilter(std::vector<double> eps, double tolerance, int maximum_iterations)
   {
     eps_ = std::move(eps);
     prefilter_ = false;
     for(double e : eps_) prefilter_ = prefilter_ || e > 0;
+    if(prefilter_ && !prefilter_solver_)
+      prefilter_solver_.reset(new Distributed_solver(comm_, d_, held_, "prefilter_", tolerance, maximum_iterations));
+  }
+  /// M_eps at X alone (prefiltered()); throws as assemble() does
+  void prefilter(const Control_matrix& X, int metric_columns)
+  {
+    prefiltered_valid_ = false;
+    if(prefilter_) make_prefiltered(X, metric_columns);
   }
   /// M_eps of the last assembly (owned and overlap rows), or null
   const Control_matrix* prefiltered() const { return prefiltered_valid_ ? &prefiltered_X_ : nullptr; }
@@ -185,7 +209,7 @@ private:
     insert(A, values);
   }
 
-  // M_eps = X + dX, (M + eps L) dX = -eps L X on the free rows (isotropic M, L at X), the overlap refreshed
+  // M_eps = X + dX, (M + eps L) dX = -eps L X on the free rows (isotropic M, L at X), every row received
   void make_prefiltered(const Control_matrix& X, int metric_columns)
   {
     AFI::Value_array m, l;
@@ -194,7 +218,7 @@ private:
     fill(Li_, l);
     const std::vector<double> no_fidelity(eps_.size(), 0.0);
     const Distributed_solve s =
-      prefilter_solver_.solve(Mi_, Li_, eps_, no_fidelity, X, X, metric_columns, prefilter_dX_);
+      prefilter_solver_->solve(Mi_, Li_, eps_, no_fidelity, X, X, metric_columns, prefilter_dX_);
     prefilter_iterations_ += std::size_t(s.iterations);
     MatDestroy(&Mi_);   // needed again only at the next assembly
     MatDestroy(&Li_);
@@ -212,9 +236,10 @@ private:
 
   MPI_Comm comm_;
   const Distributed_layout& d_;
-  Ghosted_rows& rows_;
+  Whole_rows& rows_;
+  const std::vector<bool>& held_;
   AFI::Fem_assembler<AFI::Ghosted_patch_cache> assembler_;
-  Distributed_solver prefilter_solver_;
+  std::unique_ptr<Distributed_solver> prefilter_solver_;
   std::vector<PetscInt> petsc_inner_;   // the pattern's row indices in PETSc's numbering
   Mat pattern_ = nullptr, M_ = nullptr, L_ = nullptr, saved_M_ = nullptr, saved_L_ = nullptr, Mi_ = nullptr,
       Li_ = nullptr;

@@ -4,34 +4,43 @@
 #include "Distributed_run.h"
 
 #include "Collective_failure.h"
-#include "Distributed_layout.h"
-#include "Distributed_operator.h"
-#include "Face_partition.h"
-#include "Ghosted_rows.h"
-#include "Replicated_setup.h"
-#include "Surface_folds.h"
+#include "Distributed_cache.h"
+#include "Distributed_flow.h"
 #include "attribute_columns.h"
+#include "held_vertices.h"
 #include "mesh_io.h"
+#include "written_normals_and_curvature.h"
 
 #include <CGAL/Anisotropic_fairing/internal/run/Caller_maps.h>
+#include <CGAL/Anisotropic_fairing/internal/run/Fairing_driver.h>
+#include <CGAL/Anisotropic_fairing/named_function_parameters.h>
 
 #include <petscksp.h>
 #include <sys/resource.h>
 
+#include <algorithm>
 #include <cstdio>
 #include <filesystem>
-#include <variant>
+#include <limits>
 
 namespace af_distributed {
 
 namespace {
 
+namespace AF = CGAL::Anisotropic_fairing;
+
+typedef std::vector<std::vector<double>> Vertex_vectors;
+
+// the mesh and what the run reads and writes besides, as anisotropic_fairing has them (fairing_run.cpp)
 struct Input
 {
   af_tool::Mesh mesh;
   af_tool::Input_info info;
   std::vector<af_tool::Attribute_column> columns;
-  std::vector<std::vector<double>> values;   // per vertex, the attribute columns faired (empty: none)
+  Vertex_vectors values, controls;   // per vertex, the attribute columns faired and their control values
+  std::vector<af_tool::Point> control_points;
+  std::vector<unsigned char> held;   // --hold
+  std::size_t held_vertices = 0;
   AF::Attribute_mode mode = AF::Attribute_mode::GEOMETRY_ONLY;
   bool fair_attributes = false;
 };
@@ -55,22 +64,26 @@ void collectively(MPI_Comm comm, const std::string& input, const F& f)
     message = "cannot fair " + input + ": " + without_library_prefix(e.what());
     status = e.kind() == AF::Input_error::INVALID_PARAMETER ? "invalid_parameter" : "input_error";
   }
+  catch(const std::bad_alloc&) { throw; }   // main() ends every process, naming this one
   catch(const std::exception& e) { message = e.what(); }
   agree(comm, message, status);
 }
 
-// the mesh and the attributes faired, as anisotropic_fairing reads them (fairing_run.cpp)
+// as anisotropic_fairing reads them (fairing_run.cpp: read_mesh, plan_attributes, plan_held_vertices)
 void read(const af_tool::Options& o, Input& in)
 {
-  af_tool::read_input(o.input, in.mesh, in.info, false);
+  af_tool::read_input(o.input, in.mesh, in.info, o.repair);
+  af_tool::check_curvature_properties_free(o, in.mesh);
   in.mode = af_tool::effective_mode(o);
   in.columns = af_tool::resolve_attributes(in.mesh, in.info, o.input, o.attributes);
   in.fair_attributes = !in.columns.empty() && in.mode != AF::Attribute_mode::GEOMETRY_ONLY;
   if(in.fair_attributes) af_tool::gather(in.mesh, in.columns, in.values);
-  if(in.info.has_normals)
-    af_tool::fail("input_error",
-                  o.input + " has vertex normals, which the distributed program does not recompute on the faired "
-                            "surface (not supported: remove them, or use anisotropic_fairing)");
+  in.controls = in.values;
+  in.control_points.resize(in.mesh.number_of_vertices());
+  in.held.assign(in.mesh.number_of_vertices(), 0);
+  if(!o.hold.empty()) in.held_vertices = af_tool::read_held_vertices(in.mesh, o.hold, in.held);
+  for(std::size_t i = 0; i < in.info.split.copy_of.size(); ++i)   // a split vertex's copies are held as it is
+    in.held[in.info.split.file_vertices + i] = in.held[in.info.split.copy_of[i]];
 }
 
 double peak_memory_mb()
@@ -90,29 +103,57 @@ std::vector<T> gathered(MPI_Comm comm, T mine, MPI_Datatype type)
   return all;
 }
 
-// the step's line, as anisotropic_fairing prints it
-void print_step(const AF::Fairing_step& s, unsigned int max_steps)
+// the step's lines, as anisotropic_fairing prints them (the default run's runs named)
+std::function<bool(const AF::Fairing_step&)> step_lines(const af_tool::Options& o, bool print)
 {
-  std::fprintf(
-    stderr,
-    "anisotropic_fairing_mpi: step %zu/%u  t=%.6g  area=%.6g  int|H|^2=%.6g  max disp=%.6g  %d its  %.3fs+%.3fs\n",
-    s.step, max_steps, s.time, s.area, s.H_integral, s.max_displacement, s.solver_iterations, s.assemble_seconds,
-    s.solve_seconds);
+  const unsigned int max_steps = o.fairing.maximum_steps();
+  auto last_run = std::make_shared<std::size_t>(0);
+  auto steps = std::make_shared<std::size_t>(0);
+  return [=](const AF::Fairing_step& s) {
+    ++*steps;
+    if(!print) return true;
+    if(s.runs > 1 && s.run != *last_run)
+      std::fprintf(stderr, "anisotropic_fairing_mpi: run %zu of at most %zu: the %s\n", s.run, s.runs,
+                   s.run_name.c_str());
+    *last_run = s.run;
+    std::fprintf(stderr,
+                 "anisotropic_fairing_mpi: step %zu (%zu/%u in all)  t=%.6g  area=%.6g  int|H|^2=%.6g  max disp=%.6g  "
+                 "%d its  %.3fs+%.3fs\n",
+                 s.step, *steps, max_steps, s.time, s.area, s.H_integral, s.max_displacement, s.solver_iterations,
+                 s.assemble_seconds, s.solve_seconds);
+    return true;
+  };
 }
 
-// process 0: the result into the mesh (the library's write-back) and the file, through a temporary file
-void write_result(const af_tool::Options& o, Input& in, const Replicated_setup& setup, const Control_matrix& Y)
+// The library's call of anisotropic_fairing() (internal/run/Fairing_driver.h) with the distributed program's
+// Elements: every process runs it alike, its runs stepping on the processes (Distributed_cache.h). The memory
+// check is the processes' own sum's, not one process's: not made (--memory-limit is refused).
+AF::Fairing_report fair(const af_tool::Options& o, Input& in, Distributed_state& state, bool print)
 {
-  std::vector<bool> kept;
-  const Control_matrix values = setup.written(Y, kept);
-  std::vector<std::vector<double>> faired = in.values;
-  const af_tool::Attribute_vectors attribute_map{ &faired };
-  const AF::Attribute_mode mode = in.fair_attributes ? in.mode : AF::Attribute_mode::GEOMETRY_ONLY;
-  AFI::write_back(setup.im, values, mode, kept, in.mesh.points(), attribute_map);
-  af_tool::merge_copies(in.mesh,
-                        in.info.split); // a split vertex at the mean of its copies, as anisotropic_fairing writes it
-  af_tool::merge_copies(faired, in.info.split);
-  if(in.fair_attributes) af_tool::scatter(in.mesh, in.columns, faired);
+  AF::Fairing_options options = o.fairing;
+  options.attribute_mode = in.fair_attributes ? in.mode : AF::Attribute_mode::GEOMETRY_ONLY;
+  options.memory_limit = std::numeric_limits<double>::infinity();
+  const af_tool::Attribute_vectors attribute_map{ &in.values };
+  const auto np = AF::parameters::fairing_options(options)
+                    .control_point_map(CGAL::make_property_map(in.control_points))
+                    .attribute_control_map(af_tool::Attribute_vectors{ &in.controls })
+                    .vertex_is_constrained_map(CGAL::make_property_map(in.held))
+                    .callback(step_lines(o, print));
+  const auto hooks = AFI::caller_hooks<af_tool::Mesh>(attribute_map, np);
+  const Distributed_elements elements{ &state };
+  return AFI::fair_with_options(in.mesh, in.mesh.points(), attribute_map, AFI::read_fairing_options(np), hooks,
+                                options.diffusion_tensor_or_default(), elements);
+}
+
+// process 0: the normals, the curvature and the attributes as anisotropic_fairing writes them
+// (fairing_run.cpp: write_back), then the file, through a temporary file
+void write_result(const af_tool::Options& o, Input& in, af_tool::Run_record& record)
+{
+  const bool fair_geometry = in.mode != AF::Attribute_mode::ATTRIBUTES_ONLY;
+  af_tool::write_normals_and_curvature(o, in.info, fair_geometry, in.control_points, in.mesh, record);
+  af_tool::merge_copies(in.mesh, in.info.split);   // a split vertex at the mean of its copies
+  af_tool::merge_copies(in.values, in.info.split);
+  if(in.fair_attributes) af_tool::scatter(in.mesh, in.columns, in.values);
   af_tool::Format format;
   af_tool::format_of(o.output, format);
   const std::filesystem::path tmp = af_tool::temporary_next_to(o.output);
@@ -143,39 +184,25 @@ void write_result(const af_tool::Options& o, Input& in, const Replicated_setup& 
     std::fprintf(stderr, "anisotropic_fairing_mpi: warning: %s\n", af_tool::one_line(w).c_str());
 }
 
-// the flow with one tensor type, on this process's part
-template <typename Tensor>
-AF::Fairing_report fair(MPI_Comm comm, const af_tool::Options& o, const Replicated_setup& setup,
-                        const Distributed_layout& d, Ghosted_rows& rows, Distributed_operator& op, const Tensor& tensor,
-                        Control_matrix& X, Flow_timing& timing)
+void summarise_parts(MPI_Comm comm, const Distributed_state& state, Run_summary& summary)
 {
-  const AF::Attribute_mode mode = setup.given.mode;
-  AFI::Assembly_context numbering;
-  numbering.original_vertex = &setup.ordering.old_of_new_vertex;
-  numbering.original_face = &setup.ordering.old_of_new_face;
-  numbering.border = &setup.border;
-  const Flow_input in{ setup.layer(),
-                       setup.components,
-                       setup.component_edge,
-                       setup.mean_edge,
-                       setup.constrained,
-                       numbering,
-                       mode == AF::Attribute_mode::COUPLED ? int(X.cols()) : 3,
-                       AFI::wants_normal_motion(tensor) };
-  AFI::Stepper_settings s = setup.given.settings;
-  s.limit_written = s.measure_limit_surface = setup.given.output == AF::Output_positions::LIMIT_SURFACE;
-  s.verbose = false;   // the program prints its own line per step, on process 0
-  if(s.stopping.noise_discrepancy > 0)
-    throw std::runtime_error("the noise criterion is not supported by the distributed program");
-  const unsigned int max_steps = unsigned(s.maximum_steps);
-  const bool print = d.rank == 0 && !o.quiet;
-  return run_distributed_flow(comm, d, rows, op, in, s, tensor, X,
-                              [&](const AF::Fairing_step& st) { if(print) print_step(st, max_steps); }, timing);
+  const Distributed_layout* d = state.layout.get();
+  summary.faces_per_process = gathered<std::size_t>(comm, d ? d->owned_faces.size() : 0, MPI_UNSIGNED_LONG);
+  summary.owned_vertices_per_process =
+    gathered<std::size_t>(comm, d ? d->owned_vertices.size() : 0, MPI_UNSIGNED_LONG);
+  summary.ghost_vertices_per_process =
+    gathered<std::size_t>(comm, d ? d->ghost_vertices.size() : 0, MPI_UNSIGNED_LONG);
+  summary.off_process_columns = gathered<std::size_t>(comm, state.off_process_columns, MPI_UNSIGNED_LONG);
+  summary.overlap_doubles_received = gathered<double>(comm, state.volume.doubles_received, MPI_DOUBLE);
+  summary.overlap_refreshes = state.volume.refreshes;
+  summary.timing = state.timing;
+  summary.prefilter_iterations = state.prefilter_iterations;
+  summary.partition_seconds = state.partition_seconds;
 }
 
 } // namespace
 
-// the faces divided, each process's part assembled and stepped, the result gathered and written by process 0
+// the library's call on every process, its runs divided among them; the result written by process 0
 int run_distributed(const af_tool::Options& o, MPI_Comm comm, Run_summary& summary)
 {
   int rank = 0, size = 1;
@@ -187,57 +214,36 @@ int run_distributed(const af_tool::Options& o, MPI_Comm comm, Run_summary& summa
   Input in;
   collectively(comm, o.input, [&] { read(o, in); });
   summary.read_seconds = clock.time();
-  summary.vertices = in.mesh.number_of_vertices();
+  summary.vertices = in.info.split.empty() ? in.mesh.number_of_vertices() : in.info.split.file_vertices;
   summary.faces = in.mesh.number_of_faces();
   clock.reset();
-  std::unique_ptr<Replicated_setup> setup;
-  AF::Fairing_options options = o.fairing;
-  options.attribute_mode = in.fair_attributes ? in.mode : AF::Attribute_mode::GEOMETRY_ONLY;
-  const af_tool::Attribute_vectors attribute_map{ &in.values };
-  collectively(comm, o.input, [&] {
-    setup.reset(new Replicated_setup(in.mesh, options, in.fair_attributes ? &attribute_map : nullptr));
-  });
-  summary.setup_seconds = clock.time();
-  clock.reset();
-  const AFI::Ghost_layer& layer = setup->layer();
-  Distributed_layout d;
-  collectively(comm, o.input, [&] {
-    d = make_distributed_layout(layer, *setup->cache, partition_faces(comm, *layer.topology, layer.real_faces), rank,
-                                size);
-  });
-  summary.faces_per_process = gathered<std::size_t>(comm, d.owned_faces.size(), MPI_UNSIGNED_LONG);
-  summary.owned_vertices_per_process = gathered<std::size_t>(comm, d.owned_vertices.size(), MPI_UNSIGNED_LONG);
-  summary.ghost_vertices_per_process = gathered<std::size_t>(comm, d.ghost_vertices.size(), MPI_UNSIGNED_LONG);
-  Ghosted_rows rows(comm, d);
-  Control_matrix X = setup->X;
-  rows.forget_others(X);
-  const AFI::Stepper_settings& s = setup->given.settings;
-  Distributed_operator op(comm, *setup->cache, d, rows, setup->constrained, s.solver_tolerance / 100,
-                          s.solver_maximum_iterations);
-  summary.off_process_columns = gathered<std::size_t>(comm, op.off_process_columns(), MPI_UNSIGNED_LONG);
-  summary.partition_seconds = clock.time();
-  clock.reset();
-  collectively(comm, o.input, [&] {
-    summary.report = std::visit([&](const auto& t) { return fair(comm, o, *setup, d, rows, op, t, X, summary.timing); },
-                                options.diffusion_tensor_or_default());
-  });
-  summary.flow_seconds = clock.time();
-  summary.prefilter_iterations = op.prefilter_iterations();
+  Distributed_state state;
+  state.comm = comm;
+  state.rank = rank;
+  state.size = size;
+  collectively(comm, o.input, [&] { summary.report = fair(o, in, state, rank == 0 && !o.quiet); });
+  const double call_seconds = clock.time();
+  summarise_parts(comm, state, summary);
+  // the library's set-up includes the partition, made with its element cache
+  summary.setup_seconds = std::max(0.0, summary.report.setup_seconds - summary.partition_seconds);
+  summary.flow_seconds = std::max(0.0, call_seconds - summary.report.setup_seconds);
   const AF::Fairing_report& r = summary.report;
   if(!r.succeeded())
     agree(comm,
           "fairing " + o.input + " failed (" + AF::to_string(r.status) +
             "): " + (r.message.empty() ? std::string("no detail") : r.message),
           AF::to_string(r.status));
+  if(rank == 0 && !o.quiet && !r.choices.empty())
+    std::fprintf(stderr, "anisotropic_fairing_mpi: automatic parameters: %s\n", af_tool::one_line(r.choices).c_str());
   clock.reset();
-  Control_matrix Y;
-  if(setup->given.output == AF::Output_positions::LIMIT_SURFACE) distributed_limit_points(layer, d, rows, X, Y);
-  else Y = X;
-  rows.gather_on_first(Y);
   summary.peak_memory_mb = gathered<double>(comm, peak_memory_mb(), MPI_DOUBLE);
-  summary.overlap_doubles_received = gathered<double>(comm, rows.doubles_received(), MPI_DOUBLE);
-  summary.overlap_refreshes = rows.refreshes();
-  collectively(comm, o.input, [&] { if(rank == 0) write_result(o, in, *setup, Y); });
+  collectively(comm, o.input, [&] {
+    if(rank != 0) return;
+    af_tool::Run_record record;
+    record.report = r;
+    write_result(o, in, record);
+    summary.normals = record.normals;
+  });
   summary.write_seconds = clock.time();
   return 0;
 }

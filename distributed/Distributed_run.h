@@ -1,16 +1,18 @@
 // Copyright (c) 2026 Anisotropic_fairing developers.
 // SPDX-License-Identifier: GPL-3.0-or-later
 //
-// One run of anisotropic_fairing_mpi: every process reads the mesh and builds the library's stages
-// (Replicated_setup.h); the faces are partitioned (Face_partition.h); each process assembles and steps its
-// part (Distributed_flow.h); process 0 gathers the result and writes it as anisotropic_fairing writes it
-// (full double precision, the input's vertex order, every vertex property), then the JSON report. A
-// failure on any process fails the run on every process (Collective_failure.h) before anything is written.
+// One run of anisotropic_fairing_mpi: every process reads the mesh and makes the library's call of
+// anisotropic_fairing() (internal/run/Fairing_driver.h) with the program's Elements (Distributed_cache.h):
+// the faces are partitioned (Face_partition.h), and each run of the call -- the default run's candidates and
+// comparison included -- assembles and solves on the processes (Distributed_flow.h); process 0 writes the
+// result as anisotropic_fairing writes it (full double precision, the input's vertex order, every vertex
+// property, the faired surface's normals), then the JSON report. A failure on any process fails the run on
+// every process (Collective_failure.h) before anything is written.
 
 #ifndef AF_DISTRIBUTED_DISTRIBUTED_RUN_H
 #define AF_DISTRIBUTED_DISTRIBUTED_RUN_H
 
-#include "Distributed_flow.h"
+#include "Distributed_cache.h"
 #include "options.h"
 
 #include <CGAL/Anisotropic_fairing/Fairing_report.h>
@@ -31,9 +33,10 @@ struct Run_summary
   std::vector<double> peak_memory_mb;   // per process (getrusage's maximum resident set size)
   double read_seconds = 0, setup_seconds = 0, partition_seconds = 0, flow_seconds = 0, write_seconds = 0;
   Flow_timing timing;                   // of process 0 (the same decisions on every process)
+  std::string normals = "none";         // the normals written (anisotropic_fairing's report key)
   std::size_t prefilter_iterations = 0;
   std::vector<std::size_t> off_process_columns;   // per process: values received per matrix-vector product and column
-  std::vector<double> overlap_doubles_received;   // per process: into its overlap rows over the run (VecGhostUpdate)
+  std::vector<double> overlap_doubles_received;   // per process: into rows other processes own, over the run
   std::size_t overlap_refreshes = 0;              // how many refreshes moved them
   std::string ksp_type, pc_type;
   CGAL::Anisotropic_fairing::Fairing_report report;

@@ -3,7 +3,10 @@
 //
 // The linear systems of a run on PETSc: a time step ((1 + t w) M + t L) dX = t (w M (X0 - X) - L X) and the
 // prefilter (M + eps L) dX = -eps L X (w = 0), with t, w per row, held rows eliminated (an identity row
-// and column with a zero right-hand side: the free block is the library's A_FF). Each column is one
+// and column with a zero right-hand side: the free block is the library's A_FF). As the library forms them
+// (solve/Step_system.h, solve/Fourth_order_system.h): with a local time scale M_ij stands for M_ij s_i s_j,
+// and the fourth-order flow's step has Q = L D^-1 L in place of L (D the lumped mass, 0 on held rows), Q
+// formed by PETSc's MatMatMult; a deviation bound's fidelity added (Distributed_fidelity.h). Each column is one
 // KSPSolve, warm-started from the last solution. KSPCG with PCJACOBI by default, as the library iterates
 // on one machine; PETSc's options (-ksp_type, -pc_type gamg|hypre, ...; the prefilter's with the prefix
 // "prefilter_") choose otherwise.
@@ -11,12 +14,15 @@
 #ifndef AF_DISTRIBUTED_DISTRIBUTED_SOLVER_H
 #define AF_DISTRIBUTED_DISTRIBUTED_SOLVER_H
 
+#include "Distributed_fidelity.h"
 #include "Distributed_layout.h"
 #include "Face_partition.h"
-#include "Ghosted_rows.h"
+#include "Whole_rows.h"
 
 #include <petscksp.h>
 
+#include <algorithm>
+#include <memory>
 #include <string>
 #include <vector>
 
@@ -55,18 +61,38 @@ public:
   ~Distributed_solver()
   {
     KSPDestroy(&ksp_);
-    MatDestroy(&A_);
-    for(Vec* v : { &x_, &b_, &u_, &mu_, &lx_, &a_, &t_ }) VecDestroy(v);
+    for(Mat* m : { &A_, &Mw_, &Q_ }) MatDestroy(m);
+    for(Vec* v : { &x_, &b_, &u_, &mu_, &lx_, &a_, &t_, &s_, &dinv_, &qx_ }) VecDestroy(v);
+  }
+
+  /// The local time scale's weights s per real vertex (empty: none), and whether the steps are the
+  /// fourth-order flow's: for the solves from now on.
+  void set_step_kind(std::vector<double> mass_weight, bool fourth_order)
+  {
+    mass_weight_ = std::move(mass_weight);
+    fourth_order_ = fourth_order;
+  }
+  /// A deviation bound's fidelity of each vertex's own, at `anchor` (null: none); `held`: per real vertex.
+  void set_fidelity(const CGAL::Anisotropic_fairing::internal::Output_fidelity* fidelity, const Control_matrix* anchor,
+                    const std::vector<bool>& held)
+  {
+    fidelity_.reset(fidelity ? new Distributed_fidelity(*fidelity, *anchor, d_, held) : nullptr);
   }
   Distributed_solver(const Distributed_solver&) = delete;
   Distributed_solver& operator=(const Distributed_solver&) = delete;
 
   /// Solves for the owned rows' displacement dX (owned rows x `columns`, in the order of the owned vertices;
-  /// its value on entry is the first guess) from the first `columns` columns of X and X0. t, w: per real vertex.
+  /// its value on entry is the first guess) from the first `columns` columns of X and X0. t, w and the
+  /// fidelity's mu (empty: none): per real vertex.
   Distributed_solve solve(Mat M, Mat L, const std::vector<double>& t, const std::vector<double>& w,
-                          const Control_matrix& X, const Control_matrix& X0, int columns, Control_matrix& dX)
+                          const Control_matrix& X, const Control_matrix& X0, int columns, Control_matrix& dX,
+                          const std::vector<double>& mu = std::vector<double>())
   {
     form(M, L, t, w);
+    if(fidelity_) fidelity_->add_to_matrix(A_, Mw_, u_, mu, t);
+    petsc_check(MatZeroRowsColumns(A_, PetscInt(held_rows_.size()), held_rows_.data(), 1.0, nullptr, nullptr),
+                "MatZeroRowsColumns");
+    petsc_check(KSPSetOperators(ksp_, A_, A_), "KSPSetOperators");
     if(dX.rows() != Eigen::Index(d_.owned_vertices.size()) || dX.cols() != columns)
       dX = Control_matrix::Zero(Eigen::Index(d_.owned_vertices.size()), columns);
     Distributed_solve result;
@@ -93,7 +119,7 @@ public:
     }
     // the next solve has another matrix: its operator and preconditioner (a multigrid hierarchy) are freed now
     petsc_check(KSPReset(ksp_), "KSPReset");
-    MatDestroy(&A_);
+    for(Mat* m : { &A_, &Mw_, &Q_ }) MatDestroy(m);
     return result;
   }
 
@@ -118,7 +144,7 @@ private:
   {
     if(x_) return;
     petsc_check(MatCreateVecs(A, &x_, &b_), "MatCreateVecs");
-    for(Vec* v : { &u_, &mu_, &lx_, &a_, &t_ }) petsc_check(VecDuplicate(b_, v), "VecDuplicate");
+    for(Vec* v : { &u_, &mu_, &lx_, &a_, &t_, &s_, &dinv_, &qx_ }) petsc_check(VecDuplicate(b_, v), "VecDuplicate");
   }
 
   template <typename F>
@@ -130,35 +156,65 @@ private:
     petsc_check(VecRestoreArray(v, &a), "VecRestoreArray");
   }
 
-  // A = diag(1 + t w) M + diag(t) L, the held rows and columns replaced by the identity's
+  // A = diag(1 + t w) M + diag(t) L (or Q), the held rows and columns replaced by the identity's
   void form(Mat M, Mat L, const std::vector<double>& t, const std::vector<double>& w)
   {
     make_vectors(M);
     const std::vector<int>& own = d_.owned_vertices;
     set_owned(a_, [&](std::size_t k) { return 1 + t[std::size_t(own[k])] * w[std::size_t(own[k])]; });
     set_owned(t_, [&](std::size_t k) { return t[std::size_t(own[k])]; });
-    MatDestroy(&A_);
+    for(Mat* m : { &A_, &Mw_, &Q_ }) MatDestroy(m);
+    petsc_check(MatDuplicate(M, MAT_COPY_VALUES, &Mw_), "MatDuplicate");
+    if(!mass_weight_.empty())
+    {
+      set_owned(s_, [&](std::size_t k) { return mass_weight_[std::size_t(own[k])]; });
+      petsc_check(MatDiagonalScale(Mw_, s_, s_), "MatDiagonalScale");
+    }
     Mat T;
-    petsc_check(MatDuplicate(M, MAT_COPY_VALUES, &A_), "MatDuplicate");
-    petsc_check(MatDiagonalScale(A_, a_, nullptr), "MatDiagonalScale");
-    petsc_check(MatDuplicate(L, MAT_COPY_VALUES, &T), "MatDuplicate");
+    if(fourth_order_) form_q(L);
+    petsc_check(MatDuplicate(fourth_order_ ? Q_ : L, MAT_COPY_VALUES, &T), "MatDuplicate");
     petsc_check(MatDiagonalScale(T, t_, nullptr), "MatDiagonalScale");
-    petsc_check(MatAXPY(A_, 1.0, T, SAME_NONZERO_PATTERN), "MatAXPY");
-    MatDestroy(&T);
-    petsc_check(MatZeroRowsColumns(A_, PetscInt(held_rows_.size()), held_rows_.data(), 1.0, nullptr, nullptr),
-                "MatZeroRowsColumns");
-    petsc_check(KSPSetOperators(ksp_, A_, A_), "KSPSetOperators");
+    petsc_check(MatDuplicate(Mw_, MAT_COPY_VALUES, &A_), "MatDuplicate");
+    petsc_check(MatDiagonalScale(A_, a_, nullptr), "MatDiagonalScale");
+    // Q couples the 6-ring, M the 3-ring: A takes Q's pattern
+    petsc_check(MatAXPY(T, 1.0, A_, fourth_order_ ? DIFFERENT_NONZERO_PATTERN : SAME_NONZERO_PATTERN), "MatAXPY");
+    MatDestroy(&A_);
+    A_ = T;
   }
 
-  // b = t (w M (X0 - X) - L X) in column c; zero on held rows
-  void right_hand_side(Mat M, Mat L, const std::vector<double>& t, const std::vector<double>& w,
+  // Q = L D^-1 L, D the lumped mass (row sums of M with the time scale), its inverse 0 on held rows and at
+  // least 1e-12 of the largest (Fourth_order_system::set_operator)
+  void form_q(Mat L)
+  {
+    petsc_check(MatGetRowSum(Mw_, dinv_), "MatGetRowSum");
+    PetscReal largest = 0;
+    petsc_check(VecMax(dinv_, nullptr, &largest), "VecMax");
+    PetscScalar* d = nullptr;
+    petsc_check(VecGetArray(dinv_, &d), "VecGetArray");
+    for(std::size_t k = 0; k < d_.owned_vertices.size(); ++k)
+      d[k] = held_[k] ? 0.0 : 1 / std::max(double(d[k]), 1e-12 * double(largest));
+    petsc_check(VecRestoreArray(dinv_, &d), "VecRestoreArray");
+    Mat DL;
+    petsc_check(MatDuplicate(L, MAT_COPY_VALUES, &DL), "MatDuplicate");
+    petsc_check(MatDiagonalScale(DL, dinv_, nullptr), "MatDiagonalScale");
+    petsc_check(MatMatMult(L, DL, MAT_INITIAL_MATRIX, PETSC_DEFAULT, &Q_), "MatMatMult");
+    MatDestroy(&DL);
+  }
+
+  // b = t (w M (X0 - X) - L X) (L X: Q X = L (D^-1 (L X)) for the fourth order) in column c; zero on held rows
+  void right_hand_side(Mat, Mat L, const std::vector<double>& t, const std::vector<double>& w,
                        const Control_matrix& X, const Control_matrix& X0, int c)
   {
     const std::vector<int>& own = d_.owned_vertices;
     set_owned(u_, [&](std::size_t k) { return X0(own[k], c) - X(own[k], c); });
     set_owned(x_, [&](std::size_t k) { return X(own[k], c); });
-    petsc_check(MatMult(M, u_, mu_), "MatMult");
+    petsc_check(MatMult(Mw_, u_, mu_), "MatMult");
     petsc_check(MatMult(L, x_, lx_), "MatMult");
+    if(fourth_order_)
+    {
+      petsc_check(VecPointwiseMult(qx_, dinv_, lx_), "VecPointwiseMult");
+      petsc_check(MatMult(L, qx_, lx_), "MatMult");
+    }
     const PetscScalar *mu = nullptr, *lx = nullptr;
     petsc_check(VecGetArrayRead(mu_, &mu), "VecGetArrayRead");
     petsc_check(VecGetArrayRead(lx_, &lx), "VecGetArrayRead");
@@ -168,14 +224,19 @@ private:
     });
     petsc_check(VecRestoreArrayRead(mu_, &mu), "VecRestoreArrayRead");
     petsc_check(VecRestoreArrayRead(lx_, &lx), "VecRestoreArrayRead");
+    if(fidelity_) fidelity_->add_to_right_hand_side(b_, X, t, c);
   }
 
   const Distributed_layout& d_;
   std::vector<PetscInt> held_rows_;
   std::vector<bool> held_;   // per owned vertex
+  std::vector<double> mass_weight_;
+  bool fourth_order_ = false;
+  std::unique_ptr<Distributed_fidelity> fidelity_;
   KSP ksp_ = nullptr;
-  Mat A_ = nullptr;
-  Vec x_ = nullptr, b_ = nullptr, u_ = nullptr, mu_ = nullptr, lx_ = nullptr, a_ = nullptr, t_ = nullptr;
+  Mat A_ = nullptr, Mw_ = nullptr, Q_ = nullptr;   // the system; M with the time scale; Q (fourth order)
+  Vec x_ = nullptr, b_ = nullptr, u_ = nullptr, mu_ = nullptr, lx_ = nullptr, a_ = nullptr, t_ = nullptr,
+      s_ = nullptr, dinv_ = nullptr, qx_ = nullptr;
 };
 
 } // namespace af_distributed

@@ -44,24 +44,11 @@ std::string unsupported(const af_tool::Options& o)
   namespace AF = CGAL::Anisotropic_fairing;
   const AF::Fairing_options& f = o.fairing;
   const std::string no = " is not supported by the distributed program";
-  if(f.automatic_parameters())
-    return "the automatic run (no --time-step or --relative-time-step: noise estimate and candidate selection)" + no +
-           "; give --relative-time-step (or --time-step) and --steps";
-  if(f.flow_order != 2) return "--order 4" + no;
   if(f.finite_element != AF::Finite_element::LOOP) return "--element linear" + no;
-  if(o.stop == "noise")
-    return "--stop " + o.stop + " (the noise level, estimated from the whole mesh)" + no +
-           "; give --stop paper or --stop off";
-  if(f.relative_maximum_deviation || f.absolute_maximum_deviation || f.attribute_maximum_deviation > 0)
-    return "a deviation bound (--maximum-deviation, --relative-maximum-deviation, --attribute-maximum-deviation)" + no;
-  if(f.attribute_mode && *f.attribute_mode == AF::Attribute_mode::ATTRIBUTES_ONLY) return "--mode attributes" + no;
   if(f.linear_solver == AF::Linear_solver::CHOLESKY)
     return "--solver cholesky" + no + " (PETSc's options choose the solver: -ksp_type, -pc_type)";
-  if(!o.hold.empty()) return "--hold" + no;
-  if(o.curvature) return "--curvature" + no;
   if(o.has_resample) return "--resample" + no;
   if(!o.snapshot.empty()) return "--snapshot" + no;
-  if(o.repair) return "--repair" + no;
   if(f.memory_limit) return "--memory-limit" + no + " (a process's memory is not predicted yet)";
   return std::string();
 }

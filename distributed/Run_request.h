@@ -3,9 +3,9 @@
 //
 // What anisotropic_fairing_mpi accepts of the program anisotropic_fairing's command line, and the split of
 // its arguments between the program (the same flags, the same meaning) and PETSc (single-dash options
-// such as -pc_type gamg, -ksp_rtol 1e-12, -mat_partitioning_type ptscotch, -log_view). A run with a given
-// time step and number of steps is supported; what needs the library's automatic choices or a part of the
-// flow not distributed yet is refused by name, never replaced by something else.
+// such as -pc_type gamg, -ksp_rtol 1e-12, -mat_partitioning_type ptscotch, -log_view). The default run and
+// the paper's flow are supported; what needs a part not distributed yet (the linear element, a
+// factorisation, resampling, snapshots) is refused by name, never replaced by something else.
 
 #ifndef AF_DISTRIBUTED_RUN_REQUEST_H
 #define AF_DISTRIBUTED_RUN_REQUEST_H

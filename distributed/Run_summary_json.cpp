@@ -74,6 +74,9 @@ std::string summary_json(const af_tool::Options& o, const Run_summary& s, bool o
   if(ok)
   {
     j["stop_reason"] = AF::to_string(s.report.stop_reason);
+    j["choices"] = s.report.choices;
+    j["selected_tensor"] = s.report.selected_tensor;
+    j["normals"] = s.normals;
     j["rejected_steps"] = s.report.rejected_steps;
     j["time_step"] = s.report.time_step;
     j["scale"] = s.report.scale;

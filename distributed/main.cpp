@@ -1,15 +1,15 @@
 // Copyright (c) 2026 Anisotropic_fairing developers.
 // SPDX-License-Identifier: GPL-3.0-or-later
 //
-// anisotropic_fairing_mpi -- the program anisotropic_fairing's run with a given time step, distributed
-// over MPI processes with PETSc:
+// anisotropic_fairing_mpi -- the program anisotropic_fairing's run, distributed over MPI processes with PETSc:
 //
-//   mpirun -np P anisotropic_fairing_mpi INPUT OUTPUT --relative-time-step R --steps N [options] [PETSc options]
+//   mpirun -np P anisotropic_fairing_mpi INPUT OUTPUT [options] [PETSc options]
 //
 // The options are anisotropic_fairing's, with the same meaning (those it does not support are refused by
 // name: Run_request.h); single-dash options are PETSc's (-pc_type gamg|hypre, -ksp_rtol, -ksp_monitor,
 // -mat_partitioning_type, -log_view; the prefilter's solver with the prefix -prefilter_). Failure contract
-// as anisotropic_fairing's: one line on stderr (from process 0), exit 1 (2: usage), no OUTPUT.
+// as anisotropic_fairing's: one line on stderr (from process 0), exit 1 (2: usage), no OUTPUT. A process out
+// of memory says so, naming itself, and ends every process (MPI_Abort): the others may be waiting for it.
 
 #include "Collective_failure.h"
 #include "Distributed_run.h"
@@ -17,6 +17,8 @@
 #include "message_text.h"
 #include "mesh_io.h"
 #include "options.h"
+
+#include <CGAL/Anisotropic_fairing/internal/run/Memory_estimate.h>
 
 #include <petscsys.h>
 
@@ -26,6 +28,9 @@
 
 #include <chrono>
 #include <cstdio>
+#include <cstdlib>
+#include <cstring>
+#include <new>
 #include <string>
 #include <vector>
 
@@ -41,14 +46,43 @@ double af_tool::elapsed_seconds()
 namespace {
 
 const char* const usage_text =
-  "anisotropic_fairing_mpi: anisotropic_fairing's run with a given time step on MPI processes (PETSc)\n"
-  "  mpirun -np P anisotropic_fairing_mpi INPUT OUTPUT --relative-time-step R --steps N [options] [PETSc options]\n"
+  "anisotropic_fairing_mpi: anisotropic_fairing's run on MPI processes (PETSc)\n"
+  "  mpirun -np P anisotropic_fairing_mpi INPUT OUTPUT [options] [PETSc options]\n"
   "Single-dash options are PETSc's: -pc_type jacobi|gamg|hypre, -ksp_rtol, -ksp_monitor, -mat_partitioning_type,\n"
-  "-log_view; the prefilter's solver: -prefilter_ksp_rtol, -prefilter_pc_type. Not supported (refused): the\n"
-  "automatic run, --stop noise, --order 4, --element linear, deviation bounds, --mode attributes,\n"
-  "--solver cholesky, --hold, --curvature, --resample, --snapshot, --repair, --memory-limit, inputs with vertex\n"
-  "normals.\n"
+  "-log_view; the prefilter's solver: -prefilter_ksp_rtol, -prefilter_pc_type. Not supported (refused):\n"
+  "--element linear, --solver cholesky, --resample, --snapshot, --memory-limit.\n"
   "anisotropic_fairing's options, with the same meaning:\n\n";
+
+// This process cannot allocate: it says so, naming itself and what it holds, and ends every process (the others
+// may be waiting for it in a collective call); nothing has been written then.
+[[noreturn]] void out_of_memory(MPI_Comm comm, int rank)
+{
+  int size = 1;
+  MPI_Comm_size(comm, &size);
+  namespace AFI = CGAL::Anisotropic_fairing::internal;
+  std::fprintf(stderr,
+               "anisotropic_fairing_mpi: out of memory on process %d of %d (%s in use); nothing was written: "
+               "run on more processes, or on machines with more memory\n",
+               rank, size, AFI::megabytes(AFI::available_memory().in_use).c_str());
+  std::fflush(stderr);
+  MPI_Abort(comm, 1);
+  std::abort();
+}
+
+// PETSc's errors: out of memory as above, any other ends every process at once with PETSc's message (MPI_Abort),
+// so that no process is left waiting for one that stopped; nothing has been written then
+PetscErrorCode on_petsc_error(MPI_Comm comm, int line, const char* function, const char* file, PetscErrorCode code,
+                              PetscErrorType type, const char* message, void* context)
+{
+  // (PETSc 3.18 reports a failed allocation from PetscMallocAlign with a code other than PETSC_ERR_MEM)
+  if(code == PETSC_ERR_MEM || (function && std::strstr(function, "Malloc")))
+  {
+    int rank = 0;
+    MPI_Comm_rank(PETSC_COMM_WORLD, &rank);
+    out_of_memory(PETSC_COMM_WORLD, rank);
+  }
+  return PetscAbortErrorHandler(comm, line, function, file, code, type, message, context);
+}
 
 // the run on every process; returns the exit code (the same on every process)
 int run_program(const std::vector<std::string>& arguments, MPI_Comm comm, int rank)
@@ -75,6 +109,7 @@ int run_program(const std::vector<std::string>& arguments, MPI_Comm comm, int ra
   }
   catch(const af_tool::Failure& f) { status = f.status; message = f.message; code = f.exit_code; }
   catch(const af_distributed::Collective_failure& f) { status = f.status; message = f.what(); code = 1; }
+  catch(const std::bad_alloc&) { out_of_memory(comm, rank); }
   if(rank == 0)
   {
     const bool ok = status == "success";
@@ -115,9 +150,7 @@ int main(int argc, char** argv)
   }
   int rank = 0;
   MPI_Comm_rank(PETSC_COMM_WORLD, &rank);
-  // an unexpected PETSc error (not a failure the run agrees on) ends every process at once (MPI_Abort), so
-  // that no process is left waiting for one that stopped; nothing has been written then
-  PetscPushErrorHandler(PetscAbortErrorHandler, nullptr);
+  PetscPushErrorHandler(on_petsc_error, nullptr);
 #ifdef CGAL_LINKED_WITH_TBB
   // one thread per process: the processes are the parallelism (one per core)
   const tbb::global_control one_thread(tbb::global_control::max_allowed_parallelism, 1);

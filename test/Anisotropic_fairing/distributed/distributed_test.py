@@ -1,8 +1,9 @@
 #!/usr/bin/env python3
-# Tests of anisotropic_fairing_mpi (distributed/): its result on 1 and 2 processes equals the serial
-# library's, the program anisotropic_fairing's with the same explicit parameters and an exact solver
-# (--solver cholesky), to 1e-9 relative (the distributed CG iterates to 1e-13); a failing process fails
-# the run with a message naming the element and no output; what is not supported is refused.
+# Tests of anisotropic_fairing_mpi (distributed/): its result on 1, 2 and 3 processes, the default run's
+# included, equals the serial library's, the program anisotropic_fairing's with the same options and an
+# exact solver (--solver cholesky), to 1e-9 relative (the distributed CG iterates to 1e-13); a failing
+# process fails the run with a message naming the element (or itself, out of memory) and no output; what is
+# not supported is refused.
 #   distributed_test.py --tool anisotropic_fairing --mpi anisotropic_fairing_mpi --mpiexec mpirun
 #                       --data DIR --example-data DIR --work DIR --case NAME
 import argparse, json, math, os, random, shutil, subprocess, sys, tempfile
@@ -67,7 +68,32 @@ def make_valued_ply(source, target):
         for j in range(f):
             out.write(" ".join(words[2 + n + j][:4]) + "\n")
 
-def equal_to_serial(args, name, mesh, flags, processes=(1, 2), petsc=()):
+def noisy_scan(source, target, normals):
+    """source's mesh (OFF) with Gaussian noise of 0.2 mean edge lengths along random directions, as a PLY, with
+    vertex normals (nx, ny, nz: the noisy surface's, as a scanner writes them) or without."""
+    words = [l.split() for l in open(source).read().split("\n") if l.split()]
+    n, f = int(words[1][0]), int(words[1][1])
+    points = [[float(x) for x in w[:3]] for w in words[2:2 + n]]
+    faces = [[int(x) for x in w[1:4]] for w in words[2 + n:2 + n + f]]
+    edge = sum(math.dist(points[t[k]], points[t[(k + 1) % 3]]) for t in faces for k in range(3)) / (3 * f)
+    rng = random.Random(11)
+    points = [[x + 0.2 * edge * rng.gauss(0, 1) for x in p] for p in points]
+    normal = [[0.0, 0.0, 0.0] for _ in range(n)]
+    for a, b, c in faces:
+        u = [points[b][k] - points[a][k] for k in range(3)]
+        v = [points[c][k] - points[a][k] for k in range(3)]
+        w = [u[1] * v[2] - u[2] * v[1], u[2] * v[0] - u[0] * v[2], u[0] * v[1] - u[1] * v[0]]
+        for i in (a, b, c): normal[i] = [normal[i][k] + w[k] for k in range(3)]
+    with open(target, "w") as out:
+        out.write("ply\nformat ascii 1.0\nelement vertex %d\nproperty double x\nproperty double y\nproperty double z\n" % n)
+        if normals: out.write("property double nx\nproperty double ny\nproperty double nz\n")
+        out.write("element face %d\nproperty list uchar int vertex_indices\nend_header\n" % f)
+        for p, m in zip(points, normal):
+            length = math.sqrt(sum(x * x for x in m)) or 1.0
+            out.write(" ".join("%.17g" % x for x in p + ([x / length for x in m] if normals else [])) + "\n")
+        for t in faces: out.write("3 %d %d %d\n" % tuple(t))
+
+def equal_to_serial(args, name, mesh, flags, processes=(1, 2, 3), petsc=()):
     ext = os.path.splitext(mesh)[1]
     serial = os.path.join(args.work, name + "_serial" + ext)
     run([args.tool, mesh, serial, "--quiet", "--solver", "cholesky", "--report", serial + ".json"] + flags)
@@ -87,7 +113,10 @@ def equal_to_serial(args, name, mesh, flags, processes=(1, 2), petsc=()):
         if len(faces) != np or min(faces) == 0 or sum(faces) != got["faces"]:
             sys.exit("FAIL: %s on %d processes: faces per process %s of %d" % (name, np, faces, got["faces"]))
         # the same decisions: steps taken, steps rejected, why it stopped
-        for key, value in (("stop_reason", got["stop_reason"]), ("rejected_steps", got["rejected_steps"]), ("steps", len(got["steps"]))):
+        decisions = [("stop_reason", got["stop_reason"]), ("rejected_steps", got["rejected_steps"]), ("steps", len(got["steps"])),
+                     ("normals", got["normals"])]
+        if got["selected_tensor"]: decisions.append(("tensor", got["selected_tensor"]))   # the default run's choice
+        for key, value in decisions:
             want = len(expected["steps"]) if key == "steps" else expected[key]
             if value != want: sys.exit("FAIL: %s on %d processes: %s %s, the serial run's %s" % (name, np, key, value, want))
 
@@ -167,6 +196,34 @@ def run_case():
         equal_to_serial(args, "displacement_stop", closed, ["--tensor", "isotropic", "--relative-time-step", "1e-2", "--steps", "30"])
         equal_to_serial(args, "folding_fallback", os.path.join(args.data, "bunny.off"),
                         ["--tensor", "anisotropic", "--lambda", "4", "--epsilon", "1e-3", "--relative-time-step", "1e-1", "--steps", "6"])
+    elif case == "default_run":
+        # no options: the noise estimate, the candidates and their comparison, the stop at the noise level; a
+        # scan's PLY with vertex normals gets the faired surface's, as the serial program writes them
+        for normals in (False, True):
+            scan = os.path.join(args.work, "bunny_noisy%s.ply" % ("_normals" if normals else ""))
+            noisy_scan(os.path.join(args.data, "bunny.off"), scan, normals)
+            equal_to_serial(args, case + ("_normals" if normals else ""), scan, [])
+    elif case == "flow_options":
+        # the fourth-order flow (automatic, to the noise level), the stop at the noise level with a given time
+        # step, held vertices (a file of indices) and the curvature written (PLY: k1, k2, mean_curvature compared
+        # as every other column)
+        scan = os.path.join(args.work, "bunny_noisy.ply")
+        noisy_scan(os.path.join(args.data, "bunny.off"), scan, False)
+        held = os.path.join(args.work, "held.txt")
+        open(held, "w").write("\n".join(str(i) for i in range(0, 3485, 7)) + "\n")
+        equal_to_serial(args, "fourth_order", scan, ["--order", "4", "--tensor", "isotropic"])
+        equal_to_serial(args, "noise_stop", scan, ["--tensor", "isotropic", "--relative-time-step", "0.1", "--stop", "noise"])
+        equal_to_serial(args, "held_curvature", scan, aniso + ["--hold", held, "--curvature"])
+        # deviation bounds: the default run's, and the attributes-only mode's on its fixed surface
+        equal_to_serial(args, "bounded", scan, ["--relative-maximum-deviation", "0.05"])   # 53 rows held, 4 clamped
+        valued = os.path.join(args.work, "bumpy_value.ply")
+        make_valued_ply(os.path.join(args.data, "bumpy.off"), valued)
+        equal_to_serial(args, "attributes_only", valued, ["--attributes", "value", "--mode", "attributes"])
+        equal_to_serial(args, "attributes_bounded", valued,
+                        ["--attributes", "value", "--mode", "attributes", "--attribute-maximum-deviation", "0.01"])
+        for name in ("bounded", "attributes_bounded"):   # the bound held rows: the case tests what it names
+            held_rows = json.load(open(os.path.join(args.work, name + "_serial.ply.json")))["bound_held_vertices"]
+            if held_rows == 0: sys.exit("FAIL: %s: the bound held no row" % name)
     elif case == "failures": failures(args, closed)
     else: sys.exit("unknown case " + case)
 
@@ -183,6 +240,32 @@ def with_flat_component(source, target):
         for j in range(f): out.write(" ".join(words[2 + n + j][:4]) + "\n")
         for a, b, c in octahedron: out.write("3 %d %d %d\n" % (n + a, n + b, n + c))
     return f
+
+LIMITED = """import os, resource, sys
+# process 1 of the run may allocate at most LIMIT bytes of data (RLIMIT_DATA: the heap and private mappings, not
+# the MPI library's shared memory), then it is the program
+if os.environ.get("OMPI_COMM_WORLD_RANK", os.environ.get("PMI_RANK")) == "1":
+    resource.setrlimit(resource.RLIMIT_DATA, (int(sys.argv[1]), int(sys.argv[1])))
+os.execv(sys.argv[2], sys.argv[2:])
+"""
+
+def out_of_memory(args):
+    """Process 1 runs out of memory (its data limited) on the armadillo, in the library's code (60 MB) or in
+    PETSc's (200 MB): the run ends on every process, saying which one ran out; nothing is written."""
+    wrapper = os.path.join(args.work, "limited.py")
+    open(wrapper, "w").write(LIMITED)
+    mesh = os.path.join(args.data, "armadillo.obj")
+    for megabytes in (60, 200):
+        out = os.path.join(args.work, "out_of_memory_%d.obj" % megabytes)
+        command = mpi(args, 2, mesh, out, "--quiet", "--relative-time-step", "1e-3", "--steps", "2")
+        at = command.index(args.mpi)
+        command[at:at] = [sys.executable, wrapper, str(megabytes << 20)]
+        p = subprocess.run(command, capture_output=True, text=True, timeout=300)
+        said = [l for l in p.stderr.split("\n") if l.startswith("anisotropic_fairing_mpi: ")]
+        print("out of memory (%d MB of data on process 1): exit %d: %s" % (megabytes, p.returncode, said))
+        if p.returncode == 0 or not any("out of memory on process 1 of 2" in l for l in said):
+            sys.exit("FAIL: process 1 out of memory: exit %d, no line naming it\n%s" % (p.returncode, p.stderr))
+        if os.path.exists(out): sys.exit("FAIL: out of memory: the output %s was written" % out)
 
 def failures(args, closed):
     # a NaN coordinate in the second half of the vertices
@@ -207,8 +290,9 @@ def failures(args, closed):
     flags = ["--tensor", "isotropic", "--relative-time-step", "1", "--steps", "4"]
     serial = run([args.tool, camel, os.path.join(args.work, "camel_serial.off"), "--quiet"] + flags, expect_code=1)
     fails_cleanly(args, "folded_first_step", camel, flags, 2, 1, [serial.stderr.strip().split("\n")[0].split(": ", 1)[1]])
-    fails_cleanly(args, "automatic_refused", closed, [], 2, 2, ["--relative-time-step", "not supported"])
-    fails_cleanly(args, "noise_stop_refused", closed, ["--relative-time-step", "1e-3", "--stop", "noise"], 1, 2, ["--stop noise"])
+    fails_cleanly(args, "linear_element_refused", closed, ["--element", "linear"], 2, 2, ["--element linear"])
+    fails_cleanly(args, "resample_refused", closed, ["--resample", "1"], 1, 2, ["--resample is not supported"])
+    out_of_memory(args)
     fails_cleanly(args, "memory_limit_refused", closed, ["--relative-time-step", "1e-3", "--memory-limit", "1G"], 1, 2,
                   ["--memory-limit is not supported"])
 

@@ -25,6 +25,7 @@
 #include <algorithm>
 #include <optional>
 #include <string>
+#include <type_traits>
 #include <vector>
 
 namespace CGAL {
@@ -220,6 +221,20 @@ private:
   std::vector<double> mass_weight_, unknown_scale_;
   const std::vector<double> no_scale_;
   std::optional<Step_solver> solver_;
+};
+
+/// The flow operator of the runs on `Cache`: this one, unless the cache names its own (`Cache::Flow_operator`,
+/// constructed as this one is): the distributed program's cache does, so that the library's runs, the default
+/// run's comparison included, step on its processes (distributed/Distributed_cache.h).
+template <typename Cache, typename = void>
+struct Flow_operator_of
+{
+  typedef Serial_flow_operator<Cache> type;
+};
+template <typename Cache>
+struct Flow_operator_of<Cache, std::void_t<typename Cache::Flow_operator>>
+{
+  typedef typename Cache::Flow_operator type;
 };
 
 } // namespace internal

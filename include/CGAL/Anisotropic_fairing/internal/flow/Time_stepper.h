@@ -27,6 +27,8 @@ namespace internal {
 template <typename Cache>
 class Time_stepper
 {
+  typedef typename Flow_operator_of<Cache>::type Operator;
+
 public:
   /// `constrained[i]` holds vertex i fixed. `layer`: the mesh (with its ghosts); `components`: its
   /// connected components, `component_edge[c]` the mean edge length of component c, `mean_edge` of all.
@@ -60,7 +62,7 @@ public:
   Fairing_report run(Control_matrix& X, int metric_columns, const Tensor& tensor, const Stepper_settings& s,
                      Callback& callback)
   {
-    return kept(Flow_loop<Serial_flow_operator<Cache>, Tensor, Callback>(operator_, X, X, metric_columns, tensor, s,
+    return kept(Flow_loop<Operator, Tensor, Callback>(operator_, X, X, metric_columns, tensor, s,
                                                                          callback, false, std::move(probe_))
                   .run());
   }
@@ -76,7 +78,7 @@ public:
   {
     Control_matrix F = X.rightCols(X.cols() - 3);
     const Fairing_report report = kept(
-      Flow_loop<Serial_flow_operator<Cache>, Tensor, Callback>(operator_, X, F, 3, tensor, s, callback, true).run());
+      Flow_loop<Operator, Tensor, Callback>(operator_, X, F, 3, tensor, s, callback, true).run());
     X.rightCols(F.cols()) = F;
     return report;
   }
@@ -93,7 +95,7 @@ private:
     return std::move(r.report);
   }
 
-  Serial_flow_operator<Cache> operator_;
+  Operator operator_;
   Probe_request probe_;
   Control_matrix probe_result_;
   Probe_schedule schedule_;

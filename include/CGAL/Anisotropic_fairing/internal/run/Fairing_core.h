@@ -65,14 +65,15 @@ struct Fairing_result
 };
 
 /// One run of anisotropic_fairing() on matrices (see the top of this file); `Tensor`: a package tensor
-/// chosen at run time (Package_diffusion_tensor) or a tensor type of the caller's own.
-template <typename Tensor>
+/// chosen at run time (Package_diffusion_tensor) or a tensor type of the caller's own; `Elements`: where the
+/// runs on the Loop element step (Stepper_call.h).
+template <typename Tensor, typename Elements = Serial_elements>
 class Fairing_core
 {
 public:
   Fairing_core(const Fairing_input& in, const Fairing_parameters& given, const Tensor& tensor,
-               const std::function<bool(const Fairing_step&)>& callback)
-    : in_(in), given_(given), s_(given.settings), tensor_(tensor), callback_(callback),
+               const std::function<bool(const Fairing_step&)>& callback, const Elements& elements = Elements())
+    : in_(in), given_(given), s_(given.settings), tensor_(tensor), callback_(callback), elements_(elements),
       n_(std::size_t(in.points.rows())), setup_(started_timer()), ordering_(make_locality_ordering(in.layer)),
       layer_(ordering_.layer)
   {
@@ -104,7 +105,7 @@ public:
   {
     if(given_.element == Finite_element::LOOP)
     {
-      Ghosted_patch_cache cache(layer_, given_.quadrature);
+      const typename Elements::Loop_cache cache = elements_.loop_cache(layer_, given_.quadrature);
       const bool curve = given_.boundary == Boundary_handling::HOLD_BOUNDARY_CURVE;
       boundary_held_ = hold(boundary_constrained_vertices(layer_, cache, curve));
       setup_seconds_ = setup_.time();
@@ -564,6 +565,7 @@ private:
   Stepper_settings s_;
   Tensor tensor_;
   const std::function<bool(const Fairing_step&)>& callback_;
+  const Elements elements_;
   const std::size_t n_;
   CGAL::Real_timer setup_;   // from before the numbering to the element's cache
   const Locality_ordering ordering_;

@@ -88,11 +88,13 @@ inline Fairing_report memory_refused(const std::string& why, double need, const 
 }
 
 /// The run of anisotropic_fairing() on `options` with `tensor` (a package tensor chosen at run time, or a
-/// tensor type of the caller's own).
-template <typename TriangleMesh, typename VertexPointMap, typename AttributeMap, typename Tensor>
+/// tensor type of the caller's own); `elements`: where its runs step (Stepper_call.h: here, or the distributed
+/// program's processes).
+template <typename TriangleMesh, typename VertexPointMap, typename AttributeMap, typename Tensor,
+          typename Elements = Serial_elements>
 Fairing_report fair_with_options(TriangleMesh& tm, VertexPointMap vpm, AttributeMap attributes,
-                                 const Fairing_options& options,
-                                 const Mesh_hooks<TriangleMesh>& hooks, const Tensor& tensor)
+                                 const Fairing_options& options, const Mesh_hooks<TriangleMesh>& hooks,
+                                 const Tensor& tensor, const Elements& elements = Elements())
 {
   typedef Indexed_mesh<TriangleMesh> Mesh;
   CGAL::Real_timer total;
@@ -126,7 +128,7 @@ Fairing_report fair_with_options(TriangleMesh& tm, VertexPointMap vpm, Attribute
   Memory_plan plan = memory_plan(given, tensor, im.number_of_vertices(), A.cols());
   // what an automatic factorisation may take beside the run (Solver_choice.h)
   given.settings.factor_budget = available_memory(given.memory_limit).bytes - predicted_memory(plan);
-  Fairing_core<Tensor> core(in, given, tensor, hooks.callback);
+  Fairing_core<Tensor, Elements> core(in, given, tensor, hooks.callback, elements);
   im.release_ghost_layer();   // the run has its own numbering's, and its own copy of the points
   P.resize(0, 0);
   core.prepare();

@@ -14,6 +14,7 @@
 #include <CGAL/Anisotropic_fairing/internal/flow/Tensor_hooks.h>
 #include <CGAL/Anisotropic_fairing/internal/flow/Probe_flow.h>
 #include <CGAL/Anisotropic_fairing/internal/flow/Time_stepper.h>
+#include <CGAL/Anisotropic_fairing/internal/element/Ghosted_patch_cache.h>
 #include <CGAL/Anisotropic_fairing/internal/mesh/Locality_ordering.h>
 #include <CGAL/Anisotropic_fairing/internal/mesh/Mesh_components.h>
 
@@ -83,6 +84,17 @@ struct Flow_context
   const std::vector<bool>& border;
 };
 
+/// Where a call's runs step: the Loop element's cache it makes (Fairing_core::run()), whose flow operator
+/// (Flow_operator_of) is one process's. The distributed program gives its own (distributed/Distributed_cache.h).
+struct Serial_elements
+{
+  typedef Ghosted_patch_cache Loop_cache;
+  Loop_cache loop_cache(const Ghost_layer& layer, const Quadrature_spec& quadrature) const
+  {
+    return Loop_cache(layer, quadrature);
+  }
+};
+
 /// The risk estimate's probe carried along a flow (Ride_along_probe.h): from `start` (null: no probe).
 struct Probe_plan
 {
@@ -145,8 +157,8 @@ Control_matrix prefiltered_start(const Flow_context<Cache>& context, const Tenso
                                  const Stepper_settings& settings, const Control_matrix& start)
 {
   const Flow_mesh mesh{ context.ordering.layer, context.components, context.component_edge, context.mean_edge };
-  Serial_flow_operator<Cache> op(context.cache, std::size_t(start.rows()), context.constrained, mesh,
-                                 flow_numbering(context));
+  typename Flow_operator_of<Cache>::type op(context.cache, std::size_t(start.rows()), context.constrained, mesh,
+                                            flow_numbering(context));
   const Stepper_settings s = flow_settings(settings, tensor);
   op.begin_run(s, false);
   Tensor t = tensor;
@@ -168,8 +180,8 @@ Stepper_outcome replayed_probe(const Flow_context<Cache>& context, const Tensor&
                                const Probe_schedule& schedule)
 {
   const Flow_mesh mesh{ context.ordering.layer, context.components, context.component_edge, context.mean_edge };
-  Serial_flow_operator<Cache> op(context.cache, std::size_t(P.rows()), context.constrained, mesh,
-                                 flow_numbering(context));
+  typename Flow_operator_of<Cache>::type op(context.cache, std::size_t(P.rows()), context.constrained, mesh,
+                                            flow_numbering(context));
   const Tangential_motion_filter filter(context.ordering.layer);
   if(normal_motion_of(context, tensor)) op.set_tangential_filter(&filter);
   Stepper_outcome o;
