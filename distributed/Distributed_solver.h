@@ -6,7 +6,8 @@
 // and column with a zero right-hand side: the free block is the library's A_FF). As the library forms them
 // (solve/Step_system.h, solve/Fourth_order_system.h): with a local time scale M_ij stands for M_ij s_i s_j,
 // and the fourth-order flow's step has Q = L D^-1 L in place of L (D the lumped mass, 0 on held rows), Q
-// formed by PETSc's MatMatMult; a deviation bound's fidelity added (Distributed_fidelity.h). Each column is one
+// used through its product (Fourth_order_shell.h), or formed by MatMatMult for a preconditioner that reads the
+// matrix's entries or a deviation bound's fidelity (Distributed_fidelity.h). Each column is one
 // KSPSolve, warm-started from the last solution. KSPCG with PCJACOBI by default, as the library iterates
 // on one machine; PETSc's options (-ksp_type, -pc_type gamg|hypre, ...; the prefilter's with the prefix
 // "prefilter_") choose otherwise.
@@ -16,12 +17,14 @@
 
 #include "Distributed_fidelity.h"
 #include "Distributed_layout.h"
+#include "Fourth_order_shell.h"
 #include "Face_partition.h"
 #include "Whole_rows.h"
 
 #include <petscksp.h>
 
 #include <algorithm>
+#include <cstring>
 #include <memory>
 #include <string>
 #include <vector>
@@ -41,7 +44,7 @@ public:
   /// `held`: per real vertex of the run; `prefix`: of PETSc's options for this solver.
   Distributed_solver(MPI_Comm comm, const Distributed_layout& d, const std::vector<bool>& held, const char* prefix,
                      double tolerance, int maximum_iterations)
-    : d_(d)
+    : d_(d), comm_(comm)
   {
     for(int v : d.owned_vertices)
       if(held[std::size_t(v)]) held_rows_.push_back(d.petsc_row[std::size_t(v)]);
@@ -57,6 +60,9 @@ public:
     petsc_check(KSPSetTolerances(ksp_, tolerance, 1e-300, PETSC_DEFAULT, maximum_iterations), "KSPSetTolerances");
     petsc_check(KSPSetInitialGuessNonzero(ksp_, PETSC_TRUE), "KSPSetInitialGuessNonzero");
     petsc_check(KSPSetFromOptions(ksp_), "KSPSetFromOptions");
+    PCType type = nullptr;
+    petsc_check(PCGetType(pc, &type), "PCGetType");
+    by_product_ = type && (std::strcmp(type, PCJACOBI) == 0 || std::strcmp(type, PCNONE) == 0);
   }
   ~Distributed_solver()
   {
@@ -89,10 +95,14 @@ public:
                           const std::vector<double>& mu = std::vector<double>())
   {
     form(M, L, t, w);
-    if(fidelity_) fidelity_->add_to_matrix(A_, Mw_, u_, mu, t);
-    petsc_check(MatZeroRowsColumns(A_, PetscInt(held_rows_.size()), held_rows_.data(), 1.0, nullptr, nullptr),
-                "MatZeroRowsColumns");
-    petsc_check(KSPSetOperators(ksp_, A_, A_), "KSPSetOperators");
+    if(shell_) petsc_check(KSPSetOperators(ksp_, shell_->matrix(), shell_->matrix()), "KSPSetOperators");
+    else
+    {
+      if(fidelity_) fidelity_->add_to_matrix(A_, Mw_, u_, mu, t);
+      petsc_check(MatZeroRowsColumns(A_, PetscInt(held_rows_.size()), held_rows_.data(), 1.0, nullptr, nullptr),
+                  "MatZeroRowsColumns");
+      petsc_check(KSPSetOperators(ksp_, A_, A_), "KSPSetOperators");
+    }
     if(dX.rows() != Eigen::Index(d_.owned_vertices.size()) || dX.cols() != columns)
       dX = Control_matrix::Zero(Eigen::Index(d_.owned_vertices.size()), columns);
     Distributed_solve result;
@@ -119,6 +129,7 @@ public:
     }
     // the next solve has another matrix: its operator and preconditioner (a multigrid hierarchy) are freed now
     petsc_check(KSPReset(ksp_), "KSPReset");
+    shell_.reset();
     for(Mat* m : { &A_, &Mw_, &Q_ }) MatDestroy(m);
     return result;
   }
@@ -170,8 +181,18 @@ private:
       set_owned(s_, [&](std::size_t k) { return mass_weight_[std::size_t(own[k])]; });
       petsc_check(MatDiagonalScale(Mw_, s_, s_), "MatDiagonalScale");
     }
+    if(fourth_order_)
+    {
+      lumped_inverse();
+      // through its product where the preconditioner needs no entries and no fidelity adds to them
+      if(!fidelity_ && by_product_)
+      {
+        shell_.reset(new Fourth_order_shell(comm_, d_, held_, Mw_, L, a_, t_, dinv_));
+        return;
+      }
+      form_q(L);
+    }
     Mat T;
-    if(fourth_order_) form_q(L);
     petsc_check(MatDuplicate(fourth_order_ ? Q_ : L, MAT_COPY_VALUES, &T), "MatDuplicate");
     petsc_check(MatDiagonalScale(T, t_, nullptr), "MatDiagonalScale");
     petsc_check(MatDuplicate(Mw_, MAT_COPY_VALUES, &A_), "MatDuplicate");
@@ -182,9 +203,9 @@ private:
     A_ = T;
   }
 
-  // Q = L D^-1 L, D the lumped mass (row sums of M with the time scale), its inverse 0 on held rows and at
-  // least 1e-12 of the largest (Fourth_order_system::set_operator)
-  void form_q(Mat L)
+  // D^-1, D the lumped mass (row sums of M with the time scale), 0 on held rows and D at least 1e-12 of the
+  // largest (Fourth_order_system::set_operator)
+  void lumped_inverse()
   {
     petsc_check(MatGetRowSum(Mw_, dinv_), "MatGetRowSum");
     PetscReal largest = 0;
@@ -194,6 +215,11 @@ private:
     for(std::size_t k = 0; k < d_.owned_vertices.size(); ++k)
       d[k] = held_[k] ? 0.0 : 1 / std::max(double(d[k]), 1e-12 * double(largest));
     petsc_check(VecRestoreArray(dinv_, &d), "VecRestoreArray");
+  }
+
+  // Q = L D^-1 L, formed
+  void form_q(Mat L)
+  {
     Mat DL;
     petsc_check(MatDuplicate(L, MAT_COPY_VALUES, &DL), "MatDuplicate");
     petsc_check(MatDiagonalScale(DL, dinv_, nullptr), "MatDiagonalScale");
@@ -233,6 +259,9 @@ private:
   std::vector<double> mass_weight_;
   bool fourth_order_ = false;
   std::unique_ptr<Distributed_fidelity> fidelity_;
+  std::unique_ptr<Fourth_order_shell> shell_;
+  bool by_product_ = false;   // the preconditioner reads only the diagonal (Jacobi, none)
+  MPI_Comm comm_;
   KSP ksp_ = nullptr;
   Mat A_ = nullptr, Mw_ = nullptr, Q_ = nullptr;   // the system; M with the time scale; Q (fourth order)
   Vec x_ = nullptr, b_ = nullptr, u_ = nullptr, mu_ = nullptr, lx_ = nullptr, a_ = nullptr, t_ = nullptr,

@@ -25,7 +25,7 @@ def noisy_fertility(tool, work):
     if os.path.exists(target): return target
     refined = os.path.join(work, "fertility_r2.off")
     run([tool, "/work/shared/data/fertility.off", refined, "--quiet", "--tensor", "isotropic", "--relative-time-step", "1e-7",
-         "--steps", "1", "--resample", "2", "--text"])
+         "--steps", "1", "--resample", "2"])
     points, faces = read_off(refined)
     edge = sum(math.dist(points[t[k]], points[t[(k + 1) % 3]]) for t in faces for k in range(3)) / (3 * len(faces))
     rng = random.Random(5)
@@ -66,8 +66,8 @@ def main():
         for program, np in configs:
             out = os.path.join(a.work, "%s_%s%s" % (name, "serial" if np == 0 else "np%d" % np, ext))
             report = out + ".json"
-            command = [tool, mesh, out, "--quiet", "--text", "--report", report] if np == 0 else \
-                ["mpirun", "--allow-run-as-root", "--oversubscribe", "-np", str(np), mpi, mesh, out, "--quiet", "--text", "--report", report]
+            command = [tool, mesh, out, "--quiet", "--report", report] if np == 0 else \
+                ["mpirun", "--allow-run-as-root", "--oversubscribe", "-np", str(np), mpi, mesh, out, "--quiet", "--report", report]
             times = [run(command) for _ in range(a.repeat)]
             j = json.load(open(report))
             peak = [j["peak_memory_mb"]] if np == 0 else j["per_process"]["peak_memory_mb"]
