@@ -214,6 +214,7 @@ int run_distributed(const af_tool::Options& o, MPI_Comm comm, Run_summary& summa
   Input in;
   collectively(comm, o.input, [&] { read(o, in); });
   summary.read_seconds = clock.time();
+  summary.held_vertices = in.held_vertices;
   summary.vertices = in.info.split.empty() ? in.mesh.number_of_vertices() : in.info.split.file_vertices;
   summary.faces = in.mesh.number_of_faces();
   clock.reset();

@@ -34,6 +34,7 @@ struct Run_summary
   double read_seconds = 0, setup_seconds = 0, partition_seconds = 0, flow_seconds = 0, write_seconds = 0;
   Flow_timing timing;                   // of process 0 (the same decisions on every process)
   std::string normals = "none";         // the normals written (anisotropic_fairing's report key)
+  std::size_t held_vertices = 0;        // held by --hold
   std::size_t prefilter_iterations = 0;
   std::vector<std::size_t> off_process_columns;   // per process: values received per matrix-vector product and column
   std::vector<double> overlap_doubles_received;   // per process: into rows other processes own, over the run

@@ -77,6 +77,7 @@ std::string summary_json(const af_tool::Options& o, const Run_summary& s, bool o
     j["choices"] = s.report.choices;
     j["selected_tensor"] = s.report.selected_tensor;
     j["normals"] = s.normals;
+    j["held_vertices"] = s.held_vertices;
     j["rejected_steps"] = s.report.rejected_steps;
     j["time_step"] = s.report.time_step;
     j["scale"] = s.report.scale;

@@ -62,9 +62,9 @@ public:
   Fairing_report run(Control_matrix& X, int metric_columns, const Tensor& tensor, const Stepper_settings& s,
                      Callback& callback)
   {
-    return kept(Flow_loop<Operator, Tensor, Callback>(operator_, X, X, metric_columns, tensor, s,
-                                                                         callback, false, std::move(probe_))
-                  .run());
+    Flow_loop<Operator, Tensor, Callback> loop(operator_, X, X, metric_columns, tensor, s, callback, false,
+                                               std::move(probe_));
+    return kept(loop.run());
   }
 
   /// Attributes only (Bajaj & Xu's case c): the surface of the first 3 columns of X is fixed, so M
