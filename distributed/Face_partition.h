@@ -27,6 +27,31 @@ inline void petsc_check(PetscErrorCode code, const char* call)
     throw std::runtime_error(std::string("PETSc ") + call + " failed (error " + std::to_string(int(code)) + ")");
 }
 
+/// The part of each of this process's `rows` vertices of a graph of `total` (its rows ia, ja: MatCreateMPIAdj's,
+/// which takes them) by PETSc's partitioner.
+inline std::vector<int> apply_partitioner(MPI_Comm comm, PetscInt rows, PetscInt total, PetscInt* ia, PetscInt* ja)
+{
+  Mat adjacency;
+  petsc_check(MatCreateMPIAdj(comm, rows, total, ia, ja, nullptr, &adjacency), "MatCreateMPIAdj");
+  MatPartitioning partitioning;
+  petsc_check(MatPartitioningCreate(comm, &partitioning), "MatPartitioningCreate");
+  petsc_check(MatPartitioningSetAdjacency(partitioning, adjacency), "MatPartitioningSetAdjacency");
+#if defined(PETSC_HAVE_PTSCOTCH)
+  petsc_check(MatPartitioningSetType(partitioning, MATPARTITIONINGPTSCOTCH), "MatPartitioningSetType");
+#endif
+  petsc_check(MatPartitioningSetFromOptions(partitioning), "MatPartitioningSetFromOptions");
+  IS parts;
+  petsc_check(MatPartitioningApply(partitioning, &parts), "MatPartitioningApply");
+  const PetscInt* p = nullptr;
+  petsc_check(ISGetIndices(parts, &p), "ISGetIndices");
+  std::vector<int> part(p, p + rows);
+  petsc_check(ISRestoreIndices(parts, &p), "ISRestoreIndices");
+  ISDestroy(&parts);
+  MatPartitioningDestroy(&partitioning);
+  MatDestroy(&adjacency);
+  return part;
+}
+
 /// The part (process) of each of the first `real_faces` faces of `topo`, the same on every process.
 inline std::vector<int> partition_faces(MPI_Comm comm,
                                         const CGAL::Anisotropic_fairing::internal::Triangle_topology& topo,
@@ -55,26 +80,16 @@ inline std::vector<int> partition_faces(MPI_Comm comm,
   }
   petsc_check(PetscMalloc1(neighbours.size() + 1, &ja), "PetscMalloc1");
   std::copy(neighbours.begin(), neighbours.end(), ja);
-  Mat adjacency;
-  petsc_check(MatCreateMPIAdj(comm, last - first, nf, ia, ja, nullptr, &adjacency), "MatCreateMPIAdj");
-  MatPartitioning partitioning;
-  petsc_check(MatPartitioningCreate(comm, &partitioning), "MatPartitioningCreate");
-  petsc_check(MatPartitioningSetAdjacency(partitioning, adjacency), "MatPartitioningSetAdjacency");
-#if defined(PETSC_HAVE_PTSCOTCH)
-  petsc_check(MatPartitioningSetType(partitioning, MATPARTITIONINGPTSCOTCH), "MatPartitioningSetType");
-#endif
-  petsc_check(MatPartitioningSetFromOptions(partitioning), "MatPartitioningSetFromOptions");
-  IS parts, all_parts;
-  petsc_check(MatPartitioningApply(partitioning, &parts), "MatPartitioningApply");
-  petsc_check(ISAllGather(parts, &all_parts), "ISAllGather");
-  const PetscInt* p = nullptr;
-  petsc_check(ISGetIndices(all_parts, &p), "ISGetIndices");
-  std::vector<int> part(p, p + nf);
-  petsc_check(ISRestoreIndices(all_parts, &p), "ISRestoreIndices");
-  ISDestroy(&all_parts);
-  ISDestroy(&parts);
-  MatPartitioningDestroy(&partitioning);
-  MatDestroy(&adjacency);
+  const std::vector<int> mine = apply_partitioner(comm, last - first, nf, ia, ja);
+  // every process's parts, in the order of the blocks
+  std::vector<int> count(static_cast<std::size_t>(size)), at(static_cast<std::size_t>(size));
+  for(int p = 0; p < size; ++p)
+  {
+    at[std::size_t(p)] = int(nf * p / size);
+    count[std::size_t(p)] = int(nf * (p + 1) / size) - at[std::size_t(p)];
+  }
+  std::vector<int> part(real_faces);
+  MPI_Allgatherv(mine.data(), int(mine.size()), MPI_INT, part.data(), count.data(), at.data(), MPI_INT, comm);
   return part;
 }
 

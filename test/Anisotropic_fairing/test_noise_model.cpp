@@ -17,7 +17,15 @@
 //   left as read; SURE of a linear smoother under that noise, probed with noise as correlated as the noise read,
 //   unbiased over eight draws (within 0.03 per vertex), biased probed with independent noise (below -0.2);
 // - the coordinates rounded to a lattice of 0.25 h: its step found to 1e-9; none without rounding, none for a
-//   lattice coarser than the edges.
+//   lattice coarser than the edges;
+// - the same noisy sphere with its vertices and faces numbered in another order: the same estimate (to 1e-12), the
+//   same probe at each vertex (to the bit) and the same reference noise (to rounding: 1e-12), with the numbers drawn by the vertices' keys
+//   (Vertex_keys.h), as a process of the distributed program draws those of its part alone; drawn by the vertices'
+//   numbers, they differ;
+// - on a mesh with a border (the hemisphere), the probe made as correlated as a reading of k = 1.5: at every vertex
+//   the mean of two and of one averagings with the ring, the ghosts of the border's fans included (drawn by their
+//   keys), against the same averaging made here from the faces around each vertex; before, the rings of border
+//   vertices read past the end of the probe's values.
 
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/Surface_mesh.h>
@@ -25,13 +33,17 @@
 
 #include <CGAL/Anisotropic_fairing/internal/flow/Noise_model.h>
 #include <CGAL/Anisotropic_fairing/internal/mesh/Indexed_mesh.h>
+#include <CGAL/Anisotropic_fairing/internal/mesh/Vertex_keys.h>
 #include <CGAL/Anisotropic_fairing/internal/run/Tensor_selection.h>
 
 #include "test_support/check.h"
 #include "test_support/mesh_generators.h"
 
+#include <algorithm>
 #include <cmath>
+#include <cstdint>
 #include <random>
+#include <set>
 #include <string>
 #include <vector>
 
@@ -331,6 +343,96 @@ void lattice(const Sphere& s)
 
 } // namespace
 
+// The noisy sphere numbered in another order (vertex i becomes new_of_old[i], the faces shuffled): with the
+// vertices' keys, every vertex draws the same numbers and the estimate reads the same noise.
+void any_numbering(const Sphere& s)
+{
+  const AFI::Ghost_layer& layer = s.im->ghost_layer();
+  const std::size_t n = std::size_t(s.x.rows());
+  const AFI::Control_matrix y = noisy(s, [](Eigen::Index) { return 0.2; }, true, 21);
+  std::mt19937 random(8);
+  std::vector<int> new_of_old(n);
+  for(std::size_t i = 0; i < n; ++i) new_of_old[i] = int(i);
+  std::shuffle(new_of_old.begin(), new_of_old.end(), random);
+  std::vector<std::size_t> old_of_new_face(layer.real_faces);
+  for(std::size_t f = 0; f < old_of_new_face.size(); ++f) old_of_new_face[f] = f;
+  std::shuffle(old_of_new_face.begin(), old_of_new_face.end(), random);
+  const AFI::Ghost_layer other = layer.renumbered(new_of_old, old_of_new_face);
+  AFI::Control_matrix z(y.rows(), y.cols());
+  for(std::size_t i = 0; i < n; ++i) z.row(new_of_old[i]) = y.row(Eigen::Index(i));
+  const std::vector<bool> usable(n, true);
+  const std::vector<std::uint64_t> keys = AFI::vertex_keys(layer, y), other_keys = AFI::vertex_keys(other, z);
+  const AFI::Noise_estimate a(*layer.topology, y, usable, keys), b(*other.topology, z, usable, other_keys),
+    by_number(*other.topology, z, usable);
+  const std::vector<double> probe = AFI::risk_probe_values(n, keys), other_probe = AFI::risk_probe_values(n, other_keys);
+  bool same_draws = true, same_by_number = true;
+  for(std::size_t i = 0; i < n; ++i)
+  {
+    const std::size_t j = std::size_t(new_of_old[i]);
+    // the null sums the draws of a vertex's rings in the order of the numbering: the same to rounding
+    same_draws = same_draws && std::abs(a.normal_null()[i] - b.normal_null()[j]) <= 1e-12 && probe[i] == other_probe[j];
+    same_by_number = same_by_number && std::abs(a.normal_null()[i] - by_number.normal_null()[j]) <= 1e-12;
+  }
+  std::printf("renumbered: noise %.15g h and %.15g h (drawn by number: %.15g h), correlation k %.6g and %.6g\n",
+              a.relative_sigma(), b.relative_sigma(), by_number.relative_sigma(), a.correlation().k,
+              b.correlation().k);
+  AF_CHECK(same_draws, "renumbered, every vertex draws the same reference noise and probe");
+  AF_CHECK(!same_by_number, "drawn by the vertices' numbers, the reference noise moves with the numbering");
+  AF_CHECK(std::abs(a.relative_sigma() - b.relative_sigma()) <= 1e-12 * a.relative_sigma() &&
+             std::abs(a.correlation().k - b.correlation().k) <= 1e-12,
+           "renumbered, the same noise and correlation are read");
+}
+
+// The probe made as correlated as k = 1.5 on the hemisphere (a border: border vertices' rings reach the ghosts), against
+// the averaging with each vertex's neighbours found here from the faces (the ghost faces included), at unit RMS
+// over the real vertices.
+void correlated_on_a_border(const std::string& data)
+{
+  Mesh hemisphere;
+  if(!AF_CHECK(CGAL::IO::read_polygon_mesh(data + "/hemisphere.off", hemisphere), "hemisphere.off is read")) return;
+  const AFI::Indexed_mesh<Mesh> im(hemisphere, AFI::Borders::GHOSTED, true);
+  const AFI::Ghost_layer& layer = im.ghost_layer();
+  const AFI::Triangle_topology& topo = *layer.topology;
+  const std::size_t n = layer.real_vertices, all = topo.number_of_vertices();
+  const std::vector<std::uint64_t> keys = AFI::vertex_keys(layer, im.read_points(get(CGAL::vertex_point, hemisphere)));
+  const std::vector<double> b = AFI::risk_probe_values(keys.size(), keys);
+  AFI::Noise_correlation c;
+  c.corrected = true;
+  c.k = 1.5;
+  const std::vector<double> probe = AFI::correlated_like(topo, b, n, c);
+  std::vector<std::set<std::size_t>> neighbours(all);
+  for(std::size_t f = 0; f < topo.number_of_faces(); ++f)
+    for(int a : topo.face(f))
+      for(int e : topo.face(f))
+        if(a != e) neighbours[std::size_t(a)].insert(std::size_t(e));
+  const auto averaged = [&](const std::vector<double>& x) {
+    std::vector<double> out = x;
+    for(std::size_t i = 0; i < n; ++i)
+    {
+      double sum = 0;
+      for(std::size_t j : neighbours[i]) sum += x[j];
+      out[i] = 0.5 * x[i] + 0.5 * sum / double(neighbours[i].size());
+    }
+    return out;
+  };
+  const auto unit = [&](std::vector<double> x) {
+    double square = 0;
+    for(std::size_t i = 0; i < n; ++i) square += x[i] * x[i];
+    for(double& v : x) v /= std::sqrt(square / double(n));
+    return x;
+  };
+  const std::vector<double> once = unit(averaged(b)), twice = unit(averaged(once));
+  std::vector<double> expected(all);
+  for(std::size_t i = 0; i < all; ++i) expected[i] = 0.5 * once[i] + 0.5 * twice[i];
+  expected = unit(expected);
+  double largest = 0;
+  for(std::size_t i = 0; i < n && i < probe.size(); ++i) largest = std::max(largest, std::abs(probe[i] - expected[i]));
+  std::printf("hemisphere (%zu vertices, %zu ghosts): the probe correlated as k = 1.5 off the faces' averaging by "
+              "%.3g\n", n, all - n, largest);
+  AF_CHECK(probe.size() == n && largest < 1e-12,
+           "on a border, the correlated probe averages each ring with its ghosts, one number per real vertex");
+}
+
 int main(int argc, char** argv)
 {
   const Sphere s;
@@ -341,6 +443,8 @@ int main(int argc, char** argv)
   correlated(s);
   probe_like_the_noise(s);
   lattice(s);
+  any_numbering(s);
   impulses_on_a_part(argc > 1 ? argv[1] : "data");
+  correlated_on_a_border(argc > 1 ? argv[1] : "data");
   return AF_test::report();
 }

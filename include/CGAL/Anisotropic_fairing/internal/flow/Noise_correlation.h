@@ -24,6 +24,8 @@
 #include <CGAL/Anisotropic_fairing/internal/mesh/Triangle_topology.h>
 #include <CGAL/Anisotropic_fairing/internal/types/Parallel_blocks.h>
 
+#include <CGAL/assertions.h>
+
 #include <algorithm>
 #include <array>
 #include <cmath>
@@ -164,34 +166,43 @@ inline std::vector<double> averaged_with_ring(const Triangle_topology& topo, con
   return out;
 }
 
-/// `field` scaled to unit root mean square (left as it is when it is zero).
-inline void to_unit_rms(std::vector<double>& field)
+/// `field` scaled to unit root mean square over its first `n` values (all: n = 0), the whole field with them (left as
+/// it is when they are zero).
+inline void to_unit_rms(std::vector<double>& field, std::size_t n = 0)
 {
+  const std::size_t m = n > 0 ? std::min(n, field.size()) : field.size();
   double square = 0;
-  for(double x : field) square += x * x;
-  const double rms = std::sqrt(square / double(std::max<std::size_t>(field.size(), 1)));
+  for(std::size_t i = 0; i < m; ++i) square += field[i] * field[i];
+  const double rms = std::sqrt(square / double(std::max<std::size_t>(m, 1)));
   if(rms > 0)
     for(double& x : field) x /= rms;
 }
 
 /// Independent unit noise `b` made as correlated as the noise read (`c`), so that a risk estimate probes the
 /// flows with noise of the mesh's kind: averaged with its ring's mean as many times as the curve's point c.k (its
-/// whole numbers of averagings on either side weighted by the fraction), at unit root mean square. `b` itself
-/// where the reading is not corrected.
+/// whole numbers of averagings on either side weighted by the fraction), at unit root mean square over the first
+/// `n` vertices, which it returns. `b` holds a number for every vertex of the topology (a border vertex's ring
+/// reaches ghosts, Ghost_layer.h); its first `n` where the reading is not corrected.
 inline std::vector<double> correlated_like(const Triangle_topology& topo, const std::vector<double>& b, std::size_t n,
                                            const Noise_correlation& c)
 {
-  if(!c.corrected || !(c.k > 0)) return b;
-  const int below = int(std::floor(c.k));
-  const double t = c.k - below;
+  CGAL_precondition(b.size() >= topo.number_of_vertices() && b.size() >= n);
   std::vector<double> lower = b;
-  for(int k = 0; k < below; ++k) lower = averaged_with_ring(topo, lower, n);
-  to_unit_rms(lower);
-  if(t == 0) return lower;
-  std::vector<double> upper = averaged_with_ring(topo, lower, n);
-  to_unit_rms(upper);
-  for(std::size_t i = 0; i < lower.size(); ++i) lower[i] = (1 - t) * lower[i] + t * upper[i];
-  to_unit_rms(lower);
+  if(c.corrected && c.k > 0)
+  {
+    const int below = int(std::floor(c.k));
+    const double t = c.k - below;
+    for(int k = 0; k < below; ++k) lower = averaged_with_ring(topo, lower, n);
+    to_unit_rms(lower, n);
+    if(t > 0)
+    {
+      std::vector<double> upper = averaged_with_ring(topo, lower, n);
+      to_unit_rms(upper, n);
+      for(std::size_t i = 0; i < lower.size(); ++i) lower[i] = (1 - t) * lower[i] + t * upper[i];
+      to_unit_rms(lower, n);
+    }
+  }
+  lower.resize(n);
   return lower;
 }
 

@@ -23,6 +23,7 @@
 #include <CGAL/Anisotropic_fairing/internal/flow/Noise_correlation.h>
 #include <CGAL/Anisotropic_fairing/internal/flow/Ring_plane.h>
 #include <CGAL/Anisotropic_fairing/internal/types/Control_matrix.h>
+#include <CGAL/Anisotropic_fairing/internal/types/Keyed_normal.h>
 #include <CGAL/Anisotropic_fairing/internal/types/Parallel_blocks.h>
 #include <CGAL/Anisotropic_fairing/internal/types/Vector3.h>
 #include <CGAL/Anisotropic_fairing/internal/mesh/Triangle_topology.h>
@@ -31,7 +32,7 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
-#include <random>
+#include <cstdint>
 #include <utility>
 #include <vector>
 
@@ -53,8 +54,10 @@ class Noise_estimate
 {
 public:
   /// `X`: the input's real vertices (first 3 columns: the geometry); `usable[i]`: vertex i may be
-  /// sampled (an interior vertex with a closed fan, not held by the user).
-  Noise_estimate(const Triangle_topology& topo, const Control_matrix& X, const std::vector<bool>& usable)
+  /// sampled (an interior vertex with a closed fan, not held by the user); `keys`: each vertex's of the topology,
+  /// which the reference noise is drawn by (Vertex_keys.h; empty: the vertex's number).
+  Noise_estimate(const Triangle_topology& topo, const Control_matrix& X, const std::vector<bool>& usable,
+                 const std::vector<std::uint64_t>& keys = std::vector<std::uint64_t>())
   {
     const std::size_t n = std::size_t(X.rows());
     normal_.assign(3 * n, 0.0);
@@ -78,7 +81,7 @@ public:
         has_height_[i] = 1;
       }
     });
-    measure_differences(topo, height, across);
+    measure_differences(topo, height, across, keys);
     std::vector<double> samples;
     for(double v : normal_sample_)
       if(!std::isnan(v)) samples.push_back(v);
@@ -147,7 +150,7 @@ private:
   // d_i and the norm of row i of (I - W)^2, over vertices whose whole ring has a height (NaN: none), the same of
   // the in-plane offsets and of unit noise; the samples are then taken in vertex order, as one loop would
   void measure_differences(const Triangle_topology& topo, const std::vector<double>& height,
-                           const std::vector<double>& across)
+                           const std::vector<double>& across, const std::vector<std::uint64_t>& keys)
   {
     const std::size_t n = edge_.size();
     normal_sample_.assign(n, std::nan(""));
@@ -155,10 +158,11 @@ private:
     // the same differences of unit noise drawn at every vertex (of the topology: a ring may reach a ghost vertex
     // where the caller samples a border): what they give where the noise does not vary
     Control_matrix unit_noise(Eigen::Index(std::max(n, topo.number_of_vertices())), 3);
-    std::mt19937 rng(20261129u);
-    std::normal_distribution<double> gauss(0.0, 1.0);
     for(Eigen::Index i = 0; i < unit_noise.rows(); ++i)
-      for(int a = 0; a < 3; ++a) unit_noise(i, a) = gauss(rng);
+    {
+      const std::uint64_t key = keys.empty() ? std::uint64_t(i) : keys[std::size_t(i)];
+      for(int a = 0; a < 3; ++a) unit_noise(i, a) = keyed_normal(20261129u, key, unsigned(a));
+    }
     normal_null_.assign(n, std::nan(""));
     tangential_null_.assign(n, std::nan(""));
     const Correlated_null_samples field = averaged_unit_noise(topo, unit_noise, n);

@@ -29,11 +29,13 @@
 #include <CGAL/Anisotropic_fairing/internal/mesh/Ghost_layer.h>
 #include <CGAL/Anisotropic_fairing/internal/mesh/Locality_ordering.h>
 #include <CGAL/Anisotropic_fairing/internal/mesh/Mesh_components.h>
+#include <CGAL/Anisotropic_fairing/internal/mesh/Vertex_keys.h>
 
 #include <CGAL/Real_timer.h>
 
 #include <algorithm>
 #include <cmath>
+#include <cstdint>
 #include <cstdio>
 #include <functional>
 #include <memory>
@@ -177,6 +179,7 @@ private:
       if(d > 0) X_.row(Eigen::Index(i)).tail(d) = attribute_scale() * in_.attributes.row(old);
       constrained_[i] = in_.held[std::size_t(old)];
     }
+    keys_ = vertex_keys(layer_, X_);
   }
 
   // the layer's border and isolated rows; the rows written back: all but the user's held, border and
@@ -222,14 +225,16 @@ private:
   // the noise, from the mesh itself, and its deviation at each vertex in model units
   void estimate_noise()
   {
-    noise_.reset(new Noise_estimate(*layer_.topology, X_, sampled_rows()));
+    noise_.reset(new Noise_estimate(*layer_.topology, X_, sampled_rows(), keys_));
     s_.noise = noise_.get();
     noise_sigma_.assign(n_, 0.0);
     for(std::size_t i = 0; i < n_; ++i)
       if(components_.of_vertex[i] >= 0)
         noise_sigma_[i] = noise_->relative_sigma() * component_edge_[std::size_t(components_.of_vertex[i])];
-    // the risk estimate's probe, as correlated over the surface as the noise read (independent where it is not)
-    probe_values_ = correlated_like(*layer_.topology, risk_probe_values(n_), n_, noise_->correlation());
+    // the risk estimate's probe, as correlated over the surface as the noise read (independent where it is not); drawn
+    // at the ghosts too, which the rings of border vertices reach
+    probe_values_ =
+      correlated_like(*layer_.topology, risk_probe_values(keys_.size(), keys_), n_, noise_->correlation());
   }
 
   // the noise stop measures the limit surface, the surface faired, whichever positions are written: a
@@ -275,13 +280,8 @@ private:
   // what the borders hold: the boundary vertices, and the influence set of the limit boundary curve
   std::size_t hold(const std::vector<bool>& held)
   {
-    std::size_t count = 0;
-    for(std::size_t i = 0; i < n_; ++i)
-    {
-      count += held[i] ? 1 : 0;
-      constrained_[i] = constrained_[i] || held[i];
-    }
-    return count;
+    for(std::size_t i = 0; i < n_; ++i) constrained_[i] = constrained_[i] || held[i];
+    return std::size_t(std::count(held.begin(), held.begin() + std::ptrdiff_t(n_), true));
   }
 
   // the runs on one element's cache: the run's own flow, then the default run's comparison and strength
@@ -574,6 +574,7 @@ private:
   std::vector<bool> constrained_, border_, isolated_, written_;
   Mesh_components components_;
   std::vector<double> component_edge_, noise_sigma_, probe_values_;
+  std::vector<std::uint64_t> keys_;   // each vertex's, which its random numbers are drawn by (Vertex_keys.h)
   double mean_edge_ = 0;
   std::size_t removed_spikes_ = 0;
   std::unique_ptr<Noise_estimate> noise_;

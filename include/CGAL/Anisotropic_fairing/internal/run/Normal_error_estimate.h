@@ -31,7 +31,7 @@
 #include <array>
 #include <cmath>
 #include <cstddef>
-#include <random>
+#include <cstdint>
 #include <vector>
 
 namespace CGAL {
@@ -63,13 +63,11 @@ public:
     if(!tangential_.empty())
     {
       // the probe across the normals: two more standard normal numbers per vertex, in a frame of its plane
-      std::mt19937 rng(20261129u);
-      std::normal_distribution<double> gauss(0.0, 1.0);
       for(Eigen::Index i = 0; i < n; ++i)
       {
         const Eigen::Vector3d nrm = N_.row(i).transpose();
         const Eigen::Vector3d t1 = nrm.unitOrthogonal(), t2 = nrm.cross(t1);
-        const double c = gauss(rng), d = gauss(rng);
+        const double c = keyed_normal(20261129u, std::uint64_t(i), 0), d = keyed_normal(20261129u, std::uint64_t(i), 1);
         if(nrm.squaredNorm() > 0) u_.row(i) += tangential_[std::size_t(i)] * (c * t1 + d * t2).transpose();
       }
     }

@@ -18,13 +18,14 @@
 #define CGAL_ANISOTROPIC_FAIRING_INTERNAL_RUN_TENSOR_SELECTION_H
 
 #include <CGAL/Anisotropic_fairing/internal/types/Control_matrix.h>
+#include <CGAL/Anisotropic_fairing/internal/types/Keyed_normal.h>
 #include <CGAL/Anisotropic_fairing/internal/types/Vector3.h>
 #include <CGAL/Anisotropic_fairing/internal/flow/Step_safety.h>
 #include <CGAL/Anisotropic_fairing/internal/mesh/Triangle_topology.h>
 
 #include <cmath>
 #include <cstddef>
-#include <random>
+#include <cstdint>
 #include <vector>
 
 namespace CGAL {
@@ -49,14 +50,13 @@ inline Control_matrix vertex_normals(const Triangle_topology& topo, std::size_t 
   return N;
 }
 
-/// The probe of the risk estimate: per vertex, a standard normal number (fixed seed: the run is repeatable),
-/// made as correlated as the noise by the caller.
-inline std::vector<double> risk_probe_values(std::size_t n)
+/// The probe of the risk estimate: per vertex, a standard normal number drawn by its key (Vertex_keys.h; none: its
+/// number), made as correlated as the noise by the caller.
+inline std::vector<double> risk_probe_values(std::size_t n,
+                                             const std::vector<std::uint64_t>& keys = std::vector<std::uint64_t>())
 {
-  std::mt19937 rng(20261125u);
-  std::normal_distribution<double> gauss(0.0, 1.0);
   std::vector<double> b(n);
-  for(double& x : b) x = gauss(rng);
+  for(std::size_t i = 0; i < n; ++i) b[i] = keyed_normal(20261125u, keys.empty() ? std::uint64_t(i) : keys[i], 0);
   return b;
 }
 
