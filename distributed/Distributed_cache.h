@@ -54,14 +54,17 @@ class Distributed_patch_cache : public AFI::Ghosted_patch_cache
 public:
   typedef Distributed_flow_operator Flow_operator;
 
+  /// `part`: the part of the mesh this process holds, when the library's mesh is one (Part_run.cpp)
   Distributed_patch_cache(const AFI::Ghost_layer& layer, const AFI::Quadrature_spec& quadrature,
-                          Distributed_state& state)
+                          Distributed_state& state, const AFI::Part_view& part)
     : AFI::Ghosted_patch_cache(layer, quadrature), state_(&state)
   {
     CGAL::Real_timer clock;
     clock.start();
-    state.layout.reset(new Distributed_layout(make_distributed_layout(
-      layer, *this, partition_faces(state.comm, *layer.topology, layer.real_faces), state.rank, state.size)));
+    if(part.whole())
+      state.layout.reset(new Distributed_layout(make_distributed_layout(
+        layer, *this, partition_faces(state.comm, *layer.topology, layer.real_faces), state.rank, state.size)));
+    else state.layout.reset(new Distributed_layout(make_part_layout(layer, *this, part, state.comm)));
     state.partition_seconds += clock.time();
   }
   Distributed_state& state() const { return *state_; }
@@ -70,15 +73,19 @@ private:
   Distributed_state* state_;
 };
 
-/// The library's Elements (run/Stepper_call.h) of the distributed program.
+/// The library's Elements (run/Stepper_call.h) of the distributed program; `part_of_mesh`: the part of the mesh
+/// this process holds, when it gives the library a part (null: every process the whole mesh).
 struct Distributed_elements
 {
   typedef Distributed_patch_cache Loop_cache;
   Distributed_state* state;
-  Loop_cache loop_cache(const AFI::Ghost_layer& layer, const AFI::Quadrature_spec& quadrature) const
+  const AFI::Process_part* part_of_mesh = nullptr;
+  Loop_cache loop_cache(const AFI::Ghost_layer& layer, const AFI::Quadrature_spec& quadrature,
+                        const AFI::Part_view& part) const
   {
-    return Loop_cache(layer, quadrature, *state);
+    return Loop_cache(layer, quadrature, *state, part);
   }
+  const AFI::Process_part* part() const { return part_of_mesh; }
 };
 
 } // namespace af_distributed

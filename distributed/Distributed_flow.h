@@ -15,6 +15,7 @@
 #include "Distributed_cache.h"
 #include "Distributed_operator.h"
 #include "Distributed_solver.h"
+#include "Part_folds.h"
 
 #include <CGAL/Anisotropic_fairing/internal/flow/Flow_operator.h>
 #include <CGAL/Anisotropic_fairing/internal/flow/Local_time_scale.h>
@@ -49,6 +50,9 @@ public:
       if(!constrained[std::size_t(d_.owned_vertices[k])]) free_.push_back(k);
     for(std::size_t i = 0; i < d_.vertex_owner.size(); ++i)
       if(!constrained[i]) all_free_rows_.push_back(int(i));
+    long long mine = (long long)free_.size(), all = 0;
+    MPI_Allreduce(&mine, &all, 1, MPI_LONG_LONG, MPI_SUM, comm_);
+    free_count_ = std::size_t(all);
     state_.off_process_columns = op_.off_process_columns();
   }
   ~Distributed_flow_operator() { state_.prefilter_iterations += op_.prefilter_iterations(); }
@@ -58,7 +62,20 @@ public:
 
   const AFI::Flow_mesh& mesh() const { return mesh_; }
   std::string unsupported(const AFI::Stepper_settings&, bool) const { return std::string(); }
-  std::size_t free_count() const { return all_free_rows_.size(); }
+  std::size_t vertex_count() const { return std::size_t(d_.rows); }
+  std::size_t free_count() const { return free_count_; }
+  double largest(double x) const
+  {
+    double all = x;
+    MPI_Allreduce(&x, &all, 1, MPI_DOUBLE, MPI_MAX, comm_);
+    return all;
+  }
+  bool everywhere(bool b) const
+  {
+    int mine = b ? 1 : 0, all = 0;
+    MPI_Allreduce(&mine, &all, 1, MPI_INT, MPI_MIN, comm_);
+    return all == 1;
+  }
   void begin_run(const AFI::Stepper_settings& s, bool)
   {
     settings_ = &s;
@@ -88,7 +105,7 @@ public:
   /// which process's part holds the degenerate face named by `a` (the caller's numbering), when there are several
   std::string where_face(const AFI::Assembly_statistics& a) const
   {
-    if(d_.size == 1 || !a.degenerate || !context_.original_face) return std::string();
+    if(d_.size == 1 || !a.degenerate || !context_.original_face || d_.part) return std::string();
     const std::vector<std::size_t>& original = *context_.original_face;
     for(std::size_t f = 0; f < original.size(); ++f)
       if(original[f] == a.degenerate_face) return " (in the part of process " + std::to_string(d_.face_owner[f]) + ")";
@@ -214,15 +231,18 @@ public:
     CGAL::Real_timer clock;
     clock.start();
     AFI::count_folds(mesh_.layer, AFI::Ghosted_patch_cache::has_second_derivatives, mesh_.components.of_face,
-                     mesh_.component_edge, X, s);
+                     mesh_.component_edge, X, s, d_.part ? &d_.owned_faces : nullptr, d_.part);
+    if(d_.part) share_folded_edges(comm_, d_, *mesh_.layer.topology, s, true);
     if(stepping_) state_.timing.judge_seconds += clock.time();
   }
   void input_folds(const Control_matrix& X, AFI::Surface_soundness& s) const
   {
     s.folded_edges = AFI::count_folded_edges(*mesh_.layer.topology, mesh_.layer.real_faces, X, mesh_.components.of_face,
-                                             mesh_.component_edge, AFI::turn_120, nullptr, &s.folded_edge_list);
+                                             mesh_.component_edge, AFI::turn_120, d_.part ? &d_.owned_faces : nullptr,
+                                             &s.folded_edge_list, d_.part);
+    if(d_.part) share_folded_edges(comm_, d_, *mesh_.layer.topology, s, false);
   }
-  bool all_finite(const Control_matrix& X) const { return X.allFinite(); }
+  bool all_finite(const Control_matrix& X) const { return everywhere(X.allFinite()); }
   /// the free rows of the whole mesh: a bound's weights are decided on every row, alike on every process
   const std::vector<int>& free_rows() const { return all_free_rows_; }
 
@@ -239,7 +259,8 @@ private:
   std::unique_ptr<Distributed_solver> solver_;
   const AFI::Tangential_motion_filter* filter_ = nullptr;
   std::vector<std::size_t> free_;   // positions in d_.owned_vertices of the free ones
-  std::vector<int> all_free_rows_;  // of the whole mesh
+  std::vector<int> all_free_rows_;  // of the mesh the library was given
+  std::size_t free_count_ = 0;      // of the whole mesh
   const AFI::Stepper_settings* settings_ = nullptr;
   AFI::Step_units units_;
   Control_matrix dZ_;

@@ -16,6 +16,7 @@
 #include "Distributed_layout.h"
 #include "Distributed_solver.h"
 #include "Face_partition.h"
+#include "Part_folds.h"
 #include "Whole_rows.h"
 
 #include <CGAL/Anisotropic_fairing/Isotropic_diffusion_tensor.h>
@@ -52,7 +53,8 @@ std::vector<T> gather_everywhere(MPI_Comm comm, const std::vector<T>& mine)
 }
 
 /// The statistics of every process's faces added up, the same on every process.
-inline AFI::Assembly_statistics reduce_statistics(MPI_Comm comm, const AFI::Assembly_statistics& a)
+inline AFI::Assembly_statistics reduce_statistics(MPI_Comm comm, const AFI::Assembly_statistics& a,
+                                                   const Distributed_layout& d)
 {
   std::vector<double> s = { a.area, a.energy, a.H_integral, a.bounded_H_integral, double(a.degenerate_points),
                             double(a.reversed_faces), double(a.bent_faces) };
@@ -63,10 +65,13 @@ inline AFI::Assembly_statistics reduce_statistics(MPI_Comm comm, const AFI::Asse
   r.area = t[0]; r.energy = t[1]; r.H_integral = t[2]; r.bounded_H_integral = t[3];
   r.degenerate_points = std::size_t(t[4]); r.reversed_faces = std::size_t(t[5]); r.bent_faces = std::size_t(t[6]);
   r.component_area.assign(t.begin() + 7, t.end());
-  r.reversed_face_list = gather_everywhere(comm, a.reversed_face_list);
+  if(d.part) share_reversed_faces(comm, d, a.reversed_face_list, r);
+  else r.reversed_face_list = gather_everywhere(comm, a.reversed_face_list);
   // the degenerate face named: the lowest-numbered of those found
-  unsigned long long face = a.degenerate ? a.degenerate_face : std::numeric_limits<unsigned long long>::max(),
-                     lowest = face;
+  // (a part's faces by their numbers in the whole mesh)
+  const std::size_t named = a.degenerate && d.part ? std::size_t(d.part->global_face(a.degenerate_face, true))
+                                                   : a.degenerate_face;
+  unsigned long long face = a.degenerate ? named : std::numeric_limits<unsigned long long>::max(), lowest = face;
   MPI_Allreduce(&face, &lowest, 1, MPI_UNSIGNED_LONG_LONG, MPI_MIN, comm);
   r.degenerate = lowest != std::numeric_limits<unsigned long long>::max();
   r.degenerate_face = r.degenerate ? std::size_t(lowest) : 0;
@@ -142,7 +147,7 @@ public:
     const AFI::Assembly_statistics a = assembler_.assemble(X, metric_columns, tensor, m, l, with_matrices);
     assembler_.set_prefiltered(nullptr);
     if(with_matrices) { fill(M_, m); fill(L_, l); }
-    return reduce_statistics(comm_, a);
+    return reduce_statistics(comm_, a, d_);
   }
 
   void save()

@@ -40,6 +40,8 @@ struct Run_summary
   std::vector<double> overlap_doubles_received;   // per process: into rows other processes own, over the run
   std::size_t overlap_refreshes = 0;              // how many refreshes moved them
   std::string ksp_type, pc_type;
+  std::string mesh_held = "whole", whole_mesh_why;   // "parts" (Part_run.h), or "whole" and why
+  std::vector<std::size_t> part_vertices;            // per process, the vertices of its part (the parts' run)
   CGAL::Anisotropic_fairing::Fairing_report report;
 };
 

@@ -7,8 +7,9 @@
 // Made from the contiguous blocks of vertices and faces each process read (Mesh_blocks): the face dual graph is
 // built block by block (each edge met at the process of its lower vertex's block) and divided by PETSc's
 // partitioner (MatPartitioning), the faces move to their parts, and each part asks the holders of its vertices'
-// blocks for the faces around them, one ring at a time. A vertex belongs to the process of its face with the
-// lowest number (a vertex on no face: to the process whose block holds it), the same rule on every process.
+// blocks for the faces around them, one ring at a time (the outermost ring's faces dropped where a vertex's faces
+// in the part would make two fans). A vertex belongs to the process of its face with the lowest number (a vertex
+// on no face: to the process whose block holds it), the same rule on every process.
 
 #ifndef AF_DISTRIBUTED_MESH_PART_H
 #define AF_DISTRIBUTED_MESH_PART_H
@@ -41,6 +42,22 @@ struct Mesh_part
   std::vector<double> points;                // 3 per local vertex
   // the halo, grouped by process: the own vertices whose values go to each, the others' that come from each
   std::vector<int> send_count, send_vertices, receive_count, receive_vertices;
+
+  /// The least of every process's values of each vertex at its owner (`columns` per vertex; the other rows as
+  /// they were): the halo run backwards.
+  void minimum_at_owners(MPI_Comm comm, double* values, int columns) const
+  {
+    std::vector<double> out;
+    out.reserve(receive_vertices.size() * std::size_t(columns));
+    for(int v : receive_vertices) out.insert(out.end(), values + std::size_t(v) * columns, values + (v + 1) * columns);
+    const std::vector<double> in = exchange_counted(comm, out, receive_count, send_count, columns);
+    for(std::size_t k = 0; k < send_vertices.size(); ++k)
+      for(int c = 0; c < columns; ++c)
+      {
+        double& x = values[std::size_t(send_vertices[k]) * columns + std::size_t(c)];
+        x = std::min(x, in[k * std::size_t(columns) + std::size_t(c)]);
+      }
+  }
 
   /// The other processes' values of the vertices they own, into this process's rows (`columns` per vertex).
   void refresh(MPI_Comm comm, double* values, int columns) const
@@ -187,9 +204,9 @@ inline std::vector<Incidence> faces_by_vertex(MPI_Comm comm, const std::vector<F
   return around;
 }
 
-// The own faces, then `depth` rings of faces around them (`ring`: each face's), and the vertices of all of them.
+// The own faces, then `depth` rings of faces around them (`ring`: each face's).
 inline void grow_rings(MPI_Comm comm, const std::vector<Incidence>& around, std::int64_t n, int size, int depth,
-                       std::vector<Face_record>& faces, std::vector<int>& ring, std::vector<std::int64_t>& vertices)
+                       std::vector<Face_record>& faces, std::vector<int>& ring)
 {
   std::unordered_set<std::int64_t> has_face, has_vertex;
   std::vector<std::int64_t> frontier;
@@ -200,7 +217,6 @@ inline void grow_rings(MPI_Comm comm, const std::vector<Incidence>& around, std:
     for(std::int64_t v : f.corner)
       if(has_vertex.insert(v).second) frontier.push_back(v);
   }
-  vertices = frontier;
   for(int r = 1; r <= depth; ++r)
   {
     std::vector<Incidence> met = faces_around(comm, frontier, around, n, size);
@@ -214,7 +230,6 @@ inline void grow_rings(MPI_Comm comm, const std::vector<Incidence>& around, std:
       for(std::int64_t v : m.face.corner)
         if(has_vertex.insert(v).second) frontier.push_back(v);
     }
-    vertices.insert(vertices.end(), frontier.begin(), frontier.end());
   }
 }
 
@@ -241,9 +256,53 @@ inline std::vector<Vertex_record> vertex_records(MPI_Comm comm, const Mesh_block
   return af_distributed::exchange(comm, answers);
 }
 
+// The outermost ring's faces around a vertex whose faces in the part make more than one fan (a vertex at the edge
+// of the part, where the faces beyond are missing): dropped, until every vertex's faces make one fan, so that the
+// part is a surface with a border (the library refuses a vertex of two fans). Its own faces and the rings the
+// library reads around them are not touched: only a vertex of the outermost ring has faces missing.
+inline void trim_split_fans(std::vector<Face_record>& faces, std::vector<int>& ring, int depth)
+{
+  for(bool again = true; again;)
+  {
+    again = false;
+    std::unordered_map<std::int64_t, std::vector<std::size_t>> around;
+    for(std::size_t f = 0; f < faces.size(); ++f)
+      for(std::int64_t v : faces[f].corner) around[v].push_back(f);
+    std::vector<char> drop(faces.size(), 0);
+    for(const auto& a : around)
+    {
+      // the fans: faces around the vertex joined by an edge from it (a shared second corner)
+      const std::vector<std::size_t>& f = a.second;
+      std::vector<std::size_t> fan(f.size());
+      for(std::size_t k = 0; k < f.size(); ++k) fan[k] = k;
+      const auto root = [&](std::size_t k) { while(fan[k] != k) k = fan[k] = fan[fan[k]]; return k; };
+      for(std::size_t x = 0; x < f.size(); ++x)
+        for(std::size_t y = x + 1; y < f.size(); ++y)
+          for(std::int64_t p : faces[f[x]].corner)
+            for(std::int64_t q : faces[f[y]].corner)
+              if(p == q && p != a.first) fan[root(x)] = root(y);
+      std::size_t fans = 0;
+      for(std::size_t k = 0; k < f.size(); ++k) fans += root(k) == k ? 1 : 0;
+      if(fans > 1)
+        for(std::size_t k : f)
+          if(ring[k] == depth) drop[k] = again = true;
+    }
+    std::size_t kept = 0;
+    for(std::size_t f = 0; f < faces.size(); ++f)
+      if(!drop[f])
+      {
+        faces[kept] = faces[f];
+        ring[kept++] = ring[f];
+      }
+    faces.resize(kept);
+    ring.resize(kept);
+  }
+}
+
 } // namespace mesh_part_detail
 
-/// This process's part of the mesh read in `blocks`, with `depth` >= 1 rings of faces around its own.
+/// This process's part of the mesh read in `blocks`, with `depth` >= 1 rings of faces around its own (the
+/// outermost ring where its faces make a surface: trim_split_fans).
 inline Mesh_part make_mesh_part(MPI_Comm comm, const Mesh_blocks& blocks, int depth)
 {
   namespace d = mesh_part_detail;
@@ -255,8 +314,11 @@ inline Mesh_part make_mesh_part(MPI_Comm comm, const Mesh_blocks& blocks, int de
   std::vector<d::Face_record> faces = d::own_faces(comm, blocks, rank, size);
   part.owned_faces = faces.size();
   const std::vector<d::Incidence> around = d::faces_by_vertex(comm, faces, n, size);
-  std::vector<std::int64_t> vertices;
-  d::grow_rings(comm, around, n, size, depth, faces, part.face_ring, vertices);
+  d::grow_rings(comm, around, n, size, depth, faces, part.face_ring);
+  d::trim_split_fans(faces, part.face_ring, depth);
+  std::unordered_set<std::int64_t> kept;   // the vertices of the faces left
+  for(const d::Face_record& f : faces) kept.insert(f.corner, f.corner + 3);
+  std::vector<std::int64_t> vertices(kept.begin(), kept.end());
   // the vertices of this process's block on no face
   std::size_t a = 0;
   for(std::int64_t v = block_first(n, rank, size); v < block_first(n, rank + 1, size); ++v)

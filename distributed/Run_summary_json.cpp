@@ -70,6 +70,10 @@ std::string summary_json(const af_tool::Options& o, const Run_summary& s, bool o
   j["per_process"]["matvec_doubles_received"] = s.off_process_columns;
   // the overlap's control points (and M_eps, the limit points) refreshed from their owners
   j["per_process"]["overlap_doubles_received"] = s.overlap_doubles_received;
+  // what a process holds of the mesh: its part, or the whole mesh (and why)
+  j["mesh_held"] = s.mesh_held;
+  if(s.mesh_held == "parts") j["per_process"]["part_vertices"] = s.part_vertices;
+  else j["whole_mesh_why"] = s.whole_mesh_why;
   j["overlap_refreshes"] = s.overlap_refreshes;
   if(ok)
   {
@@ -78,6 +82,14 @@ std::string summary_json(const af_tool::Options& o, const Run_summary& s, bool o
     j["selected_tensor"] = s.report.selected_tensor;
     j["normals"] = s.normals;
     j["held_vertices"] = s.held_vertices;
+    // what the library measured of the whole mesh (as anisotropic_fairing reports it)
+    j["boundary_vertices"] = s.report.boundary_vertices;
+    j["boundary_held_vertices"] = s.report.boundary_held_vertices;
+    j["boundary_loops"] = s.report.boundary_loops;
+    j["isolated_vertices"] = s.report.isolated_vertices;
+    j["components"] = s.report.components;
+    j["mean_edge_length"] = s.report.mean_edge_length;
+    j["noise_level"] = s.report.noise_level;
     j["rejected_steps"] = s.report.rejected_steps;
     j["time_step"] = s.report.time_step;
     j["scale"] = s.report.scale;

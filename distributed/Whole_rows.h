@@ -5,8 +5,8 @@
 // and computes its own vertices' rows; after each change the others' rows come from their owners
 // (MPI_Allgatherv), so that every process holds the same bits and the library's measures of the whole mesh
 // (limit points, folds, the noise level, the risk estimate) give the same numbers, and decisions, on each.
-// The price: every process receives the whole mesh's rows at each refresh (the memory is not divided yet:
-// doc/Anisotropic_fairing/Large_meshes.txt).
+// The price: every process receives the whole mesh's rows at each refresh. A process that holds a part of the
+// mesh (Distributed_layout::part) holds its part's rows, and receives those of its vertices others own (the halo).
 
 #ifndef AF_DISTRIBUTED_WHOLE_ROWS_H
 #define AF_DISTRIBUTED_WHOLE_ROWS_H
@@ -45,6 +45,13 @@ public:
   {
     const int bs = int(X.cols());
     if(bs == 0 || d_.size == 1) return;
+    if(d_.part)   // a part of the mesh: the rows it holds, from their owners (the halo)
+    {
+      d_.part->refresh(X.data(), std::size_t(bs));
+      volume_.doubles_received += double(d_.vertex_owner.size() - d_.owned_vertices.size()) * bs;
+      ++volume_.refreshes;
+      return;
+    }
     std::vector<double> mine;
     mine.reserve(d_.owned_vertices.size() * std::size_t(bs));
     for(int r : d_.owned_vertices)   // in increasing order: the process's PETSc rows

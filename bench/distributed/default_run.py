@@ -8,16 +8,7 @@
 # (144,000 faces) with Gaussian noise of 0.2 mean edge lengths.
 import argparse, json, math, os, random, statistics, subprocess, sys, time
 
-def run(command):
-    start = time.perf_counter()
-    p = subprocess.run(command, capture_output=True, text=True)
-    if p.returncode != 0: sys.exit("failed: %s\n%s" % (" ".join(command), p.stderr))
-    return time.perf_counter() - start
-
-def read_off(path):
-    words = [l.split() for l in open(path).read().split("\n") if l.split() and not l.startswith("#")]
-    n, f = int(words[1][0]), int(words[1][1])
-    return [[float(x) for x in w[:3]] for w in words[2:2 + n]], [[int(x) for x in w[1:4]] for w in words[2 + n:2 + n + f]]
+from mesh_files import read_off, run
 
 def noisy_fertility(tool, work):
     """fertility refined twice, with noise (0.2 mean edge lengths, seed 5), as an OFF file"""

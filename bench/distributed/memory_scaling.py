@@ -5,33 +5,14 @@
 # processes (weak scaling: the mesh beside a translated copy of itself, on 2 processes: each copy one part, so
 # no value crosses between the parts in a CG product); with the values a
 # process receives per CG iteration (its off-process columns, per column of unknowns) and per refresh of the
-# rows every process holds (Whole_rows.h).
-#   python3 bench/distributed/memory_scaling.py --build build [--levels 3] [--work DIR] [--flags "..."]
+# rows every process holds (Whole_rows.h). With --parts the meshes are binary PLY files, which each process reads by
+# blocks and holds its part of (distributed/Part_run.cpp); else every process holds the whole mesh.
+#   python3 bench/distributed/memory_scaling.py --build build [--levels 3] [--work DIR] [--flags "..."] [--parts]
 # The mesh: /work/shared/data/fertility.off refined LEVELS times on its limit surface, with Gaussian noise of
 # 0.2 mean edge lengths; the doubled mesh: it and its copy. Default run: one isotropic step (--flags).
 import argparse, json, math, os, random, subprocess, sys, time
 
-def run(command):
-    start = time.perf_counter()
-    p = subprocess.run(command, capture_output=True, text=True)
-    if p.returncode != 0: sys.exit("failed: %s\n%s" % (" ".join(command), p.stderr))
-    return time.perf_counter() - start
-
-def read_off(path):
-    words = [w for l in open(path) for w in l.split("#")[0].split()]
-    assert words[0] == "OFF"
-    n, m = int(words[1]), int(words[2])
-    at = 4
-    points = [[float(x) for x in words[at + 3 * i:at + 3 * i + 3]] for i in range(n)]
-    at += 3 * n
-    faces = [[int(x) for x in words[at + 4 * j + 1:at + 4 * j + 4]] for j in range(m)]
-    return points, faces
-
-def write_off(path, points, faces):
-    with open(path, "w") as out:
-        out.write("OFF\n%d %d 0\n" % (len(points), len(faces)))
-        out.writelines("%.17g %.17g %.17g\n" % tuple(p) for p in points)
-        out.writelines("3 %d %d %d\n" % tuple(t) for t in faces)
+from mesh_files import read_off, run, write_binary_ply, write_off
 
 def meshes(tool, work, levels):
     """the noisy refined fertility and its doubled copy"""
@@ -51,6 +32,11 @@ def meshes(tool, work, levels):
               faces + [[a + n, b + n, c + n] for a, b, c in faces])
     return single, double
 
+def as_binary_ply(off):
+    target = os.path.splitext(off)[0] + ".ply"
+    if not os.path.exists(target): write_binary_ply(target, *read_off(off))
+    return target
+
 def measure(mpi, mesh, processes, flags, work):
     out = os.path.join(work, "out_np%d_%s" % (processes, os.path.basename(mesh)))
     report = out + ".json"
@@ -66,19 +52,22 @@ def main():
     ap.add_argument("--levels", type=int, default=3)
     ap.add_argument("--work", default="/tmp/af_memory_scaling")
     ap.add_argument("--flags", default="--tensor isotropic --relative-time-step 1e-3 --steps 1 --stop off")
+    ap.add_argument("--parts", action="store_true", help="the meshes as binary PLY: each process holds its part")
     a = ap.parse_args()
     os.environ.setdefault("OMP_NUM_THREADS", "1")
     os.makedirs(a.work, exist_ok=True)
     tool, mpi = os.path.join(a.build, "bin", "anisotropic_fairing"), os.path.join(a.build, "bin", "anisotropic_fairing_mpi")
     single, double = meshes(tool, a.work, a.levels)
+    if a.parts: single, double = as_binary_ply(single), as_binary_ply(double)
     flags = a.flags.split()
-    print("run: %s" % a.flags)
+    print("run: %s (%s)" % (a.flags, "each process holds its part of the mesh" if a.parts else "every process holds the whole mesh"))
     print("| mesh | faces | processes | wall s | flow s | peak MB per process | CG its | values received per CG product, per process "
           "| doubles received per refresh of the whole rows, per process |")
     print("|---|---:|---:|---:|---:|---|---:|---|---:|")
     peaks = {}
     for mesh, processes in ((single, 1), (single, 2), (double, 2)):
         wall, j = measure(mpi, mesh, processes, flags, a.work)
+        if (j["mesh_held"] == "parts") != a.parts: sys.exit("the mesh was held %s: %s" % (j["mesh_held"], j.get("whole_mesh_why")))
         per = j["per_process"]
         peaks[(mesh, processes)] = per["peak_memory_mb"]
         refresh = max(per["overlap_doubles_received"]) / max(1, j["overlap_refreshes"])

@@ -225,6 +225,9 @@ def run_case():
             held_rows = json.load(open(os.path.join(args.work, name + "_serial.ply.json")))["bound_held_vertices"]
             if held_rows == 0: sys.exit("FAIL: %s: the bound held no row" % name)
     elif case == "failures": failures(args, closed)
+    elif case == "parts":
+        import part_cases
+        part_cases.parts(args, run, mpi, {"two_components": two_components, "with_isolated_vertex": with_isolated_vertex})
     elif case == "mesh_part":
         # --mpi names the test program test_mesh_part here: its own checks, on 1, 2 and 3 processes
         for np in (1, 2, 3): print(run(mpi(args, np, args.data)).stdout)

@@ -2,8 +2,9 @@
 // would read of the file, against the whole mesh every process of this test reads as its truth:
 // - every face is one process's own and every vertex one process's, the vertex's the process of its face with the
 //   lowest number (a vertex on no face: the process whose block holds it);
-// - the faces a part holds besides its own are exactly those within `depth` rings, each in its ring, with the
-//   corners, in their order, and the positions of the whole mesh;
+// - the faces a part holds besides its own are those within `depth` rings, each in its ring, with the corners, in
+//   their order, and the positions of the whole mesh: all of them but faces of the outermost ring, and each
+//   vertex's faces make one fan (the part is a surface: trim_split_fans);
 // - the halo brings every vertex a part holds but does not own its owner's value;
 // - the parts are balanced (at most 25% above an even share of the faces).
 // Run under mpiexec on 1, 2 and 3 processes (distributed_test.py, case mesh_part), on a closed mesh, a mesh with a
@@ -36,6 +37,37 @@ void check(MPI_Comm comm, bool ok, const std::string& what)
   MPI_Allreduce(&mine, &all, 1, MPI_INT, MPI_MIN, comm);
   if(rank_of_world() == 0) std::printf("%s: %s\n", all ? "passed" : "FAILED", what.c_str());
   failures += all ? 0 : 1;
+}
+
+// whether the faces around each vertex of the part make one fan (joined by the edges from the vertex)
+bool one_fan_each(const af_distributed::Mesh_part& part)
+{
+  std::vector<std::vector<std::size_t>> around(part.global_vertex.size());
+  for(std::size_t f = 0; f < part.faces.size(); ++f)
+    for(int v : part.faces[f]) around[std::size_t(v)].push_back(f);
+  for(std::size_t v = 0; v < around.size(); ++v)
+  {
+    std::vector<char> reached(around[v].size(), 0);
+    std::vector<std::size_t> stack{ 0 };
+    if(around[v].empty()) continue;
+    reached[0] = 1;
+    while(!stack.empty())
+    {
+      const std::size_t x = stack.back();
+      stack.pop_back();
+      for(std::size_t y = 0; y < around[v].size(); ++y)
+        for(int p : part.faces[around[v][x]])
+          for(int q : part.faces[around[v][y]])
+            if(!reached[y] && p == q && std::size_t(p) != v)
+            {
+              reached[y] = 1;
+              stack.push_back(y);
+            }
+    }
+    for(char r : reached)
+      if(!r) return false;
+  }
+  return true;
 }
 
 void part_of(const std::string& name, const std::vector<Point>& points,
@@ -108,14 +140,15 @@ void part_of(const std::string& name, const std::vector<Point>& points,
         }
     frontier = next;
   }
-  std::size_t expected_faces = 0;
-  for(int r : ring) expected_faces += r >= 0 ? 1 : 0;
-  bool rings = part.global_face.size() == expected_faces, corners = true, positions = true;
+  std::size_t inner_faces = 0, held_inner = 0;   // within depth - 1 rings: all held
+  for(int r : ring) inner_faces += r >= 0 && r < depth ? 1 : 0;
+  bool rings = true, corners = true, positions = true;
   for(std::size_t f = 0; f < part.global_face.size(); ++f)
   {
     const std::size_t g = std::size_t(part.global_face[f]);
-    rings = rings && ring[g] == part.face_ring[f] && (f < part.owned_faces) == (ring[g] == 0) &&
+    rings = rings && ring[g] >= 0 && ring[g] == part.face_ring[f] && (f < part.owned_faces) == (ring[g] == 0) &&
             part.face_owner[f] == all_owner[g];
+    held_inner += ring[g] < depth ? 1 : 0;
     for(int k = 0; k < 3; ++k)
       corners = corners && part.global_vertex[std::size_t(part.faces[f][std::size_t(k)])] ==
                              std::int64_t(polygons[g][std::size_t(k)]);
@@ -123,8 +156,9 @@ void part_of(const std::string& name, const std::vector<Point>& points,
   for(std::size_t v = 0; v < part.global_vertex.size(); ++v)
     for(int c = 0; c < 3; ++c)
       positions = positions && part.points[3 * v + std::size_t(c)] == points[std::size_t(part.global_vertex[v])][c];
-  check(comm, rings, on + "the part holds exactly the faces within " + std::to_string(depth) +
-                          " rings, each in its ring, with its owner");
+  check(comm, rings && held_inner == inner_faces, on + "the part holds the faces within " + std::to_string(depth) +
+                                                   " rings (all but the outermost's), each in its ring, with its owner");
+  check(comm, one_fan_each(part), on + "each vertex's faces in the part make one fan");
   check(comm, corners && positions, on + "with the whole mesh's corners, in their order, and positions");
 
   // the halo

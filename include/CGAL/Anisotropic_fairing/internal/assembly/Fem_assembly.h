@@ -55,6 +55,7 @@ struct Assembly_statistics
   std::size_t reversed_faces = 0;     // faces whose limit normal turns within the face by more than the angle
   std::size_t bent_faces = 0;         // ... of Assembly_context::folded_turn, and of bent_turn (Step_safety.h)
   std::vector<std::size_t> reversed_face_list;   // which faces are reversed (the cache's numbers)
+  std::size_t judged_reversed_faces = std::size_t(-1);   // a distributed run's process judges the first (its own)
   std::vector<double> component_area; // per connected component (when the assembler knows them)
 
   void add(const Assembly_statistics& o)

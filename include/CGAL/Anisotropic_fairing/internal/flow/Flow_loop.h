@@ -104,9 +104,9 @@ private:
   // the units, the input's operator, the criteria's measures and the soundness and noise level of the start
   bool start()
   {
-    report_.vertices = std::size_t(Z_.rows());
+    report_.vertices = op_.vertex_count();
     nfree_ = op_.free_count();
-    report_.constrained_vertices = std::size_t(Z_.rows()) - nfree_;
+    report_.constrained_vertices = report_.vertices - nfree_;
     const std::string unsupported = op_.unsupported(s_, fixed_);
     if(!unsupported.empty()) { fail(report_, Fairing_status::SOLVER_FAILED, unsupported, total_); return false; }
     op_.begin_run(s_, fixed_);
@@ -245,7 +245,7 @@ private:
     if(noise_stop_ && finite && !bound_->active())
     {
       op_.measured_positions(Zc_, Y_);
-      if(Y_.allFinite())
+      if(op_.all_finite(Y_))
       {
         candidate_discrepancy_ = s_.noise->relative_displacement(Y_, Z0_, {});
         const auto verdict =
@@ -380,8 +380,8 @@ private:
       if(candidate_.finite) op_.count_folds(Zc_, candidate_);
       const Known_fold_places known = [this](const Surface_soundness& c) {
         const Ghost_layer& layer = op_.mesh().layer;
-        return folds_at_known_places(*layer.topology, layer.real_faces, accepted_, input_fold_edges_, allowed_folds_,
-                                     c);
+        return op_.everywhere(
+          folds_at_known_places(*layer.topology, layer.real_faces, accepted_, input_fold_edges_, allowed_folds_, c));
       };
       if(candidate_.finite && edges_folded(accepted_, input_folds_, candidate_, why, known))
         verdict = Step_verdict::UNSOUND;
@@ -514,6 +514,7 @@ private:
     st.max_displacement = 0;
     for(Eigen::Index i = 0; i < Z_.rows(); ++i)
       st.max_displacement = std::max(st.max_displacement, (Z_.row(i) - Z0_.row(i)).head(metric_columns_).norm());
+    st.max_displacement = op_.largest(st.max_displacement);
     op_.measured_positions(Z_, Y_);
     st.noise_displacement = s_.noise->relative_displacement(Y_, Z0_, {});
   }

@@ -21,6 +21,7 @@
 #define CGAL_ANISOTROPIC_FAIRING_INTERNAL_FLOW_NOISE_CORRELATION_H
 
 #include <CGAL/Anisotropic_fairing/internal/flow/Ring_plane.h>
+#include <CGAL/Anisotropic_fairing/internal/mesh/Process_part.h>
 #include <CGAL/Anisotropic_fairing/internal/mesh/Triangle_topology.h>
 #include <CGAL/Anisotropic_fairing/internal/types/Parallel_blocks.h>
 
@@ -77,7 +78,7 @@ namespace noise_correlation_detail {
 template <std::size_t F>
 std::array<std::pair<double, double>, F> lag_correlations(const Triangle_topology& topo,
                                                           const std::array<const std::vector<double>*, F>& field,
-                                                          const std::array<double, F>& clip)
+                                                          const std::array<double, F>& clip, const Part_view& part)
 {
   const std::size_t n = field[0]->size();
   const auto value = [&](std::size_t f, int j) {
@@ -126,15 +127,18 @@ std::array<std::pair<double, double>, F> lag_correlations(const Triangle_topolog
       }
     }
   });
-  // Pearson's correlation over the vertices that have both, summed in vertex order
+  // Pearson's correlation over the vertices that have both, summed in vertex order (a process: its own vertices'
+  // sums, summed over the processes)
   const auto correlation = [&](std::size_t f, const std::vector<double>& mean) {
-    double sx = 0, sy = 0, sxx = 0, syy = 0, sxy = 0, count = 0;
+    std::vector<double> sums(6, 0.0);
     for(std::size_t i = 0; i < n; ++i)
     {
       const double x = value(f, int(i)), y = mean[i];
-      if(std::isnan(x) || std::isnan(y)) continue;
-      sx += x; sy += y; sxx += x * x; syy += y * y; sxy += x * y; count += 1;
+      if(std::isnan(x) || std::isnan(y) || !part.owns_vertex(i)) continue;
+      sums[0] += x; sums[1] += y; sums[2] += x * x; sums[3] += y * y; sums[4] += x * y; sums[5] += 1;
     }
+    part.sum(sums);
+    const double sx = sums[0], sy = sums[1], sxx = sums[2], syy = sums[3], sxy = sums[4], count = sums[5];
     if(count < 3) return std::nan("");
     const double cxy = sxy - sx * sy / count, cxx = sxx - sx * sx / count, cyy = syy - sy * sy / count;
     return cxx > 0 && cyy > 0 ? cxy / std::sqrt(cxx * cyy) : std::nan("");
@@ -147,9 +151,9 @@ std::array<std::pair<double, double>, F> lag_correlations(const Triangle_topolog
 } // namespace noise_correlation_detail
 
 /// `field` averaged once with its ring's mean (half each) at the first `n` vertices of the topology; a vertex
-/// without a fan keeps its value.
+/// without a fan keeps its value; a process's own vertices' values then go to the others (`part`).
 inline std::vector<double> averaged_with_ring(const Triangle_topology& topo, const std::vector<double>& field,
-                                              std::size_t n)
+                                              std::size_t n, const Part_view& part = Part_view())
 {
   std::vector<double> out = field;
   parallel_blocks(std::min(field.size(), n), [&](std::size_t first, std::size_t last) {
@@ -163,17 +167,24 @@ inline std::vector<double> averaged_with_ring(const Triangle_topology& topo, con
       if(!ring.empty()) out[i] = 0.5 * field[i] + 0.5 * sum / double(ring.size());
     }
   });
+  part.refresh(out);
   return out;
 }
 
 /// `field` scaled to unit root mean square over its first `n` values (all: n = 0), the whole field with them (left as
 /// it is when they are zero).
-inline void to_unit_rms(std::vector<double>& field, std::size_t n = 0)
+inline void to_unit_rms(std::vector<double>& field, std::size_t n = 0, const Part_view& part = Part_view())
 {
   const std::size_t m = n > 0 ? std::min(n, field.size()) : field.size();
-  double square = 0;
-  for(std::size_t i = 0; i < m; ++i) square += field[i] * field[i];
-  const double rms = std::sqrt(square / double(std::max<std::size_t>(m, 1)));
+  std::vector<double> sums(2, 0.0);   // of squares, and the values counted: a process's own vertices'
+  for(std::size_t i = 0; i < m; ++i)
+    if(part.owns_vertex(i))
+    {
+      sums[0] += field[i] * field[i];
+      sums[1] += 1;
+    }
+  part.sum(sums);
+  const double rms = std::sqrt(sums[0] / std::max(sums[1], 1.0));
   if(rms > 0)
     for(double& x : field) x /= rms;
 }
@@ -184,7 +195,7 @@ inline void to_unit_rms(std::vector<double>& field, std::size_t n = 0)
 /// `n` vertices, which it returns. `b` holds a number for every vertex of the topology (a border vertex's ring
 /// reaches ghosts, Ghost_layer.h); its first `n` where the reading is not corrected.
 inline std::vector<double> correlated_like(const Triangle_topology& topo, const std::vector<double>& b, std::size_t n,
-                                           const Noise_correlation& c)
+                                           const Noise_correlation& c, const Part_view& part = Part_view())
 {
   CGAL_precondition(b.size() >= topo.number_of_vertices() && b.size() >= n);
   std::vector<double> lower = b;
@@ -192,14 +203,14 @@ inline std::vector<double> correlated_like(const Triangle_topology& topo, const 
   {
     const int below = int(std::floor(c.k));
     const double t = c.k - below;
-    for(int k = 0; k < below; ++k) lower = averaged_with_ring(topo, lower, n);
-    to_unit_rms(lower, n);
+    for(int k = 0; k < below; ++k) lower = averaged_with_ring(topo, lower, n, part);
+    to_unit_rms(lower, n, part);
     if(t > 0)
     {
-      std::vector<double> upper = averaged_with_ring(topo, lower, n);
-      to_unit_rms(upper, n);
+      std::vector<double> upper = averaged_with_ring(topo, lower, n, part);
+      to_unit_rms(upper, n, part);
       for(std::size_t i = 0; i < lower.size(); ++i) lower[i] = (1 - t) * lower[i] + t * upper[i];
-      to_unit_rms(lower, n);
+      to_unit_rms(lower, n, part);
     }
   }
   lower.resize(n);
@@ -214,7 +225,8 @@ typedef std::array<std::vector<double>, correlation_steps + 1> Correlated_null_s
 /// robust deviation).
 inline Noise_correlation measure_noise_correlation(const Triangle_topology& topo, const std::vector<double>& samples,
                                                    double sigma, const Correlated_null_samples& null,
-                                                   const std::array<double, correlation_steps + 1>& null_sigma)
+                                                   const std::array<double, correlation_steps + 1>& null_sigma,
+                                                   const Part_view& part = Part_view())
 {
   namespace d = noise_correlation_detail;
   Noise_correlation c;
@@ -228,7 +240,7 @@ inline Noise_correlation measure_noise_correlation(const Triangle_topology& topo
     field[k + 1] = &null[k];
     clip[k + 1] = 3 * null_sigma[k];
   }
-  const std::array<std::pair<double, double>, F> lags = d::lag_correlations(topo, field, clip);
+  const std::array<std::pair<double, double>, F> lags = d::lag_correlations(topo, field, clip, part);
   std::tie(c.lag1, c.lag2) = lags[0];
   const std::pair<double, double>* curve = lags.data() + 1;
   if(std::isnan(c.lag1) || std::isnan(c.lag2)) return c;

@@ -55,9 +55,12 @@ class Noise_estimate
 public:
   /// `X`: the input's real vertices (first 3 columns: the geometry); `usable[i]`: vertex i may be
   /// sampled (an interior vertex with a closed fan, not held by the user); `keys`: each vertex's of the topology,
-  /// which the reference noise is drawn by (Vertex_keys.h; empty: the vertex's number).
+  /// which the reference noise is drawn by (Vertex_keys.h; empty: the vertex's number); `part`: the part of the
+  /// mesh a process holds (Process_part.h: its own vertices are its samples; none: the whole mesh).
   Noise_estimate(const Triangle_topology& topo, const Control_matrix& X, const std::vector<bool>& usable,
-                 const std::vector<std::uint64_t>& keys = std::vector<std::uint64_t>())
+                 const std::vector<std::uint64_t>& keys = std::vector<std::uint64_t>(),
+                 const Part_view* part = nullptr)
+    : part_(part ? part : &whole_mesh_view())
   {
     const std::size_t n = std::size_t(X.rows());
     normal_.assign(3 * n, 0.0);
@@ -82,20 +85,21 @@ public:
       }
     });
     measure_differences(topo, height, across, keys);
-    std::vector<double> samples;
-    for(double v : normal_sample_)
-      if(!std::isnan(v)) samples.push_back(v);
+    // a process's samples are its own vertices', read with its neighbours' as their owners read them
+    for(std::vector<double>* f : { &normal_sample_, &tangential_sample_, &normal_null_, &tangential_null_ })
+      part_->refresh(*f);
+    for(std::vector<double>& f : correlated_null_) part_->refresh(f);
+    std::vector<double> samples = own_values(normal_sample_);
     samples_ = samples.size();
     read_sigma_ = robust_deviation(samples);
     std::array<double, correlation_steps + 1> null_sigma;
     for(std::size_t k = 0; k < null_sigma.size(); ++k)
     {
-      std::vector<double> v;
-      for(double x : correlated_null_[k])
-        if(!std::isnan(x)) v.push_back(x);
+      std::vector<double> v = own_values(correlated_null_[k]);
       null_sigma[k] = robust_deviation(v);
     }
-    correlation_ = measure_noise_correlation(topo, normal_sample_, read_sigma_, correlated_null_, null_sigma);
+    correlation_ =
+      measure_noise_correlation(topo, normal_sample_, read_sigma_, correlated_null_, null_sigma, *part_);
     relative_sigma_ = read_sigma_ * correlation_.factor();
   }
 
@@ -131,7 +135,7 @@ public:
     v.reserve(edge_.size());
     for(std::size_t i = 0; i < edge_.size(); ++i)
     {
-      if(!has_height_[i]) continue;
+      if(!has_height_[i] || !part_->owns_vertex(i)) continue;
       const Eigen::Index r = row_of.empty() ? Eigen::Index(i) : Eigen::Index(row_of[i]);
       double s = 0;
       for(int a = 0; a < 3; ++a) s += (Y(r, a) - X0(r, a)) * normal_[3 * i + std::size_t(a)];
@@ -139,14 +143,25 @@ public:
     }
     if(rms)
     {
-      double sum = 0;
-      for(double x : v) sum += x * x;
-      return v.empty() ? 0.0 : std::sqrt(sum / double(v.size()));
+      std::vector<double> sums{ 0.0, double(v.size()) };
+      for(double x : v) sums[0] += x * x;
+      part_->sum(sums);
+      return sums[1] > 0 ? std::sqrt(sums[0] / sums[1]) : 0.0;
     }
+    v = part_->gathered(std::move(v));
     return robust_deviation(v);
   }
 
 private:
+  // the measured (not NaN) values of `field` at every process's own vertices
+  std::vector<double> own_values(const std::vector<double>& field) const
+  {
+    std::vector<double> v;
+    for(std::size_t i = 0; i < field.size(); ++i)
+      if(!std::isnan(field[i]) && part_->owns_vertex(i)) v.push_back(field[i]);
+    return part_->gathered(std::move(v));
+  }
+
   // d_i and the norm of row i of (I - W)^2, over vertices whose whole ring has a height (NaN: none), the same of
   // the in-plane offsets and of unit noise; the samples are then taken in vertex order, as one loop would
   void measure_differences(const Triangle_topology& topo, const std::vector<double>& height,
@@ -165,7 +180,7 @@ private:
     }
     normal_null_.assign(n, std::nan(""));
     tangential_null_.assign(n, std::nan(""));
-    const Correlated_null_samples field = averaged_unit_noise(topo, unit_noise, n);
+    const Correlated_null_samples field = averaged_unit_noise(topo, unit_noise, n, *part_);
     for(auto& v : correlated_null_) v.assign(n, std::nan(""));
     parallel_blocks(n, [&](std::size_t first, std::size_t last) {
       std::vector<int> ring, inner;
@@ -218,19 +233,21 @@ private:
   }
 
   // The first column of `unit_noise` averaged k = 0..correlation_steps times with its ring's mean (half each) at
-  // the first `n` vertices (a ghost vertex's fan is open: it keeps its value), each scaled to unit root mean square.
+  // the first `n` vertices (a ghost vertex's fan is open: it keeps its value), each scaled to unit root mean square
+  // over them.
   static Correlated_null_samples averaged_unit_noise(const Triangle_topology& topo, const Control_matrix& unit_noise,
-                                                     std::size_t n)
+                                                     std::size_t n, const Part_view& part)
   {
     const std::size_t m = std::size_t(unit_noise.rows());
     Correlated_null_samples field;
     field[0].resize(m);
     for(std::size_t i = 0; i < m; ++i) field[0][i] = unit_noise(Eigen::Index(i), 0);
-    for(std::size_t k = 1; k < field.size(); ++k) field[k] = averaged_with_ring(topo, field[k - 1], n);
-    for(std::vector<double>& f : field) to_unit_rms(f);
+    for(std::size_t k = 1; k < field.size(); ++k) field[k] = averaged_with_ring(topo, field[k - 1], n, part);
+    for(std::vector<double>& f : field) to_unit_rms(f, n, part);
     return field;
   }
 
+  const Part_view* part_;
   std::vector<double> normal_, edge_, normal_sample_, tangential_sample_, normal_null_, tangential_null_;
   std::vector<char> has_height_;   // (not vector<bool>: written from several threads)
   // the signed samples of unit noise averaged k times with its ring's mean, in units of its deviation

@@ -50,7 +50,10 @@ public:
 
   const Flow_mesh& mesh() const { return mesh_; }
   std::string unsupported(const Stepper_settings&, bool) const { return std::string(); }
+  std::size_t vertex_count() const { return rows_; }
   std::size_t free_count() const { return block_.size(); }
+  double largest(double x) const { return x; }
+  bool everywhere(bool b) const { return b; }
   /// A run starts: its settings, and whether the surface is fixed (attributes only).
   void begin_run(const Stepper_settings& s, bool fixed)
   {

@@ -22,6 +22,7 @@
 #include <CGAL/Anisotropic_fairing/internal/types/Parallel_blocks.h>
 #include <CGAL/Anisotropic_fairing/internal/assembly/Fem_assembly.h>
 #include <CGAL/Anisotropic_fairing/internal/mesh/Ghost_layer.h>
+#include <CGAL/Anisotropic_fairing/internal/mesh/Process_part.h>
 #include <CGAL/Anisotropic_fairing/internal/mesh/Triangle_topology.h>
 #include <CGAL/Anisotropic_fairing/internal/loop/Vertex_limit_masks.h>
 
@@ -62,7 +63,7 @@ inline double face_cross_product(const Triangle_topology& topo, std::size_t f, c
 inline std::size_t count_folded_edges(const Triangle_topology& topo, std::size_t real_faces, const Control_matrix& Y,
                                       const std::vector<int>& face_component, const std::vector<double>& edge,
                                       double turn = turn_120, const std::vector<std::size_t>* faces = nullptr,
-                                      std::vector<int>* where = nullptr)
+                                      std::vector<int>* where = nullptr, const Part_view* part = nullptr)
 {
   auto normal = [&](std::size_t f, double* n) {
     const double h = edge[std::size_t(face_component[f])];
@@ -81,7 +82,10 @@ inline std::size_t count_folded_edges(const Triangle_topology& topo, std::size_t
       {
         const int h = faces ? int(3 * (*faces)[i / 3] + i % 3) : int(i);
         const int o = topo.opposite(h);
-        if(o < h || std::size_t(topo.face_of(o)) >= real_faces) continue;   // each interior edge once
+        if(o < 0 || std::size_t(topo.face_of(o)) >= real_faces) continue;
+        // each interior edge once: from its lower halfedge; between two processes' faces, by one of them
+        const std::size_t f = std::size_t(topo.face_of(h)), g = std::size_t(topo.face_of(o));
+        if(part && !part->owns_face(g) ? !part->counts_edge(f, g) : o < h) continue;
         double a[3], b[3];
         const double la = normal(std::size_t(topo.face_of(h)), a), lb = normal(std::size_t(topo.face_of(o)), b);
         if(!(la > 0) || !(lb > 0)) continue;
@@ -108,6 +112,9 @@ struct Surface_soundness
   std::size_t folded_edges = 0, bent_edges = 0;   // turning by more than 120 and 110 degrees
   std::vector<int> folded_edge_list;   // a halfedge of each folded edge
   bool finite = true;
+  // a process of a distributed run holds the folds of its part, and judges the first of the list (its own
+  // edges'), the others' only marking places (Fold_sites::hold; the reversed faces: Assembly_statistics)
+  std::size_t judged_edges = std::size_t(-1);
 
   /// edges of the written mesh and faces of the limit surface where the normal turns by more than 120 degrees
   std::size_t folds() const { return folded_edges + statistics.reversed_faces; }
@@ -118,16 +125,19 @@ struct Surface_soundness
 /// The folded (and nearly folded) edges of the surface of X: of its limit points for the Loop element
 /// (`loop`), whatever is written: a control mesh oscillates about its surface, and its edges fold
 /// where the surface does not.
+/// A process of a distributed run counts the edges of its own `faces` it judges (`part`).
 inline void count_folds(const Ghost_layer& layer, bool loop, const std::vector<int>& face_component,
-                        const std::vector<double>& edge, const Control_matrix& X, Surface_soundness& s)
+                        const std::vector<double>& edge, const Control_matrix& X, Surface_soundness& s,
+                        const std::vector<std::size_t>* faces = nullptr, const Part_view* part = nullptr)
 {
   Control_matrix Y;
   if(loop) limit_points(layer, X, Y);
   const Control_matrix& P = loop ? Y : X;
   s.folded_edge_list.clear();
-  s.folded_edges = count_folded_edges(*layer.topology, layer.real_faces, P, face_component, edge, turn_120, nullptr,
-                                      &s.folded_edge_list);
-  s.bent_edges = count_folded_edges(*layer.topology, layer.real_faces, P, face_component, edge, turn_110);
+  s.folded_edges = count_folded_edges(*layer.topology, layer.real_faces, P, face_component, edge, turn_120, faces,
+                                      &s.folded_edge_list, part);
+  s.bent_edges = count_folded_edges(*layer.topology, layer.real_faces, P, face_component, edge, turn_110, faces,
+                                    nullptr, part);
 }
 
 /// The places where a surface was folded: the vertices of its folded edges' and reversed faces' triangles
@@ -164,15 +174,19 @@ public:
     }
   }
 
-  /// whether every fold of `s` (its folded edges and reversed faces) lies at these places
+  /// whether every fold of `s` (its folded edges and reversed faces, those it judges) lies at these places
   bool hold(const Surface_soundness& s) const
   {
-    if(marked_.empty()) return s.folded_edges == 0 && s.statistics.reversed_faces == 0;
-    for(int h : s.folded_edge_list)
+    const std::vector<int>& edges = s.folded_edge_list;
+    const std::vector<std::size_t>& faces = s.statistics.reversed_face_list;
+    for(std::size_t k = 0; k < edges.size() && k < s.judged_edges; ++k)
+    {
+      const int h = edges[k];
       if(!touches(std::size_t(topo_.face_of(h))) && !touches(std::size_t(topo_.face_of(topo_.opposite(h)))))
         return false;
-    for(std::size_t f : s.statistics.reversed_face_list)
-      if(!touches(f)) return false;
+    }
+    for(std::size_t k = 0; k < faces.size() && k < s.statistics.judged_reversed_faces; ++k)
+      if(!touches(faces[k])) return false;
     return true;
   }
 
@@ -180,6 +194,7 @@ private:
   void mark_face(std::size_t f) { for(int v : topo_.face(f)) marked_[std::size_t(v)] = 1; }
   bool touches(std::size_t f) const
   {
+    if(marked_.empty()) return false;   // nothing marked
     for(int v : topo_.face(f)) if(marked_[std::size_t(v)]) return true;
     return false;
   }

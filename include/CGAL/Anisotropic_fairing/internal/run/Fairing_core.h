@@ -29,6 +29,7 @@
 #include <CGAL/Anisotropic_fairing/internal/mesh/Ghost_layer.h>
 #include <CGAL/Anisotropic_fairing/internal/mesh/Locality_ordering.h>
 #include <CGAL/Anisotropic_fairing/internal/mesh/Mesh_components.h>
+#include <CGAL/Anisotropic_fairing/internal/mesh/Process_part.h>
 #include <CGAL/Anisotropic_fairing/internal/mesh/Vertex_keys.h>
 
 #include <CGAL/Real_timer.h>
@@ -77,7 +78,7 @@ public:
                const std::function<bool(const Fairing_step&)>& callback, const Elements& elements = Elements())
     : in_(in), given_(given), s_(given.settings), tensor_(tensor), callback_(callback), elements_(elements),
       n_(std::size_t(in.points.rows())), setup_(started_timer()), ordering_(make_locality_ordering(in.layer)),
-      layer_(ordering_.layer)
+      layer_(ordering_.layer), part_(elements.part(), ordering_)
   {
     number_rows();   // after this, the run reads neither in.layer nor in.points
     mark_rows();
@@ -107,7 +108,7 @@ public:
   {
     if(given_.element == Finite_element::LOOP)
     {
-      const typename Elements::Loop_cache cache = elements_.loop_cache(layer_, given_.quadrature);
+      const typename Elements::Loop_cache cache = elements_.loop_cache(layer_, given_.quadrature, part_);
       const bool curve = given_.boundary == Boundary_handling::HOLD_BOUNDARY_CURVE;
       boundary_held_ = hold(boundary_constrained_vertices(layer_, cache, curve));
       setup_seconds_ = setup_.time();
@@ -182,15 +183,13 @@ private:
     keys_ = vertex_keys(layer_, X_);
   }
 
-  // the layer's border and isolated rows; the rows written back: all but the user's held, border and
-  // isolated ones
+  // the layer's border and isolated rows; the rows written back: all but the user's held, border and isolated ones
   void mark_rows()
   {
     border_.assign(n_, false);
     isolated_.assign(n_, false);
     for(int v : layer_.boundary_vertices) border_[std::size_t(v)] = true;
-    // on no surface: nothing to fair
-    for(int v : layer_.isolated_vertices) isolated_[std::size_t(v)] = constrained_[std::size_t(v)] = true;
+    for(int v : layer_.isolated_vertices) isolated_[std::size_t(v)] = constrained_[std::size_t(v)] = true;   // no face
     written_.resize(n_);
     for(std::size_t i = 0; i < n_; ++i) written_[i] = !constrained_[i] && !border_[i];
   }
@@ -201,8 +200,8 @@ private:
   // the units of relative parameters, per connected component
   void measure_units()
   {
-    components_ = make_mesh_components(*layer_.topology, n_, layer_.real_faces);
-    mean_edge_ = component_mean_edges(*layer_.topology, layer_.real_faces, components_, X_, component_edge_);
+    components_ = make_mesh_components(*layer_.topology, n_, layer_.real_faces, part_);
+    mean_edge_ = component_mean_edges(*layer_.topology, layer_.real_faces, components_, X_, component_edge_, part_);
   }
 
   // the rows that sample the noise: neither held nor on the border
@@ -225,16 +224,15 @@ private:
   // the noise, from the mesh itself, and its deviation at each vertex in model units
   void estimate_noise()
   {
-    noise_.reset(new Noise_estimate(*layer_.topology, X_, sampled_rows(), keys_));
+    noise_.reset(new Noise_estimate(*layer_.topology, X_, sampled_rows(), keys_, &part_));
     s_.noise = noise_.get();
     noise_sigma_.assign(n_, 0.0);
     for(std::size_t i = 0; i < n_; ++i)
       if(components_.of_vertex[i] >= 0)
         noise_sigma_[i] = noise_->relative_sigma() * component_edge_[std::size_t(components_.of_vertex[i])];
-    // the risk estimate's probe, as correlated over the surface as the noise read (independent where it is not); drawn
-    // at the ghosts too, which the rings of border vertices reach
+    // the risk estimate's probe, as correlated as the noise read (drawn at the ghosts too: border rings reach them)
     probe_values_ =
-      correlated_like(*layer_.topology, risk_probe_values(keys_.size(), keys_), n_, noise_->correlation());
+      correlated_like(*layer_.topology, risk_probe_values(keys_.size(), keys_), n_, noise_->correlation(), part_);
   }
 
   // the noise stop measures the limit surface, the surface faired, whichever positions are written: a
@@ -281,7 +279,7 @@ private:
   std::size_t hold(const std::vector<bool>& held)
   {
     for(std::size_t i = 0; i < n_; ++i) constrained_[i] = constrained_[i] || held[i];
-    return std::size_t(std::count(held.begin(), held.begin() + std::ptrdiff_t(n_), true));
+    return whole_count(held, n_, part_);
   }
 
   // the runs on one element's cache: the run's own flow, then the default run's comparison and strength
@@ -517,11 +515,13 @@ private:
     const Column_bound& geometry = bounds[0];
     const Column_bound& values = bounds[1];
     std::vector<bool> moved(n_, false);
+    const std::vector<bool> own_written = part_.own(written_);
     clamp_to_bound(Y, start, geometry, written_, moved);
     clamp_to_bound(Y, start, values, written_, moved);
-    r.clamped_vertices = std::size_t(std::count(moved.begin(), moved.end(), true));
-    r.largest_deviation = largest_written_deviation(Y, start, geometry, written_);
-    r.largest_attribute_deviation = largest_written_deviation(Y, start, values, written_) / attribute_scale();
+    r.clamped_vertices = whole_count(moved, n_, part_);
+    r.largest_deviation = part_.maximum(largest_written_deviation(Y, start, geometry, own_written));
+    r.largest_attribute_deviation =
+      part_.maximum(largest_written_deviation(Y, start, values, own_written)) / attribute_scale();
     r.attribute_maximum_deviation = given_.settings.attribute_maximum_deviation;
   }
 
@@ -531,10 +531,11 @@ private:
     Fairing_result out;
     Fairing_report& report = out.report = report_;
     const Eigen::Index d = in_.attributes.cols();
-    report.boundary_vertices = layer_.boundary_vertices.size();
+    report.boundary_vertices = whole_count(layer_.boundary_vertices, part_);
     report.boundary_held_vertices = boundary_held_;
-    report.boundary_loops = layer_.boundary_loops;
-    report.isolated_vertices = layer_.isolated_vertices.size();
+    report.boundary_loops = whole_boundary_loops(layer_, part_);
+    report.isolated_vertices = whole_count(layer_.isolated_vertices, part_);
+    report.faces = whole_face_count(layer_.real_faces, part_);
     report.attribute_mode = given_.mode;
     report.attribute_dimension = std::size_t(d);
     report.setup_seconds = setup_seconds_;
@@ -570,6 +571,7 @@ private:
   CGAL::Real_timer setup_;   // from before the numbering to the element's cache
   const Locality_ordering ordering_;
   const Ghost_layer& layer_;
+  const Part_view part_;   // of the mesh this process holds (none: the whole mesh)
   Control_matrix X_, input_, control_points_, estimate_surface_, oracle_surface_;
   std::vector<bool> constrained_, border_, isolated_, written_;
   Mesh_components components_;

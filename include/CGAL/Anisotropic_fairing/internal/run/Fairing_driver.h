@@ -150,7 +150,6 @@ Fairing_report fair_with_options(TriangleMesh& tm, VertexPointMap vpm, Attribute
                       "attribute weight (" + Mesh::to_text(weight) + "): a weight that makes the attributes dwarf or "
                       "drown the coordinates leaves no "
                       "surface, try a weight near 1 / (the attributes' range per edge length)";
-  report.faces = im.number_of_faces();
   if(report.succeeded())
   {
     const double written_from = total.time();

@@ -17,6 +17,7 @@
 #include <CGAL/Anisotropic_fairing/internal/element/Ghosted_patch_cache.h>
 #include <CGAL/Anisotropic_fairing/internal/mesh/Locality_ordering.h>
 #include <CGAL/Anisotropic_fairing/internal/mesh/Mesh_components.h>
+#include <CGAL/Anisotropic_fairing/internal/mesh/Process_part.h>
 
 #include <CGAL/Real_timer.h>
 
@@ -31,26 +32,30 @@ namespace Anisotropic_fairing {
 namespace internal {
 
 /// The mean edge length of each connected component (`edge[c]`) and of the whole mesh (returned), over
-/// the real faces' edges (an interior edge is seen from both sides, a border edge from one).
+/// the real faces' edges (an interior edge is seen from both sides, a border edge from one); a process's own
+/// faces', summed over the processes (`part`).
 inline double component_mean_edges(const Triangle_topology& topo, std::size_t real_faces,
                                    const Mesh_components& components, const Control_matrix& X,
-                                   std::vector<double>& edge)
+                                   std::vector<double>& edge, const Part_view& part = Part_view())
 {
-  edge.assign(components.count, 0.0);
-  std::vector<double> counted(components.count, 0.0);
+  // per component: the lengths' sum, then the edges'
+  std::vector<double> sums(2 * components.count, 0.0);
   for(std::size_t f = 0; f < real_faces; ++f)
-    for(int k = 0; k < 3; ++k)
-    {
-      const auto& t = topo.face(f);
-      edge[std::size_t(components.of_face[f])] += (X.row(t[k]).head(3) - X.row(t[(k + 1) % 3]).head(3)).norm();
-      counted[std::size_t(components.of_face[f])] += 1;
-    }
+    if(part.owns_face(f))
+      for(int k = 0; k < 3; ++k)
+      {
+        const auto& t = topo.face(f);
+        sums[std::size_t(components.of_face[f])] += (X.row(t[k]).head(3) - X.row(t[(k + 1) % 3]).head(3)).norm();
+        sums[components.count + std::size_t(components.of_face[f])] += 1;
+      }
+  part.sum(sums);
+  edge.assign(components.count, 0.0);
   double sum = 0, count = 0;
   for(std::size_t c = 0; c < components.count; ++c)
   {
-    sum += edge[c];
-    count += counted[c];
-    edge[c] /= counted[c];
+    sum += sums[c];
+    count += sums[components.count + c];
+    edge[c] = sums[c] / sums[components.count + c];
   }
   return count > 0 ? sum / count : 0.0;
 }
@@ -86,13 +91,15 @@ struct Flow_context
 
 /// Where a call's runs step: the Loop element's cache it makes (Fairing_core::run()), whose flow operator
 /// (Flow_operator_of) is one process's. The distributed program gives its own (distributed/Distributed_cache.h).
+/// `part()`: the part of the mesh this process holds (Process_part.h; null: the whole mesh).
 struct Serial_elements
 {
   typedef Ghosted_patch_cache Loop_cache;
-  Loop_cache loop_cache(const Ghost_layer& layer, const Quadrature_spec& quadrature) const
+  Loop_cache loop_cache(const Ghost_layer& layer, const Quadrature_spec& quadrature, const Part_view&) const
   {
     return Loop_cache(layer, quadrature);
   }
+  const Process_part* part() const { return nullptr; }
 };
 
 /// The risk estimate's probe carried along a flow (Ride_along_probe.h): from `start` (null: no probe).

@@ -1,0 +1,29 @@
+// Copyright (c) 2026 Anisotropic_fairing developers.
+// SPDX-License-Identifier: GPL-3.0-or-later
+//
+// The run in which each process holds its part of the mesh, not the whole mesh (Part_run.cpp), and what it
+// cannot run yet.
+
+#ifndef AF_DISTRIBUTED_PART_RUN_H
+#define AF_DISTRIBUTED_PART_RUN_H
+
+#include "Distributed_run.h"
+
+#include <string>
+
+namespace af_distributed {
+
+/// The rings of faces a part holds around its own: the Loop patches of its faces (1), the limit points of their
+/// neighbours' corners (2: folds), the places a fold near them marks (3, 4: Fold_sites).
+constexpr int part_depth = 4;
+
+/// Why `o` cannot run on parts (empty: it can): the input and the output binary PLY files of triangles, the
+/// input without vertex normals; the flow with a given time step on the geometry, no bound, no held vertices.
+std::string part_refusal(const af_tool::Options& o);
+
+/// Runs `o` with each process holding its part of the mesh; as run_distributed().
+int run_on_parts(const af_tool::Options& o, MPI_Comm comm, Run_summary& summary);
+
+} // namespace af_distributed
+
+#endif // AF_DISTRIBUTED_PART_RUN_H

@@ -1,0 +1,100 @@
+# The distributed program with no process holding the whole mesh (distributed/Part_run.cpp): binary PLY files read
+# and written by blocks, each process's part of the mesh given to the library. On 1, 2 and 3 processes the result
+# equals the serial program's to 1e-9 (the vertices' other properties and the faces unchanged, byte for byte), with
+# the same decisions and the same measures of the whole mesh (components, border loops and vertices, vertices on
+# no face, the noise level), while each process holds fewer vertices than the mesh has; what parts cannot run yet
+# runs with the whole mesh on every process, and the report says why.
+import json, math, os, random, struct, sys
+
+def binary_ply(source, target, noise=0.0, seed=3):
+    """source's mesh (OFF) as a binary little-endian PLY: double x, y, z and a float `quality` per vertex (which
+    must come back unchanged), with Gaussian noise of `noise` mean edge lengths on each coordinate."""
+    words = [w for l in open(source) for w in l.split("#")[0].split()]
+    n, m = int(words[1]), int(words[2])
+    points = [[float(x) for x in words[4 + 3 * i:7 + 3 * i]] for i in range(n)]
+    at = 4 + 3 * n
+    faces = [[int(x) for x in words[at + 4 * j + 1:at + 4 * j + 4]] for j in range(m)]
+    edge = sum(math.dist(points[a], points[b]) for a, b, _ in faces) / max(m, 1)
+    rng = random.Random(seed)
+    with open(target, "wb") as out:
+        out.write(("ply\nformat binary_little_endian 1.0\nelement vertex %d\nproperty double x\nproperty double y\n"
+                   "property double z\nproperty float quality\nelement face %d\nproperty list uchar int vertex_indices\n"
+                   "end_header\n" % (n, m)).encode())
+        for i, p in enumerate(points):
+            out.write(struct.pack("<3df", *[x + noise * edge * rng.gauss(0, 1) for x in p], float(i % 97)))
+        for f in faces: out.write(struct.pack("<B3i", 3, *f))
+
+def ply_sections(path):
+    """The vertex records (x, y, z, quality) and the face section's bytes of a file binary_ply() wrote."""
+    data = open(path, "rb").read()
+    end = data.index(b"end_header\n") + len(b"end_header\n")
+    n = int([l for l in data[:end].decode().split("\n") if l.startswith("element vertex")][0].split()[2])
+    rows = [list(struct.unpack_from("<3df", data, end + 28 * i)) for i in range(n)]
+    return rows, data[end + 28 * n:]
+
+def equal_on_parts(args, run, mpi, name, mesh, flags, processes=(1, 2, 3)):
+    """`flags` on `mesh` (a binary PLY) by the serial program and on parts: the same result and decisions."""
+    serial = os.path.join(args.work, name + "_serial.ply")
+    run([args.tool, mesh, serial, "--quiet", "--solver", "cholesky", "--report", serial + ".json"] + flags)
+    expected = json.load(open(serial + ".json"))
+    reference = [r[:3] for r in ply_sections(serial)[0]]
+    diagonal = math.dist([min(r[c] for r in reference) for c in range(3)], [max(r[c] for r in reference) for c in range(3)])
+    rows_in, faces_in = ply_sections(mesh)
+    for np in processes:
+        out = os.path.join(args.work, "%s_np%d.ply" % (name, np))
+        run(mpi(args, np, mesh, out, "--quiet", "--report", out + ".json", "-ksp_rtol", "1e-13",
+                "-prefilter_ksp_rtol", "1e-14", "-ksp_max_it", "20000") + flags)
+        got = json.load(open(out + ".json"))
+        rows, faces = ply_sections(out)
+        d = max(math.dist(r[:3], q) for r, q in zip(rows, reference)) / diagonal
+        held = got["per_process"]["part_vertices"]
+        print("%s, %d process(es): held in parts %s of %d vertices; largest difference to the serial program %.3g of "
+              "the diagonal; %d steps, stopped: %s" % (name, np, held, len(rows), d, len(got["steps"]), got["stop_reason"]))
+        if got["mesh_held"] != "parts": sys.exit("FAIL: %s: run with the whole mesh (%s)" % (name, got.get("whole_mesh_why")))
+        if np > 1 and max(held) >= len(rows): sys.exit("FAIL: %s on %d processes: a process held the whole mesh" % (name, np))
+        if not d <= 1e-9: sys.exit("FAIL: %s on %d processes differs from the serial result by %.3g" % (name, np, d))
+        if faces != faces_in or any(r[3] != q[3] for r, q in zip(rows, rows_in)):
+            sys.exit("FAIL: %s on %d processes: the faces or the vertices' quality were not written as read" % (name, np))
+        for key in ("stop_reason", "rejected_steps", "boundary_vertices", "boundary_held_vertices", "boundary_loops",
+                    "isolated_vertices", "components"):
+            if got[key] != expected[key]: sys.exit("FAIL: %s on %d processes: %s %s, the serial run's %s" % (name, np, key, got[key], expected[key]))
+        if len(got["steps"]) != len(expected["steps"]): sys.exit("FAIL: %s on %d processes: other steps" % (name, np))
+        for key in ("noise_level", "mean_edge_length"):
+            if abs(got[key] - expected[key]) > 1e-9 * abs(expected[key]):
+                sys.exit("FAIL: %s on %d processes: %s %.17g, the serial run's %.17g" % (name, np, key, got[key], expected[key]))
+
+def whole_mesh_run(args, run, mpi, name, mesh, flags, why):
+    """What parts cannot run yet runs with the whole mesh on every process, and the report says why."""
+    out = os.path.join(args.work, name + "_whole" + os.path.splitext(mesh)[1])
+    run(mpi(args, 2, mesh, out, "--quiet", "--report", out + ".json") + flags)
+    got = json.load(open(out + ".json"))
+    print("%s: the whole mesh on every process: %s" % (name, got.get("whole_mesh_why")))
+    if got["mesh_held"] != "whole" or why not in got.get("whole_mesh_why", ""):
+        sys.exit("FAIL: %s: mesh_held %s, why %s (expected: %s)" % (name, got["mesh_held"], got.get("whole_mesh_why"), why))
+
+def parts(args, run, mpi, helpers):
+    iso = ["--tensor", "isotropic", "--relative-time-step", "1e-3", "--steps", "3"]
+    aniso = ["--tensor", "anisotropic", "--lambda", "8", "--epsilon", "1e-3", "--relative-time-step", "5e-4", "--steps", "3"]
+    meshes = {}
+    for name, source in (("bumpy", "bumpy.off"), ("hemisphere", "hemisphere.off")):
+        meshes[name] = os.path.join(args.work, name + ".ply")
+        binary_ply(os.path.join(args.data, source), meshes[name])
+    equal_on_parts(args, run, mpi, "closed_isotropic", meshes["bumpy"], iso)
+    equal_on_parts(args, run, mpi, "closed_anisotropic", meshes["bumpy"], aniso)
+    equal_on_parts(args, run, mpi, "bordered_anisotropic", meshes["hemisphere"], aniso)
+    equal_on_parts(args, run, mpi, "bordered_fourth_order", meshes["hemisphere"], ["--order", "4", "--tensor", "isotropic",
+                                                                                  "--relative-time-step", "1e-3", "--steps", "4"])
+    # noise, and the stop at its level: the noise estimate's samples and the discrepancy's median over the parts
+    noisy = os.path.join(args.work, "hemisphere_noisy.ply")
+    binary_ply(os.path.join(args.data, "hemisphere.off"), noisy, noise=0.2)
+    equal_on_parts(args, run, mpi, "noise_stop", noisy, ["--tensor", "isotropic", "--relative-time-step", "0.1", "--stop", "noise"])
+    # components joined over the parts; a vertex on no face
+    pair, lonely = os.path.join(args.work, "pair.off"), os.path.join(args.work, "lonely.off")
+    helpers["two_components"](os.path.join(args.data, "bumpy.off"), pair)
+    helpers["with_isolated_vertex"](os.path.join(args.data, "hemisphere.off"), lonely)
+    for name, source in (("two_components", pair), ("isolated_vertex", lonely)):
+        meshes[name] = os.path.join(args.work, name + ".ply")
+        binary_ply(source, meshes[name], noise=0.05)
+        equal_on_parts(args, run, mpi, name, meshes[name], iso)
+    whole_mesh_run(args, run, mpi, "default_run", meshes["bumpy"], [], "default run")
+    whole_mesh_run(args, run, mpi, "off_input", os.path.join(args.data, "bumpy.off"), iso, "not PLY")
