@@ -129,7 +129,7 @@ void write_result(const af_tool::Options& o, Input& in, af_tool::Run_record& rec
 int run_distributed(const af_tool::Options& o, MPI_Comm comm, Run_summary& summary)
 {
   summary.whole_mesh_why = part_refusal(o);
-  if(summary.whole_mesh_why.empty()) return run_on_parts(o, comm, summary);
+  if(summary.whole_mesh_why.empty() && run_on_parts(o, comm, summary)) return 0;
   int rank = 0, size = 1;
   MPI_Comm_rank(comm, &rank);
   MPI_Comm_size(comm, &size);

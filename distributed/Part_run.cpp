@@ -40,19 +40,19 @@ bool ends_with(const std::string& s, const std::string& end)
   return lower.size() >= end.size() && lower.compare(lower.size() - end.size(), end.size(), end) == 0;
 }
 
-// the part as the library's mesh: its vertices and faces in the part's order
-af_tool::Mesh part_mesh(const Mesh_part& part)
+// The part as the library's mesh, its vertices and faces in the part's order; false where the part is not a
+// surface (a vertex of two fans, an edge of three faces: the input is not a manifold there).
+bool part_mesh(const Mesh_part& part, af_tool::Mesh& mesh)
 {
+  namespace PMP = CGAL::Polygon_mesh_processing;
   std::vector<af_tool::Point> points;
   for(std::size_t v = 0; v < part.global_vertex.size(); ++v)
     points.emplace_back(part.points[3 * v], part.points[3 * v + 1], part.points[3 * v + 2]);
   std::vector<std::array<std::size_t, 3>> triangles;
   for(const auto& f : part.faces) triangles.push_back({ std::size_t(f[0]), std::size_t(f[1]), std::size_t(f[2]) });
-  af_tool::Mesh mesh;
-  CGAL::Polygon_mesh_processing::polygon_soup_to_polygon_mesh(points, triangles, mesh);
-  if(mesh.number_of_vertices() != points.size() || mesh.number_of_faces() != triangles.size())
-    throw std::runtime_error("the part of process " + std::to_string(part.rank) + " is not a surface");
-  return mesh;
+  if(!PMP::is_polygon_soup_a_polygon_mesh(triangles)) return false;
+  PMP::polygon_soup_to_polygon_mesh(points, triangles, mesh);
+  return mesh.number_of_vertices() == points.size() && mesh.number_of_faces() == triangles.size();
 }
 
 AF::Fairing_report fair_part(const af_tool::Options& o, af_tool::Mesh& mesh, const Part_process& process,
@@ -147,7 +147,7 @@ std::string part_refusal(const af_tool::Options& o)
   return std::string();
 }
 
-int run_on_parts(const af_tool::Options& o, MPI_Comm comm, Run_summary& summary)
+bool run_on_parts(const af_tool::Options& o, MPI_Comm comm, Run_summary& summary)
 {
   int rank = 0, size = 1;
   MPI_Comm_rank(comm, &rank);
@@ -166,7 +166,16 @@ int run_on_parts(const af_tool::Options& o, MPI_Comm comm, Run_summary& summary)
   summary.vertices = std::size_t(blocks.mesh.vertices);
   summary.faces = std::size_t(blocks.mesh.faces);
   af_tool::Mesh mesh;
-  collectively(comm, o.input, [&] { mesh = part_mesh(part); });
+  int surface = 0, everywhere = 0;
+  collectively(comm, o.input, [&] { surface = part_mesh(part, mesh) ? 1 : 0; });
+  MPI_Allreduce(&surface, &everywhere, 1, MPI_INT, MPI_MIN, comm);
+  if(!everywhere)
+  {
+    summary = Run_summary();
+    summary.whole_mesh_why = "the mesh is not a manifold surface everywhere (a vertex of two fans or an edge of three "
+                             "faces): it is read whole, and split there, as anisotropic_fairing reads it";
+    return false;
+  }
   clock.reset();
   Distributed_state state;
   state.comm = comm;
@@ -181,7 +190,7 @@ int run_on_parts(const af_tool::Options& o, MPI_Comm comm, Run_summary& summary)
   summary.peak_memory_mb = gathered<double>(comm, peak_memory_mb(), MPI_DOUBLE);
   write_result(o, comm, blocks, part, mesh);
   summary.write_seconds = clock.time();
-  return 0;
+  return true;
 }
 
 } // namespace af_distributed

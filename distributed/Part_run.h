@@ -21,8 +21,9 @@ constexpr int part_depth = 4;
 /// input without vertex normals; the flow with a given time step on the geometry, no bound, no held vertices.
 std::string part_refusal(const af_tool::Options& o);
 
-/// Runs `o` with each process holding its part of the mesh; as run_distributed().
-int run_on_parts(const af_tool::Options& o, MPI_Comm comm, Run_summary& summary);
+/// Runs `o` with each process holding its part of the mesh, as run_distributed() runs it; false, having run
+/// nothing, where the mesh is not a manifold surface (summary.whole_mesh_why says so): then it runs whole.
+bool run_on_parts(const af_tool::Options& o, MPI_Comm comm, Run_summary& summary);
 
 } // namespace af_distributed
 

@@ -109,8 +109,8 @@ inline void summarise_parts(MPI_Comm comm, const Distributed_state& state, Run_s
 
 // After the library's call: the per-process figures and the seconds of its phases (its set-up includes the
 // partition, made with its element cache); a run that did not succeed fails on every process.
-inline void after_the_call(MPI_Comm comm, const af_tool::Options& o, double call_seconds, const Distributed_state& state,
-                           Run_summary& summary)
+inline void after_the_call(MPI_Comm comm, const af_tool::Options& o, double call_seconds,
+                           const Distributed_state& state, Run_summary& summary)
 {
   summarise_parts(comm, state, summary);
   summary.setup_seconds = std::max(0.0, summary.report.setup_seconds - summary.partition_seconds);

@@ -24,6 +24,17 @@ def binary_ply(source, target, noise=0.0, seed=3):
             out.write(struct.pack("<3df", *[x + noise * edge * rng.gauss(0, 1) for x in p], float(i % 97)))
         for f in faces: out.write(struct.pack("<B3i", 3, *f))
 
+def with_bowtie(source, target):
+    """source (OFF) with a small tetrahedron sharing its vertex 0: a vertex whose faces make two fans."""
+    words = [l.split() for l in open(source).read().split("\n") if l.split()]
+    n, f = int(words[1][0]), int(words[1][1])
+    x, y, z = (float(v) for v in words[2][:3])
+    tip = ["%.17g %.17g %.17g" % (x + a, y + b, z + c) for a, b, c in ((0.01, 0, 0), (0, 0.01, 0), (0.01, 0.01, 0.01))]
+    tetra = ["3 0 %d %d" % (n, n + 1), "3 0 %d %d" % (n + 1, n + 2), "3 0 %d %d" % (n + 2, n), "3 %d %d %d" % (n, n + 2, n + 1)]
+    lines = ["OFF", "%d %d 0" % (n + 3, f + 4)] + [" ".join(w) for w in words[2:2 + n]] + tip
+    lines += [" ".join(w) for w in words[2 + n:2 + n + f]] + tetra
+    open(target, "w").write("\n".join(lines) + "\n")
+
 def ply_sections(path):
     """The vertex records (x, y, z, quality) and the face section's bytes of a file binary_ply() wrote."""
     data = open(path, "rb").read()
@@ -96,5 +107,11 @@ def parts(args, run, mpi, helpers):
         meshes[name] = os.path.join(args.work, name + ".ply")
         binary_ply(source, meshes[name], noise=0.05)
         equal_on_parts(args, run, mpi, name, meshes[name], iso)
+    # a vertex of two fans (a tetrahedron hung on a vertex): read whole, and split there, as the serial program does
+    bowtie = os.path.join(args.work, "bowtie.off")
+    with_bowtie(os.path.join(args.data, "bumpy.off"), bowtie)
+    meshes["bowtie"] = os.path.join(args.work, "bowtie.ply")
+    binary_ply(bowtie, meshes["bowtie"])
+    whole_mesh_run(args, run, mpi, "bowtie", meshes["bowtie"], iso, "not a manifold surface")
     whole_mesh_run(args, run, mpi, "default_run", meshes["bumpy"], [], "default run")
     whole_mesh_run(args, run, mpi, "off_input", os.path.join(args.data, "bumpy.off"), iso, "not PLY")
