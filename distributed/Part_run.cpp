@@ -55,8 +55,24 @@ bool part_mesh(const Mesh_part& part, af_tool::Mesh& mesh)
   return mesh.number_of_vertices() == points.size() && mesh.number_of_faces() == triangles.size();
 }
 
-AF::Fairing_report fair_part(const af_tool::Options& o, af_tool::Mesh& mesh, const Part_process& process,
-                             Distributed_state& state, bool print)
+// An input error the library found in the part, its element named by its number in the whole mesh (the file's)
+AF::Input_error in_the_whole_mesh(const AF::Input_error& e, const Mesh_part& part)
+{
+  typedef AF::Input_error E;
+  const std::size_t local = e.element();
+  if(local == E::no_element) return e;
+  const bool face = e.kind() == E::NON_TRIANGLE_FACE || e.kind() == E::DEGENERATE_FACE;
+  const std::vector<std::int64_t>& global = face ? part.global_face : part.global_vertex;
+  if(local >= global.size()) return e;
+  const std::string word = face ? "face " : "vertex ", was = word + std::to_string(local);
+  std::string message = without_library_prefix(e.what());
+  const std::size_t at = message.find(was);
+  if(at != std::string::npos) message.replace(at, was.size(), word + std::to_string(global[local]));
+  return E(e.kind(), std::size_t(global[local]), message);
+}
+
+AF::Fairing_report fair_part(const af_tool::Options& o, af_tool::Mesh& mesh, const Mesh_part& part,
+                             const Part_process& process, Distributed_state& state, bool print)
 {
   AF::Fairing_options options = o.fairing;
   options.attribute_mode = AF::Attribute_mode::GEOMETRY_ONLY;
@@ -65,8 +81,12 @@ AF::Fairing_report fair_part(const af_tool::Options& o, af_tool::Mesh& mesh, con
   const AFI::No_attributes none;
   const auto hooks = AFI::caller_hooks<af_tool::Mesh>(none, np);
   const Distributed_elements elements{ &state, &process };
-  return AFI::fair_with_options(mesh, mesh.points(), none, AFI::read_fairing_options(np), hooks,
-                                options.diffusion_tensor_or_default(), elements);
+  try
+  {
+    return AFI::fair_with_options(mesh, mesh.points(), none, AFI::read_fairing_options(np), hooks,
+                                  options.diffusion_tensor_or_default(), elements);
+  }
+  catch(const AF::Input_error& e) { throw in_the_whole_mesh(e, part); }
 }
 
 // the own vertices' new positions to the holders of their blocks, then each process's block written in place in
@@ -182,7 +202,8 @@ bool run_on_parts(const af_tool::Options& o, MPI_Comm comm, Run_summary& summary
   state.rank = rank;
   state.size = size;
   const Part_process process(comm, part);
-  collectively(comm, o.input, [&] { summary.report = fair_part(o, mesh, process, state, rank == 0 && !o.quiet); });
+  const bool print = rank == 0 && !o.quiet;
+  collectively(comm, o.input, [&] { summary.report = fair_part(o, mesh, part, process, state, print); });
   const double call_seconds = clock.time();
   after_the_call(comm, o, call_seconds, state, summary);
   summary.part_vertices = gathered<std::size_t>(comm, part.global_vertex.size(), MPI_UNSIGNED_LONG);

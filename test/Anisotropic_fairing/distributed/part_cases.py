@@ -114,4 +114,15 @@ def parts(args, run, mpi, helpers):
     binary_ply(bowtie, meshes["bowtie"])
     whole_mesh_run(args, run, mpi, "bowtie", meshes["bowtie"], iso, "not a manifold surface")
     whole_mesh_run(args, run, mpi, "default_run", meshes["bumpy"], [], "default run")
+    # a bad vertex is named by its number in the file, not in a part; nothing is written
+    bad = os.path.join(args.work, "nan.ply")
+    binary_ply(os.path.join(args.data, "bumpy.off"), bad)
+    data = bytearray(open(bad, "rb").read())
+    at = data.index(b"end_header\n") + len(b"end_header\n") + 28 * 700 + 8
+    data[at:at + 8] = struct.pack("<d", float("nan"))
+    open(bad, "wb").write(bytes(data))
+    out = os.path.join(args.work, "nan_out.ply")
+    p = run(mpi(args, 2, bad, out, "--quiet") + iso, expect_code=1)
+    print("a vertex with a NaN, on 2 processes: %s" % p.stderr.strip().split("\n")[0])
+    if "vertex 700 " not in p.stderr or os.path.exists(out): sys.exit("FAIL: the bad vertex is not named as the file numbers it, or an output was written")
     whole_mesh_run(args, run, mpi, "off_input", os.path.join(args.data, "bumpy.off"), iso, "not PLY")
