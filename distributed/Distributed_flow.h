@@ -146,7 +146,8 @@ public:
     std::vector<double> weight;
     if(s.local_time_scale && !fixed)
       weight = AFI::mass_weights(AFI::local_time_scale(*mesh_.layer.topology, mesh_.layer.real_faces, Z0,
-                                                       mesh_.components, mesh_.component_edge));
+                                                       mesh_.components, mesh_.component_edge,
+                                                       d_.part ? *d_.part : AFI::whole_mesh_view()));
     solver_->set_step_kind(std::move(weight), s.order == 4);
   }
   AFI::Solve_statistics solve(double factor, const Control_matrix& Z, const Control_matrix& Z0,

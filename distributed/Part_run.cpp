@@ -157,7 +157,6 @@ std::string part_refusal(const af_tool::Options& o)
   for(const Ply_property& p : vertex.properties)
     if(p.name == "nx" || p.name == "ny" || p.name == "nz") return "the input has vertex normals";
   const AF::Fairing_options& f = o.fairing;
-  if(f.automatic_parameters()) return "the default run (no time step given) reads the whole mesh";
   if(o.fairing.attribute_mode && *o.fairing.attribute_mode != AF::Attribute_mode::GEOMETRY_ONLY)
     return "attributes are faired";
   if(f.relative_maximum_deviation || f.absolute_maximum_deviation || f.attribute_maximum_deviation > 0)

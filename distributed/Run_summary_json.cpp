@@ -90,6 +90,15 @@ std::string summary_json(const af_tool::Options& o, const Run_summary& s, bool o
     j["components"] = s.report.components;
     j["mean_edge_length"] = s.report.mean_edge_length;
     j["noise_level"] = s.report.noise_level;
+    j["removed_spikes"] = s.report.removed_spikes;
+    const AF::Fairing_report& f = s.report;
+    if(o.fairing.automatic_parameters())   // as anisotropic_fairing reports the default run's noise model
+      j["noise_model"] = { { "tangential_noise_level", f.tangential_noise_level },
+                           { "noise_level_spread", f.noise_level_spread },
+                           { "tangential_noise_level_spread", f.tangential_noise_level_spread },
+                           { "impulse_share", f.impulse_share },
+                           { "impulse_deviation", f.impulse_deviation },
+                           { "lattice_step", { f.lattice_step[0], f.lattice_step[1], f.lattice_step[2] } } };
     j["rejected_steps"] = s.report.rejected_steps;
     j["time_step"] = s.report.time_step;
     j["scale"] = s.report.scale;

@@ -13,6 +13,7 @@
 #include "tool_common.h"
 
 #include <CGAL/Anisotropic_fairing/Input_error.h>
+#include <CGAL/Anisotropic_fairing/internal/mesh/Process_part.h>
 
 #include <mpi.h>
 #include <sys/resource.h>
@@ -41,6 +42,7 @@ void collectively(MPI_Comm comm, const std::string& input, const F& f)
   std::string message, status = "error";
   try { f(); }
   catch(const Collective_failure&) { throw; }
+  catch(const CGAL::Anisotropic_fairing::internal::Input_failed_elsewhere&) {}   // that process says why
   catch(const af_tool::Failure& e) { message = e.message; status = e.status; }
   catch(const AF::Input_error& e)
   {

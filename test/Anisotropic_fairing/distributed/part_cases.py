@@ -2,13 +2,15 @@
 # and written by blocks, each process's part of the mesh given to the library. On 1, 2 and 3 processes the result
 # equals the serial program's to 1e-9 (the vertices' other properties and the faces unchanged, byte for byte), with
 # the same decisions and the same measures of the whole mesh (components, border loops and vertices, vertices on
-# no face, the noise level), while each process holds fewer vertices than the mesh has; what parts cannot run yet
-# runs with the whole mesh on every process, and the report says why.
+# no face, the noise level; the default run's spikes, noise model and choice), while each process holds fewer vertices
+# than the mesh has; what parts cannot run yet runs with the whole mesh on every process, and the report says why.
 import json, math, os, random, struct, sys
 
-def binary_ply(source, target, noise=0.0, seed=3):
+def binary_ply(source, target, noise=0.0, seed=3, spikes=0.0, lattice=0.0):
     """source's mesh (OFF) as a binary little-endian PLY: double x, y, z and a float `quality` per vertex (which
-    must come back unchanged), with Gaussian noise of `noise` mean edge lengths on each coordinate."""
+    must come back unchanged), with Gaussian noise of `noise` mean edge lengths on each coordinate; a share `spikes`
+    of the vertices thrown 1.5 mean edge lengths off in a random direction (impulsive noise); the coordinates
+    rounded to multiples of `lattice` mean edge lengths (a quantised scan)."""
     words = [w for l in open(source) for w in l.split("#")[0].split()]
     n, m = int(words[1]), int(words[2])
     points = [[float(x) for x in words[4 + 3 * i:7 + 3 * i]] for i in range(n)]
@@ -21,7 +23,12 @@ def binary_ply(source, target, noise=0.0, seed=3):
                    "property double z\nproperty float quality\nelement face %d\nproperty list uchar int vertex_indices\n"
                    "end_header\n" % (n, m)).encode())
         for i, p in enumerate(points):
-            out.write(struct.pack("<3df", *[x + noise * edge * rng.gauss(0, 1) for x in p], float(i % 97)))
+            q = [x + noise * edge * rng.gauss(0, 1) for x in p]
+            if rng.random() < spikes:
+                d = [rng.gauss(0, 1) for _ in range(3)]
+                q = [x + 1.5 * edge * y / math.hypot(*d) for x, y in zip(q, d)]
+            if lattice > 0: q = [round(x / (lattice * edge)) * lattice * edge for x in q]
+            out.write(struct.pack("<3df", *q, float(i % 97)))
         for f in faces: out.write(struct.pack("<B3i", 3, *f))
 
 def with_bowtie(source, target):
@@ -73,6 +80,15 @@ def equal_on_parts(args, run, mpi, name, mesh, flags, processes=(1, 2, 3)):
         for key in ("noise_level", "mean_edge_length"):
             if abs(got[key] - expected[key]) > 1e-9 * abs(expected[key]):
                 sys.exit("FAIL: %s on %d processes: %s %.17g, the serial run's %.17g" % (name, np, key, got[key], expected[key]))
+        if flags: continue
+        # the default run: the same spikes, noise model, estimates and choice, said alike
+        model, want = got["noise_model"], expected["noise_model"]
+        for key in want:
+            a, b = (model[key], want[key]) if key != "lattice_step" else (max(model[key]), max(want[key]))
+            if abs(a - b) > 1e-6 * abs(b): sys.exit("FAIL: %s on %d processes: noise model %s %s, the serial run's %s" % (name, np, key, model[key], want[key]))
+        for key, serial_key in (("removed_spikes", "removed_spikes"), ("choices", "choices"), ("selected_tensor", "tensor")):
+            if got[key] != expected[serial_key]:
+                sys.exit("FAIL: %s on %d processes: %s '%s', the serial run's '%s'" % (name, np, key, got[key], expected[serial_key]))
 
 def whole_mesh_run(args, run, mpi, name, mesh, flags, why):
     """What parts cannot run yet runs with the whole mesh on every process, and the report says why."""
@@ -113,7 +129,13 @@ def parts(args, run, mpi, helpers):
     meshes["bowtie"] = os.path.join(args.work, "bowtie.ply")
     binary_ply(bowtie, meshes["bowtie"])
     whole_mesh_run(args, run, mpi, "bowtie", meshes["bowtie"], iso, "not a manifold surface")
-    whole_mesh_run(args, run, mpi, "default_run", meshes["bumpy"], [], "default run")
+    # the default run: the spikes, the noise model (its lattice too) and the comparison of flows over the parts
+    for name, source, noise in (("default_closed", "bunny.off", dict(noise=0.3)), ("default_bordered", "hemisphere.off", dict(noise=0.2)),
+                                ("default_spikes", "bumpy.off", dict(noise=0.02, spikes=0.05)),
+                                ("default_lattice", "bumpy.off", dict(noise=0.1, lattice=0.125))):
+        meshes[name] = os.path.join(args.work, name + ".ply")
+        binary_ply(os.path.join(args.data, source), meshes[name], **noise)
+        equal_on_parts(args, run, mpi, name, meshes[name], [])
     # a bad vertex is named by its number in the file, not in a part; nothing is written
     bad = os.path.join(args.work, "nan.ply")
     binary_ply(os.path.join(args.data, "bumpy.off"), bad)

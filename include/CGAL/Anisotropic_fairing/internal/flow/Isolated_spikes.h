@@ -14,6 +14,7 @@
 #define CGAL_ANISOTROPIC_FAIRING_INTERNAL_FLOW_ISOLATED_SPIKES_H
 
 #include <CGAL/Anisotropic_fairing/internal/flow/Ring_plane.h>
+#include <CGAL/Anisotropic_fairing/internal/mesh/Process_part.h>
 #include <CGAL/Anisotropic_fairing/internal/mesh/Triangle_topology.h>
 #include <CGAL/Anisotropic_fairing/internal/types/Control_matrix.h>
 #include <CGAL/Anisotropic_fairing/internal/types/Parallel_blocks.h>
@@ -42,13 +43,14 @@ struct Spike_test
 /// The isolated spikes among the vertices with `usable[i]` (interior, free, a closed fan) of the real
 /// vertices X (first 3 columns) moved to the centroid of their ring (not along the ring's normal: next
 /// to other spikes that normal is tilted, and the move would fold thin triangles of a scan). Returns how
-/// many vertices were moved (0: too few to be noise, X unchanged).
+/// many vertices were moved (0: too few to be noise, X unchanged). `part`: the part of the mesh a process holds
+/// (it moves its own vertices, its other rows read from their owners).
 inline std::size_t remove_isolated_spikes(const Triangle_topology& topo, const std::vector<bool>& usable,
-                                          Control_matrix& X, const Spike_test& test = Spike_test())
+                                          Control_matrix& X, const Part_view& part = whole_mesh_view(),
+                                          const Spike_test& test = Spike_test())
 {
   const std::size_t n = std::size_t(X.rows());
-  std::vector<double> height(n), centre(3 * n);
-  std::vector<char> measured(n);
+  std::vector<double> height(n), centre(3 * n), measured(n);
   // e_i = (x_i - c_i) . n_i / h_i: the height of vertex i over its ring's plane (Ring_plane.h) in units
   // of its mean distance to the ring
   const auto measure = [&] {
@@ -68,6 +70,8 @@ inline std::size_t remove_isolated_spikes(const Triangle_topology& topo, const s
         measured[i] = 1;
       }
     });
+    part.refresh(height);
+    part.refresh(measured);
   };
   // the neighbours of i that stand out on the same side by at least half as much
   const auto companions = [&](std::size_t i, std::vector<int>& out) {
@@ -75,7 +79,7 @@ inline std::size_t remove_isolated_spikes(const Triangle_topology& topo, const s
     std::vector<int> ring;
     read_ring(topo, i, ring);
     for(int j : ring)
-      if(measured[std::size_t(j)] && height[std::size_t(j)] * height[i] > 0 &&
+      if(measured[std::size_t(j)] != 0 && height[std::size_t(j)] * height[i] > 0 &&
          std::abs(height[std::size_t(j)]) > 0.5 * std::abs(height[i]))
         out.push_back(j);
   };
@@ -85,7 +89,8 @@ inline std::size_t remove_isolated_spikes(const Triangle_topology& topo, const s
   const auto threshold = [&] {
     std::vector<double> sample;
     for(std::size_t i = 0; i < n; ++i)
-      if(measured[i]) sample.push_back(height[i]);
+      if(measured[i] != 0 && part.owns_vertex(i)) sample.push_back(height[i]);
+    sample = part.gathered(std::move(sample));
     measured_count = sample.size();
     if(sample.empty()) return std::numeric_limits<double>::infinity();
     const auto mid = sample.begin() + std::ptrdiff_t(sample.size() / 2);
@@ -103,7 +108,7 @@ inline std::size_t remove_isolated_spikes(const Triangle_topology& topo, const s
     std::vector<int> spikes, mine, theirs;
     for(std::size_t i = 0; i < n; ++i)
     {
-      if(!measured[i] || !(std::abs(height[i]) >= least)) continue;
+      if(measured[i] == 0 || !part.owns_vertex(i) || !(std::abs(height[i]) >= least)) continue;
       companions(i, mine);
       bool alone = mine.empty();
       if(mine.size() == 1)   // a pair of spikes: each the other's only companion
@@ -113,15 +118,17 @@ inline std::size_t remove_isolated_spikes(const Triangle_topology& topo, const s
       }
       if(alone) spikes.push_back(int(i));
     }
-    if(round == 0 && double(spikes.size()) < test.population * double(measured_count)) return 0;
-    if(spikes.empty()) break;
+    const std::size_t found = part.count(spikes.size());
+    if(round == 0 && double(found) < test.population * double(measured_count)) return 0;
+    if(found == 0) break;
     for(int i : spikes)
     {
       X.row(i).head(3) = vec3(&centre[3 * std::size_t(i)]).transpose();
       moved[std::size_t(i)] = 1;
     }
+    part.refresh(X);
   }
-  return std::size_t(std::count(moved.begin(), moved.end(), char(1)));
+  return part.count(std::size_t(std::count(moved.begin(), moved.end(), char(1))));
 }
 
 } // namespace internal

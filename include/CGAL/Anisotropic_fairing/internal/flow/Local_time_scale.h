@@ -18,6 +18,7 @@
 
 #include <CGAL/Anisotropic_fairing/internal/types/Control_matrix.h>
 #include <CGAL/Anisotropic_fairing/internal/mesh/Mesh_components.h>
+#include <CGAL/Anisotropic_fairing/internal/mesh/Process_part.h>
 #include <CGAL/Anisotropic_fairing/internal/mesh/Triangle_topology.h>
 
 #include <cmath>
@@ -28,10 +29,12 @@ namespace CGAL {
 namespace Anisotropic_fairing {
 namespace internal {
 
-/// s_i per vertex (1 for a vertex on no real face); `edge[c]` is the mean edge length of component c.
+/// s_i per vertex (1 for a vertex on no real face); `edge[c]` is the mean edge length of component c; `part`: the
+/// part of the mesh a process holds (its rows not owned take their owners' h after each averaging).
 inline std::vector<double> local_time_scale(const Triangle_topology& topo, std::size_t real_faces,
                                             const Control_matrix& X, const Mesh_components& components,
-                                            const std::vector<double>& edge)
+                                            const std::vector<double>& edge,
+                                            const Part_view& part = whole_mesh_view())
 {
   const std::size_t n = std::size_t(X.rows());
   auto for_each_edge = [&](auto&& f) {   // each real face's three edges
@@ -45,6 +48,7 @@ inline std::vector<double> local_time_scale(const Triangle_topology& topo, std::
     count[std::size_t(a)] += 1; count[std::size_t(b)] += 1;
   });
   for(std::size_t i = 0; i < n; ++i) h[i] = count[i] > 0 ? h[i] / count[i] : 0.0;
+  part.refresh(h);
   for(int pass = 0; pass < 3; ++pass)
   {
     std::vector<double> ring(n, 0.0);
@@ -54,6 +58,7 @@ inline std::vector<double> local_time_scale(const Triangle_topology& topo, std::
     });
     for(std::size_t i = 0; i < n; ++i)
       if(count[i] > 0) h[i] = 0.5 * (h[i] + ring[i] / count[i]);
+    part.refresh(h);
   }
   std::vector<double> s(n, 1.0);
   for(std::size_t i = 0; i < n; ++i)

@@ -24,6 +24,7 @@
 #define CGAL_ANISOTROPIC_FAIRING_INTERNAL_FLOW_NOISE_MODEL_H
 
 #include <CGAL/Anisotropic_fairing/internal/flow/Noise_estimate.h>
+#include <CGAL/Anisotropic_fairing/internal/mesh/Process_part.h>
 #include <CGAL/Anisotropic_fairing/internal/mesh/Triangle_topology.h>
 #include <CGAL/Anisotropic_fairing/internal/types/Control_matrix.h>
 #include <CGAL/Anisotropic_fairing/internal/types/Parallel_blocks.h>
@@ -95,8 +96,10 @@ constexpr int rings = 3;       // of averaging around each vertex
 constexpr int clip_passes = 3; // the clip set by the global deviation, then twice by the local one
 constexpr double core_ratio = 2;   // the wider component must be at least this much wider to be impulses
 
-// value[i] averaged over the `rings`-ring of i (weights of repeated ring averaging), NaN samples left out
-inline std::vector<double> ring_average(const Triangle_topology& topo, const std::vector<double>& value)
+// value[i] averaged over the `rings`-ring of i (weights of repeated ring averaging), NaN samples left out; the rows
+// a process does not own read from their owners after each ring
+inline std::vector<double> ring_average(const Triangle_topology& topo, const std::vector<double>& value,
+                                        const Part_view& part)
 {
   const std::size_t n = value.size();
   std::vector<double> sum(n), weight(n), next_sum(n), next_weight(n);
@@ -126,13 +129,17 @@ inline std::vector<double> ring_average(const Triangle_topology& topo, const std
     });
     sum.swap(next_sum);
     weight.swap(next_weight);
+    part.refresh(sum);
+    part.refresh(weight);
   }
   for(std::size_t i = 0; i < n; ++i) sum[i] = weight[i] > 0 ? sum[i] / weight[i] : std::nan("");
   return sum;
 }
 
-inline double percentile(std::vector<double> v, double q)
+// of every process's `v`
+inline double percentile(std::vector<double> v, double q, const Part_view& part)
 {
+  v = part.gathered(std::move(v));
   if(v.empty()) return std::nan("");
   const std::size_t k = std::min(v.size() - 1, std::size_t(q * double(v.size())));
   std::nth_element(v.begin(), v.begin() + std::ptrdiff_t(k), v.end());
@@ -145,7 +152,7 @@ inline double percentile(std::vector<double> v, double q)
 // then again of the local deviation so read.
 inline std::vector<double> local_scales(const Triangle_topology& topo, const std::vector<double>& square, double unit,
                                         const std::vector<double>& null_square, double null_unit, double& spread,
-                                        int passes = clip_passes)
+                                        const Part_view& part, int passes = clip_passes)
 {
   const std::size_t n = square.size();
   std::vector<double> scale(n, 1.0);
@@ -154,12 +161,12 @@ inline std::vector<double> local_scales(const Triangle_topology& topo, const std
     std::vector<double> clipped(n, std::nan(""));
     for(std::size_t i = 0; i < n; ++i)
       if(!std::isnan(v[i])) clipped[i] = std::min(v[i], clip * clip * u);
-    std::vector<double> mean = ring_average(topo, clipped);
+    std::vector<double> mean = ring_average(topo, clipped, part);
     for(int pass = 1; pass < passes; ++pass)
     {
       for(std::size_t i = 0; i < n; ++i)
         if(!std::isnan(v[i])) clipped[i] = std::min(v[i], clip * clip * mean[i]);
-      mean = ring_average(topo, clipped);
+      mean = ring_average(topo, clipped, part);
     }
     return mean;
   };
@@ -168,15 +175,18 @@ inline std::vector<double> local_scales(const Triangle_topology& topo, const std
   // the log-scales about their mean, and the variances of both
   const auto log_scales = [&](const std::vector<double>& m, double& variance) {
     std::vector<double> l(n, std::nan(""));
-    double s = 0, s2 = 0, k = 0;
+    std::vector<double> sums(3, 0.0);   // of the own rows' log-scales, their squares, their number
     for(std::size_t i = 0; i < n; ++i)
       if(!std::isnan(square[i]) && m[i] > 0)
       {
         l[i] = 0.5 * std::log(m[i]);
-        s += l[i];
-        s2 += l[i] * l[i];
-        k += 1;
+        if(!part.owns_vertex(i)) continue;
+        sums[0] += l[i];
+        sums[1] += l[i] * l[i];
+        sums[2] += 1;
       }
+    part.sum(sums);
+    const double s = sums[0], s2 = sums[1], k = sums[2];
     variance = k > 1 ? (s2 - s * s / k) / (k - 1) : 0.0;
     for(double& x : l) x -= k > 0 ? s / k : 0.0;
     return l;
@@ -190,9 +200,11 @@ inline std::vector<double> local_scales(const Triangle_topology& topo, const std
     if(!std::isnan(l[i]))
     {
       scale[i] = std::exp(kept * l[i]);
-      kept_scales.push_back(scale[i]);
+      if(part.owns_vertex(i)) kept_scales.push_back(scale[i]);
     }
-  if(!kept_scales.empty()) spread = percentile(kept_scales, 0.9) / percentile(kept_scales, 0.1);
+  kept_scales = part.gathered(std::move(kept_scales));
+  if(!kept_scales.empty())
+    spread = percentile(kept_scales, 0.9, whole_mesh_view()) / percentile(kept_scales, 0.1, whole_mesh_view());
   return scale;
 }
 
@@ -207,14 +219,15 @@ struct Mixture
   double log_likelihood = -HUGE_VAL;
 };
 
-// EM from one start (the core at 1)
-inline Mixture fit_mixture_from(const std::vector<double>& z, double share, double wide)
+// EM from one start (the core at 1); the sums over the own rows of every process, `rows` of them
+inline Mixture fit_mixture_from(const std::vector<double>& z, double share, double wide, const Part_view& part,
+                                double rows)
 {
   Mixture m;
   m.share = share;
   m.wide = wide;
   m.p.assign(z.size(), 0.0);
-  const double tiny = 1.0 / double(std::max<std::size_t>(z.size(), 1));
+  const double tiny = 1.0 / std::max(rows, 1.0);
   const auto density = [&m](double x, bool wider) {
     const double s = wider ? m.wide : m.core;
     return (wider ? m.share : 1 - m.share) / s * std::exp(-0.5 * x * x / (s * s));
@@ -230,15 +243,17 @@ inline Mixture fit_mixture_from(const std::vector<double>& z, double share, doub
         m.p[i] = wider + core > 0 ? wider / (wider + core) : 1.0;
       }
     });
-    double sp = 0, spz2 = 0, sq = 0, sqz2 = 0;
+    std::vector<double> sums(4, 0.0);
     for(std::size_t i = 0; i < z.size(); ++i)
-      if(!std::isnan(z[i]))
+      if(!std::isnan(z[i]) && part.owns_vertex(i))
       {
-        sp += m.p[i];
-        spz2 += m.p[i] * z[i] * z[i];
-        sq += 1 - m.p[i];
-        sqz2 += (1 - m.p[i]) * z[i] * z[i];
+        sums[0] += m.p[i];
+        sums[1] += m.p[i] * z[i] * z[i];
+        sums[2] += 1 - m.p[i];
+        sums[3] += (1 - m.p[i]) * z[i] * z[i];
       }
+    part.sum(sums);
+    const double sp = sums[0], spz2 = sums[1], sq = sums[2], sqz2 = sums[3];
     if(!(sp > tiny) || !(sq > tiny) || !(sqz2 > 0)) return Mixture();
     const double next_share = sp / (sp + sq), core = std::sqrt(sqz2 / sq), next_wide = std::sqrt(spz2 / sp);
     const bool settled = std::abs(next_share - m.share) < 1e-4 * m.share &&
@@ -248,21 +263,22 @@ inline Mixture fit_mixture_from(const std::vector<double>& z, double share, doub
     m.wide = next_wide;
     if(settled) break;
   }
-  m.log_likelihood = 0;
-  for(double x : z)
-    if(!std::isnan(x)) m.log_likelihood += std::log(density(x, true) + density(x, false));
+  double log_likelihood = 0;
+  for(std::size_t i = 0; i < z.size(); ++i)
+    if(!std::isnan(z[i]) && part.owns_vertex(i)) log_likelihood += std::log(density(z[i], true) + density(z[i], false));
+  m.log_likelihood = part.sum(log_likelihood);
   return m;
 }
 
 // The mixture of highest likelihood from a few starts (a sparse, a common and a dominant wider component: EM
 // from one start can settle on two equal components), none unless the wider one is core_ratio times the core.
-inline Mixture fit_mixture(const std::vector<double>& z)
+inline Mixture fit_mixture(const std::vector<double>& z, const Part_view& part, double rows)
 {
   Mixture best;
   for(const auto& start : { std::make_pair(0.01, 10.0), std::make_pair(0.1, 4.0), std::make_pair(0.5, 2.5) })
   {
-    Mixture m = fit_mixture_from(z, start.first, start.second);
-    if(m.core > 0 && m.wide >= core_ratio * m.core && m.share * double(z.size()) >= 1 &&
+    Mixture m = fit_mixture_from(z, start.first, start.second, part, rows);
+    if(m.core > 0 && m.wide >= core_ratio * m.core && m.share * rows >= 1 &&
        m.log_likelihood > best.log_likelihood)
       best = std::move(m);
   }
@@ -276,17 +292,18 @@ inline Mixture fit_mixture(const std::vector<double>& z)
 
 // The probability of each z (NaN: none) being a hit: the mixture's, kept where z stands out of its ring most (its
 // neighbours' differences echo a spike, smaller and on the other side) and not beside two others standing out on
-// its side (a feature line). Returns the number of z.
-inline double find_hits(const Triangle_topology& topo, const std::vector<double>& z, std::vector<double>& p)
+// its side (a feature line). Returns the number of z (of every process's own rows, `rows` of them).
+inline double find_hits(const Triangle_topology& topo, const std::vector<double>& z, std::vector<double>& p,
+                        const Part_view& part, double rows)
 {
   const std::size_t n = z.size();
   double count = 0;
-  const Mixture mixture = fit_mixture(z);
+  const Mixture mixture = fit_mixture(z, part, rows);
   p.assign(n, 0.0);
   std::vector<int> ring;
   for(std::size_t i = 0; i < n; ++i)
   {
-    if(std::isnan(z[i])) continue;
+    if(std::isnan(z[i]) || !part.owns_vertex(i)) continue;
     count += 1;
     if(!(mixture.p[i] > 0)) continue;
     read_ring(topo, i, ring);
@@ -300,12 +317,16 @@ inline double find_hits(const Triangle_topology& topo, const std::vector<double>
     }
     p[i] = largest && beside < 2 ? mixture.p[i] : 0.0;
   }
-  return count;
+  part.refresh(p);
+  return part.sum(count);
 }
 
-// The lattice step of one axis, 0 if its values are not on one.
-inline double lattice_step(std::vector<double> v, double mean_edge)
+// The lattice step of one axis, 0 if its values are not on one (`v`: a process's; its distinct values are gathered).
+inline double lattice_step(std::vector<double> v, double mean_edge, const Part_view& part)
 {
+  std::sort(v.begin(), v.end());
+  v.erase(std::unique(v.begin(), v.end()), v.end());
+  v = part.gathered(std::move(v));
   if(v.size() < 2) return 0;
   std::sort(v.begin(), v.end());
   const double range = v.back() - v.front();
@@ -333,12 +354,15 @@ inline double lattice_step(std::vector<double> v, double mean_edge)
 } // namespace noise_model_detail
 
 /// The model of the noise of X (the first 3 columns; `noise`: the estimate made on it; `usable`: the vertices
-/// that sample it; `mean_edge`: the mesh's mean edge length, model units).
+/// that sample it; `mean_edge`: the mesh's mean edge length, model units; `part`: the part of the mesh a process
+/// holds, its own vertices its samples).
 inline Noise_model estimate_noise_model(const Triangle_topology& topo, const Control_matrix& X,
-                                        const std::vector<bool>& usable, const Noise_estimate& noise, double mean_edge)
+                                        const std::vector<bool>& usable, const Noise_estimate& noise, double mean_edge,
+                                        const Part_view& part = whole_mesh_view())
 {
   namespace d = noise_model_detail;
   const std::size_t n = std::size_t(X.rows());
+  const double rows = double(whole_count(std::vector<bool>(n, true), n, part));
   Noise_model m;
   m.normal = noise.relative_sigma();
   std::vector<double> normal2(n, std::nan("")), tangential2(n, std::nan("")), across;
@@ -347,23 +371,24 @@ inline Noise_model estimate_noise_model(const Triangle_topology& topo, const Con
     {
       normal2[i] = noise.normal_sample(i) * noise.normal_sample(i);
       tangential2[i] = noise.tangential_sample(i);
-      across.push_back(tangential2[i]);
+      if(part.owns_vertex(i)) across.push_back(tangential2[i]);
     }
   // the median of a chi-square with 2 degrees of freedom is 2 ln 2
-  m.tangential = across.empty() ? 0.0 : std::sqrt(d::percentile(across, 0.5) / (2 * std::log(2.0)));
+  const double median_across = d::percentile(across, 0.5, part);
+  m.tangential = std::isnan(median_across) ? 0.0 : std::sqrt(median_across / (2 * std::log(2.0)));
   m.tangential_scale = d::local_scales(topo, tangential2, 2 * m.tangential * m.tangential, noise.tangential_null(),
-                                       2.0, m.tangential_spread);
+                                       2.0, m.tangential_spread, part);
   // impulses against local scales clipped at the global deviation only (a spike widens them little); the local
   // scales then leave out those hits and their rings, and the impulses are read again against them
   double first_spread = 1;
   // the samples in units of the deviation they read (the noise's, less what its correlation hides from them)
   const double read = noise.read_sigma();
   const std::vector<double> first = d::local_scales(topo, normal2, read * read, noise.normal_null(), 1.0,
-                                                    first_spread, 1);
+                                                    first_spread, part, 1);
   std::vector<double> z(n, std::nan(""));
   for(std::size_t i = 0; i < n; ++i)
     if(!std::isnan(normal2[i]) && read > 0) z[i] = noise.normal_sample(i) / (read * first[i]);
-  d::find_hits(topo, z, m.hit_probability);
+  d::find_hits(topo, z, m.hit_probability, part, rows);
   std::vector<double> quiet = normal2;
   std::vector<int> ring;
   for(std::size_t i = 0; i < n; ++i)
@@ -374,26 +399,28 @@ inline Noise_model estimate_noise_model(const Triangle_topology& topo, const Con
       for(int j : ring)
         if(std::size_t(j) < n) quiet[std::size_t(j)] = std::nan("");
     }
-  m.normal_scale = d::local_scales(topo, quiet, read * read, noise.normal_null(), 1.0, m.normal_spread);
+  m.normal_scale = d::local_scales(topo, quiet, read * read, noise.normal_null(), 1.0, m.normal_spread, part);
   for(std::size_t i = 0; i < n; ++i)
     if(!std::isnan(z[i])) z[i] *= first[i] / m.normal_scale[i];
-  const double count = d::find_hits(topo, z, m.hit_probability);
+  const double count = d::find_hits(topo, z, m.hit_probability, part, rows);
   // the share of the vertices more likely hit than not, and their deviation in units of the global one
-  double hits = 0, hits_z2 = 0;
+  std::vector<double> hit_sums(2, 0.0);
   for(std::size_t i = 0; i < n; ++i)
-    if(m.hit_probability[i] > 0.5)
+    if(m.hit_probability[i] > 0.5 && part.owns_vertex(i))
     {
-      hits += 1;
-      hits_z2 += std::pow(noise.normal_sample(i) / read, 2);
+      hit_sums[0] += 1;
+      hit_sums[1] += std::pow(noise.normal_sample(i) / read, 2);
     }
+  part.sum(hit_sums);
+  const double hits = hit_sums[0], hits_z2 = hit_sums[1];
   m.hit_share = count > 0 ? hits / count : 0.0;
   m.hit_deviation = hits > 0 ? std::sqrt(hits_z2 / hits) : 0.0;
   for(int a = 0; a < 3; ++a)
   {
     std::vector<double> v;
     for(std::size_t i = 0; i < n; ++i)
-      if(usable[i]) v.push_back(X(Eigen::Index(i), a));
-    m.cell[std::size_t(a)] = d::lattice_step(v, mean_edge);
+      if(usable[i] && part.owns_vertex(i)) v.push_back(X(Eigen::Index(i), a));
+    m.cell[std::size_t(a)] = d::lattice_step(v, mean_edge, part);
   }
   m.mean_edge = mean_edge;
   return m;

@@ -13,10 +13,12 @@
 #define CGAL_ANISOTROPIC_FAIRING_INTERNAL_MESH_PROCESS_PART_H
 
 #include <CGAL/Anisotropic_fairing/internal/mesh/Locality_ordering.h>
+#include <CGAL/Anisotropic_fairing/internal/types/Control_matrix.h>
 
 #include <algorithm>
 #include <cstddef>
 #include <cstdint>
+#include <exception>
 #include <unordered_map>
 #include <vector>
 
@@ -105,6 +107,7 @@ public:
         std::copy_n(caller.data() + std::size_t(caller_[i]) * columns, columns, values + i * columns);
   }
   void refresh(std::vector<double>& field) const { refresh(field.data(), 1); }
+  void refresh(Control_matrix& X) const { refresh(X.data(), std::size_t(X.cols())); }
   /// one value per row: the least of every process's value of each vertex, at its owner
   void minimum_at_owners(std::vector<double>& field) const
   {
@@ -197,6 +200,40 @@ inline std::size_t whole_boundary_loops(const Ghost_layer& layer, const Part_vie
   }
   return loops;
 }
+
+/// Thrown on the processes whose part passed the input's checks when another's did not: that one reports the error.
+struct Input_failed_elsewhere : std::exception
+{
+  const char* what() const noexcept override { return "another process's part of the mesh failed the input checks"; }
+};
+
+/// The input's checks of a mesh in parts, agreed before any exchange: a part that fails them (a check throws) says
+/// so as it unwinds, and the other processes then throw Input_failed_elsewhere, so that none waits for another.
+class Input_agreement
+{
+public:
+  explicit Input_agreement(const Process_part* part) : part_(part) {}
+  Input_agreement(const Input_agreement&) = delete;
+  Input_agreement& operator=(const Input_agreement&) = delete;
+  ~Input_agreement()
+  {
+    if(part_ && !agreed_) vote(1);
+  }
+  void passed()
+  {
+    agreed_ = true;
+    if(part_ && vote(0) > 0) throw Input_failed_elsewhere();
+  }
+
+private:
+  double vote(double failed) const
+  {
+    part_->maximum(&failed, 1);
+    return failed;
+  }
+  const Process_part* part_;
+  bool agreed_ = false;
+};
 
 /// The whole mesh's view, for a measure given none.
 inline const Part_view& whole_mesh_view()

@@ -21,6 +21,8 @@
 #include <functional>
 #include <limits>
 #include <memory>
+#include <optional>
+#include <utility>
 #include <vector>
 
 namespace CGAL {
@@ -30,26 +32,32 @@ namespace internal {
 /// How far, in standard errors of their difference, an estimate must lie above the leader's to be dropped.
 constexpr double drop_standard_errors = 2;
 
-/// The mean of a - b and its standard error (the per-vertex differences read as independent); a and b of
-/// the same size, at least two.
-inline std::pair<double, double> mean_difference(const std::vector<double>& a, const std::vector<double>& b)
+/// The mean of a - b and its standard error (the per-vertex differences read as independent) over the whole
+/// mesh (`part`: each process's own rows), when there are at least two; a and b of the same size.
+inline std::optional<std::pair<double, double>> mean_difference(const std::vector<double>& a,
+                                                                const std::vector<double>& b,
+                                                                const Part_view& part = whole_mesh_view())
 {
-  const std::size_t n = a.size();
-  double sum = 0;
-  for(std::size_t i = 0; i < n; ++i) sum += a[i] - b[i];
-  const double mean = sum / double(n);
+  const std::size_t rows = a.size();
+  std::vector<double> d(rows);
+  for(std::size_t i = 0; i < rows; ++i) d[i] = a[i] - b[i];
+  const std::pair<double, std::size_t> mean = whole_mean(d, part);
+  const double n = double(mean.second);
+  if(mean.second < 2) return std::nullopt;
   double squares = 0;
-  for(std::size_t i = 0; i < n; ++i) squares += (a[i] - b[i] - mean) * (a[i] - b[i] - mean);
-  return { mean, std::sqrt(squares / double(n - 1) / double(n)) };
+  for(std::size_t i = 0; i < rows; ++i)
+    if(part.owns_vertex(i)) squares += (d[i] - mean.first) * (d[i] - mean.first);
+  return std::make_pair(mean.first, std::sqrt(part.sum(squares) / (n - 1) / n));
 }
 
 /// Whether an estimate with terms `t`, `rising` from the last step's, lies above the leader's terms by more
 /// than drop_standard_errors standard errors.
-inline bool worse_than_leader(const std::vector<double>& t, const std::vector<double>& leader, bool rising)
+inline bool worse_than_leader(const std::vector<double>& t, const std::vector<double>& leader, bool rising,
+                              const Part_view& part = whole_mesh_view())
 {
-  if(!rising || t.size() != leader.size() || t.size() < 2) return false;
-  const std::pair<double, double> d = mean_difference(t, leader);
-  return d.first > drop_standard_errors * d.second;
+  if(!rising || t.size() != leader.size()) return false;
+  const std::optional<std::pair<double, double>> d = mean_difference(t, leader, part);
+  return d && d->first > drop_standard_errors * d->second;
 }
 
 /// A candidate's test after each step, on its written positions Y and its probe's P: false drops it. Its
@@ -61,12 +69,10 @@ drop_test(const Risk_estimate& estimate, const std::vector<double>& leader, doub
   return [&estimate, &leader, &last, previous](const Control_matrix& Y, const Control_matrix& P) {
     const std::vector<double> t = estimate.terms(Y, P);
     if(t.empty()) return true;
-    double sum = 0;
-    for(double x : t) sum += x;
-    last = sum / double(t.size()) - 1;
+    last = whole_mean(t, estimate.part()).first - 1;
     const bool rising = last > *previous;
     *previous = last;
-    return !worse_than_leader(t, leader, rising);
+    return !worse_than_leader(t, leader, rising, estimate.part());
   };
 }
 

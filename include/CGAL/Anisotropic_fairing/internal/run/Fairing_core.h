@@ -218,7 +218,7 @@ private:
   {
     const bool removes = given_.automatic && given_.mode != Attribute_mode::ATTRIBUTES_ONLY &&
                          s_.stopping.noise_discrepancy > 0 && !(s_.maximum_deviation > 0);
-    removed_spikes_ = removes ? remove_isolated_spikes(*layer_.topology, sampled_rows(), X_) : 0;
+    removed_spikes_ = removes ? remove_isolated_spikes(*layer_.topology, sampled_rows(), X_, part_) : 0;
   }
 
   // the noise, from the mesh itself, and its deviation at each vertex in model units
@@ -258,10 +258,11 @@ private:
                                 : tensor_chosen ? "isotropic" : density_scaled_flow(tensor_);
       // the comparison of flows runs at the noise level itself, the strength's run after it (fair_with)
       if(compares_flows()) s_.strength = 1;
-      choices_ = automatic_choices(*noise_, s_, tensor_chosen, removed_spikes_, n_, scaled_flow);
+      const std::size_t vertices = whole_count(std::vector<bool>(n_, true), n_, part_);
+      choices_ = automatic_choices(*noise_, s_, tensor_chosen, removed_spikes_, vertices, scaled_flow);
       if(given_.mode != Attribute_mode::ATTRIBUTES_ONLY)
       {
-        noise_model_ = estimate_noise_model(*layer_.topology, X_, sampled_rows(), *noise_, mean_edge_);
+        noise_model_ = estimate_noise_model(*layer_.topology, X_, sampled_rows(), *noise_, mean_edge_, part_);
         choices_ += "; " + noise_model_.description() + "; " + noise_->correlation().description();
       }
     }
@@ -318,7 +319,7 @@ private:
     }
     else estimate_surface_ = oracle_surface_.size() > 0 ? oracle_surface_ : prefiltered_input(cache);
     if(given_.steps_given) std::rotate(candidates.begin(), candidates.begin() + own, candidates.begin() + own + 1);
-    Selection_context context{ layer_, input_, noise_sigma_, probe_values_, estimate_surface_ };
+    Selection_context context{ layer_, input_, noise_sigma_, probe_values_, estimate_surface_, &part_ };
     context.kind = risk_kind_;
     context.model = noise_model_.normal_scale.empty() ? nullptr : &noise_model_;
     if(observer_)
@@ -512,8 +513,7 @@ private:
     const bool moves_geometry = given_.mode != Attribute_mode::ATTRIBUTES_ONLY;
     const auto bounds = user_bounds(Y.cols(), moves_geometry, 3, r.absolute_maximum_deviation,
                                     s_.attribute_maximum_deviation);
-    const Column_bound& geometry = bounds[0];
-    const Column_bound& values = bounds[1];
+    const Column_bound &geometry = bounds[0], &values = bounds[1];
     std::vector<bool> moved(n_, false);
     const std::vector<bool> own_written = part_.own(written_);
     clamp_to_bound(Y, start, geometry, written_, moved);

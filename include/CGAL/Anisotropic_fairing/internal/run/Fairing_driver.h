@@ -99,6 +99,7 @@ Fairing_report fair_with_options(TriangleMesh& tm, VertexPointMap vpm, Attribute
   typedef Indexed_mesh<TriangleMesh> Mesh;
   CGAL::Real_timer total;
   total.start();
+  Input_agreement agreement(elements.part());   // a part of a mesh: every process's input checked, or none goes on
   // parameters (Fairing_parameters.h); without a time step the package chooses the time step, the
   // stopping rule and (unless given) the tensor from the mesh (Automatic_parameters.h)
   Fairing_parameters given = resolve_fairing_parameters(options, !std::is_same<AttributeMap, No_attributes>::value);
@@ -124,6 +125,7 @@ Fairing_report fair_with_options(TriangleMesh& tm, VertexPointMap vpm, Attribute
     for(std::size_t i = 0; i < held.size(); ++i) held[i] = hooks.constrained(im.vertex(i));
 
   const Fairing_input in{ im.ghost_layer(), P, A, held, bool(hooks.control_point) || bool(hooks.attribute_control) };
+  agreement.passed();
   const double input_seconds = total.time();
   Memory_plan plan = memory_plan(given, tensor, im.number_of_vertices(), A.cols());
   // what an automatic factorisation may take beside the run (Solver_choice.h)

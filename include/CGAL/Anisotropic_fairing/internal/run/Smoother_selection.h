@@ -43,14 +43,16 @@ enum class Risk_kind { POSITIONS, FACE_NORMALS, FACE_NORMALS_ON_RESULT };
 
 /// `model`: the noise model (Noise_model.h) the face normals' error is estimated with: its deviation along the
 /// normals and across them at each vertex, `sigma` scaled by the model's local factors (none: `sigma` along the
-/// normals only).
+/// normals only). `part`: the part of the mesh a process holds (the face normals' error, which the benchmarks
+/// measure, reads the whole mesh).
 inline std::unique_ptr<Risk_estimate> make_risk_estimate(Risk_kind kind, const Ghost_layer& layer,
                                                          const Control_matrix& y, const Control_matrix& surface,
                                                          const std::vector<double>& sigma, const std::vector<double>& b,
-                                                         const Noise_model* model = nullptr)
+                                                         const Noise_model* model = nullptr,
+                                                         const Part_view& part = whole_mesh_view())
 {
   if(kind == Risk_kind::POSITIONS)
-    return std::make_unique<Position_error_estimate>(*layer.topology, layer.real_faces, y, surface, sigma, b);
+    return std::make_unique<Position_error_estimate>(*layer.topology, layer.real_faces, y, surface, sigma, b, part);
   std::vector<double> along = sigma, across;
   if(model && model->normal > 0)
   {
@@ -75,6 +77,7 @@ struct Selection_context
   const std::vector<double>& sigma;     // the noise's deviation at each vertex (0: none to estimate)
   const std::vector<double>& probe;     // the estimate's probe, in units of sigma (Tensor_selection.h)
   const Control_matrix& surface;        // the surface the estimate measures on, made by the first run (empty: none)
+  const Part_view* part = nullptr;      // the part of the mesh a process holds (none: the whole mesh)
   Risk_kind kind = Risk_kind::POSITIONS;
   const Noise_model* model = nullptr;   // the noise model the face normals' error is estimated with (none: sigma)
   // benchmarks: what sees the candidates once estimated, and the estimate
@@ -265,7 +268,8 @@ struct Estimate_basis
   bool made() const { return bool(estimate); }
   void make(const Control_matrix& surface, const Selection_context& context, const std::vector<double>& b)
   {
-    estimate = make_risk_estimate(context.kind, context.layer, context.input, surface, context.sigma, b, context.model);
+    estimate = make_risk_estimate(context.kind, context.layer, context.input, surface, context.sigma, b, context.model,
+                                  context.part ? *context.part : whole_mesh_view());
   }
 };
 

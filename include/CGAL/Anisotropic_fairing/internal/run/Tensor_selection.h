@@ -21,11 +21,13 @@
 #include <CGAL/Anisotropic_fairing/internal/types/Keyed_normal.h>
 #include <CGAL/Anisotropic_fairing/internal/types/Vector3.h>
 #include <CGAL/Anisotropic_fairing/internal/flow/Step_safety.h>
+#include <CGAL/Anisotropic_fairing/internal/mesh/Process_part.h>
 #include <CGAL/Anisotropic_fairing/internal/mesh/Triangle_topology.h>
 
 #include <cmath>
 #include <cstddef>
 #include <cstdint>
+#include <utility>
 #include <vector>
 
 namespace CGAL {
@@ -35,8 +37,10 @@ namespace internal {
 /// The finite difference of the risk estimate, in units of the noise's deviation.
 constexpr double risk_probe = 0.05;
 
-/// Area-weighted unit normals at the vertices of the first `real_faces` faces of Y (zero elsewhere).
-inline Control_matrix vertex_normals(const Triangle_topology& topo, std::size_t real_faces, const Control_matrix& Y)
+/// Area-weighted unit normals at the vertices of the first `real_faces` faces of Y (zero elsewhere); `part`: the
+/// part of the mesh a process holds (the rows it does not own, its faces around them maybe not all, from their owners).
+inline Control_matrix vertex_normals(const Triangle_topology& topo, std::size_t real_faces, const Control_matrix& Y,
+                                     const Part_view& part = whole_mesh_view())
 {
   Control_matrix N = Control_matrix::Zero(Y.rows(), 3);
   for(std::size_t f = 0; f < real_faces; ++f)
@@ -47,7 +51,23 @@ inline Control_matrix vertex_normals(const Triangle_topology& topo, std::size_t 
   }
   for(Eigen::Index i = 0; i < N.rows(); ++i)
     if(N.row(i).norm() > 0) N.row(i).normalize();
+  part.refresh(N);
   return N;
+}
+
+/// The mean of per-vertex values `t` over the whole mesh (each process's own rows, over the processes), and
+/// their number.
+inline std::pair<double, std::size_t> whole_mean(const std::vector<double>& t, const Part_view& part)
+{
+  std::vector<double> sums(2, 0.0);
+  for(std::size_t i = 0; i < t.size(); ++i)
+    if(part.owns_vertex(i))
+    {
+      sums[0] += t[i];
+      sums[1] += 1;
+    }
+  part.sum(sums);
+  return { sums[0] / sums[1], std::size_t(sums[1] + 0.5) };
 }
 
 /// The probe of the risk estimate: per vertex, a standard normal number drawn by its key (Vertex_keys.h; none: its
@@ -112,24 +132,26 @@ public:
   virtual const char* description() const = 0;
   /// Measures on `surface` from now on, when the estimate can (its probe does not depend on where it measures).
   virtual bool measure_on_result(const Control_matrix& surface) { (void)surface; return false; }
+  /// The part of the mesh whose rows it reads (its terms' means are over every process's own rows)
+  virtual const Part_view& part() const { return whole_mesh_view(); }
 };
 
 /// SURE of the positions along the normals N of a surface, per vertex in units of the noise: the sum of
-/// risk_terms / rows - 1 (0: exact, about 1: no better than the input).
+/// risk_terms / rows - 1 (0: exact, about 1: no better than the input); `part`: the part of the mesh a process
+/// holds, whose own rows it sums.
 class Position_error_estimate : public Risk_estimate
 {
 public:
   Position_error_estimate(const Triangle_topology& topo, std::size_t real_faces, const Control_matrix& y,
-                          const Control_matrix& surface, const std::vector<double>& sigma, const std::vector<double>& b)
-    : y_(y), N_(vertex_normals(topo, real_faces, surface)), probed_(probed_input(y, N_, sigma, b)), sigma_(sigma),
-      b_(b)
+                          const Control_matrix& surface, const std::vector<double>& sigma, const std::vector<double>& b,
+                          const Part_view& part = whole_mesh_view())
+    : y_(y), N_(vertex_normals(topo, real_faces, surface, part)), probed_(probed_input(y, N_, sigma, b)),
+      sigma_(sigma), b_(b), part_(part)
   {}
   const Control_matrix& probed() const override { return probed_; }
   double relative(const Control_matrix& f, const Control_matrix& f_probed) const override
   {
-    double risk = 0;
-    for(double x : terms(f, f_probed)) risk += x;
-    return risk / double(y_.rows()) - 1;
+    return whole_mean(terms(f, f_probed), part_).first - 1;
   }
   std::vector<double> terms(const Control_matrix& f, const Control_matrix& f_probed) const override
   {
@@ -137,14 +159,15 @@ public:
   }
   double relative_loss(const Control_matrix& f, const Control_matrix& x) const override
   {
-    double loss = 0;
+    std::vector<double> loss(std::size_t(f.rows()), 0.0);
     for(Eigen::Index i = 0; i < f.rows(); ++i)
     {
       const double s = sigma_[std::size_t(i)];
-      if(s > 0) loss += std::pow(N_.row(i).dot(f.row(i).head(3) - x.row(i).head(3)) / s, 2);
+      if(s > 0) loss[std::size_t(i)] = std::pow(N_.row(i).dot(f.row(i).head(3) - x.row(i).head(3)) / s, 2);
     }
-    return loss / double(f.rows());
+    return whole_mean(loss, part_).first;
   }
+  const Part_view& part() const override { return part_; }
   const char* description() const override
   {
     return "Stein's unbiased risk estimate per vertex, in units of the noise";
@@ -155,6 +178,7 @@ private:
   Control_matrix N_, probed_;
   const std::vector<double>& sigma_;
   std::vector<double> b_;
+  const Part_view& part_;
 };
 
 } // namespace internal
