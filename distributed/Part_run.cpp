@@ -6,17 +6,20 @@
 // (anisotropic_fairing() on it, with the part's Process_part: Part_process.h), whose measures of the whole mesh
 // are made over the processes and whose flow steps on them (Distributed_cache.h with the part's layout). Each
 // process then writes its block of vertex records at their places in the output, every vertex property as
-// read, the faces as they were. What a part cannot run yet (part_refusal) is run with the whole mesh on every
-// process (Distributed_run.cpp).
+// read but the normals (nx, ny, nz: the faired surface's, as the serial program writes them), the faces as they
+// were. What a part cannot run yet (part_refusal) is run with the whole mesh on every process (Distributed_run.cpp).
 
 #include "Part_run.h"
 
 #include "Distributed_flow.h"
 #include "Mesh_part.h"
 #include "Part_process.h"
+#include "Part_values.h"
 #include "Ply_blocks.h"
 #include "Run_support.h"
+#include "held_vertices.h"
 #include "mesh_io.h"
+#include "written_normals_and_curvature.h"
 
 #include <CGAL/Anisotropic_fairing/internal/run/Caller_maps.h>
 #include <CGAL/Anisotropic_fairing/internal/run/Fairing_driver.h>
@@ -26,6 +29,7 @@
 #include <algorithm>
 #include <filesystem>
 #include <limits>
+#include <unordered_map>
 
 namespace af_distributed {
 
@@ -71,13 +75,51 @@ AF::Input_error in_the_whole_mesh(const AF::Input_error& e, const Mesh_part& par
   return E(e.kind(), std::size_t(global[local]), message);
 }
 
+// --hold on the part's vertices, as the serial program reads it (held_vertices.cpp): a vertex property of the file
+// (held where it is not 0) or a file of vertex indices of the whole mesh. Returns how many of the whole mesh's.
+std::size_t part_held(MPI_Comm comm, const af_tool::Options& o, const Ply_blocks& blocks, const Mesh_part& part,
+                      std::vector<unsigned char>& held)
+{
+  held.assign(part.global_vertex.size(), 0);
+  if(o.hold.empty()) return 0;
+  const auto named = std::find(blocks.names.begin(), blocks.names.end(), o.hold);
+  if(named != blocks.names.end())
+  {
+    const std::vector<double> values = part_values(comm, blocks, part);
+    const std::size_t k = std::size_t(named - blocks.names.begin()), columns = blocks.names.size();
+    for(std::size_t v = 0; v < held.size(); ++v) held[v] = values[v * columns + k] != 0 ? 1 : 0;
+  }
+  else
+  {
+    std::unordered_map<std::int64_t, std::size_t> local;
+    for(std::size_t v = 0; v < part.global_vertex.size(); ++v) local.emplace(part.global_vertex[v], v);
+    const auto mark = [&](std::size_t i) {
+      const auto at = local.find(std::int64_t(i));
+      if(at != local.end()) held[at->second] = 1;
+    };
+    if(!af_tool::read_vertex_index_file(o.hold, std::size_t(blocks.mesh.vertices), mark))
+      af_tool::fail("input_error", "--hold " + o.hold + ": neither a numeric vertex property of the input nor a "
+                                                        "readable file of vertex indices");
+  }
+  unsigned long own = 0, all = 0;
+  for(std::size_t v = 0; v < part.owned_vertices; ++v) own += held[v];
+  MPI_Allreduce(&own, &all, 1, MPI_UNSIGNED_LONG, MPI_SUM, comm);
+  return std::size_t(all);
+}
+
+// the library's call on the part, its faired control points to `control` (as the serial program asks for them)
 AF::Fairing_report fair_part(const af_tool::Options& o, af_tool::Mesh& mesh, const Mesh_part& part,
-                             const Part_process& process, Distributed_state& state, bool print)
+                             const Part_process& process, Distributed_state& state, bool print,
+                             std::vector<unsigned char>& held, std::vector<af_tool::Point>& control)
 {
   AF::Fairing_options options = o.fairing;
   options.attribute_mode = AF::Attribute_mode::GEOMETRY_ONLY;
   options.memory_limit = std::numeric_limits<double>::infinity();
-  const auto np = AF::parameters::fairing_options(options).callback(step_lines(o, print));
+  control.resize(mesh.number_of_vertices());
+  const auto np = AF::parameters::fairing_options(options)
+                    .control_point_map(CGAL::make_property_map(control))
+                    .vertex_is_constrained_map(CGAL::make_property_map(held))
+                    .callback(step_lines(o, print));
   const AFI::No_attributes none;
   const auto hooks = AFI::caller_hooks<af_tool::Mesh>(none, np);
   const Distributed_elements elements{ &state, &process };
@@ -89,28 +131,63 @@ AF::Fairing_report fair_part(const af_tool::Options& o, af_tool::Mesh& mesh, con
   catch(const AF::Input_error& e) { throw in_the_whole_mesh(e, part); }
 }
 
-// the own vertices' new positions to the holders of their blocks, then each process's block written in place in
-// `path`
+// the columns of the vertex properties nx, ny, nz among the block's values (empty: the input has no normals)
+std::vector<std::size_t> normal_columns(const Ply_blocks& blocks)
+{
+  std::vector<std::size_t> columns;
+  for(const char* name : { "nx", "ny", "nz" })
+    for(std::size_t k = 0; k < blocks.names.size(); ++k)
+      if(blocks.names[k] == name) columns.push_back(k);
+  return columns.size() == 3 ? columns : std::vector<std::size_t>();
+}
+
+// The input's normals replaced by the faired surface's at the part's vertices, as the serial program replaces them
+// (written_normals_and_curvature.cpp: the limit surface's, from the control points); an own vertex's fan and the
+// rings its normal reads are in its part. Returns what the report's `normals` says.
+std::string replace_normals(const af_tool::Options& o, af_tool::Mesh& mesh, const std::vector<af_tool::Point>& control,
+                            const AF::Fairing_report& report)
+{
+  mesh.add_property_map<af_tool::Vertex_index, af_tool::Vector>("v:normal", af_tool::Vector(0, 0, 0));
+  af_tool::Input_info info;
+  info.has_normals = info.normals_read = true;
+  af_tool::Run_record record;
+  record.report = report;
+  af_tool::write_normals_and_curvature(o, info, true, control, mesh, record);
+  return record.normals;
+}
+
+// the own vertices' new positions (and normals, when the file has them) to the holders of their blocks, then each
+// process's block written in place in `path`
 void write_blocks(const af_tool::Options& o, const std::string& path, MPI_Comm comm, const Ply_blocks& blocks,
                   const Mesh_part& part, const af_tool::Mesh& mesh)
 {
-  struct Moved { std::int64_t vertex; double point[3]; };
+  struct Moved { std::int64_t vertex; double point[3], normal[3]; };
   const int size = part.size;
+  const std::vector<std::size_t> normal = normal_columns(blocks);
+  const auto normals = mesh.property_map<af_tool::Vertex_index, af_tool::Vector>("v:normal");
   std::vector<std::vector<Moved>> out(static_cast<std::size_t>(size));
   for(std::size_t v = 0; v < part.owned_vertices; ++v)
   {
-    const af_tool::Point& p = mesh.point(af_tool::Mesh::Vertex_index(af_tool::Mesh::size_type(v)));
+    const af_tool::Vertex_index i(static_cast<af_tool::Mesh::size_type>(v));
+    const af_tool::Point& p = mesh.point(i);
+    const af_tool::Vector n = normals.second ? normals.first[i] : af_tool::Vector(0, 0, 0);
     const std::int64_t g = part.global_vertex[v];
-    out[std::size_t(block_of(g, blocks.mesh.vertices, size))].push_back({ g, { p.x(), p.y(), p.z() } });
+    out[std::size_t(block_of(g, blocks.mesh.vertices, size))].push_back({ g, { p.x(), p.y(), p.z() },
+                                                                          { n.x(), n.y(), n.z() } });
   }
   const std::int64_t first = block_first(blocks.mesh.vertices, part.rank, size);
-  std::vector<double> points = blocks.mesh.points;
+  std::vector<double> points = blocks.mesh.points, values = blocks.values;
+  const std::size_t columns = blocks.names.size();
   for(const Moved& m : af_distributed::exchange(comm, out))
-    std::copy(m.point, m.point + 3, points.begin() + std::ptrdiff_t(3 * (m.vertex - first)));
+  {
+    const std::size_t row = std::size_t(m.vertex - first);
+    std::copy(m.point, m.point + 3, points.begin() + std::ptrdiff_t(3 * row));
+    for(std::size_t a = 0; a < normal.size() && normals.second; ++a) values[row * columns + normal[a]] = m.normal[a];
+  }
   std::vector<std::int64_t> mine(points.size() / 3);
   for(std::size_t k = 0; k < mine.size(); ++k) mine[k] = first + std::int64_t(k);
   agree_on(comm, [&] { if(part.rank == 0) create_ply_output(o.input, path, blocks.header); }, "write_error");
-  write_ply_blocks(o.input, path, blocks.header, part.rank, size, mine, points, blocks.values);
+  write_ply_blocks(o.input, path, blocks.header, part.rank, size, mine, points, values);
 }
 
 // written through a temporary file next to the output, which replaces the output once every process wrote
@@ -153,15 +230,12 @@ std::string part_refusal(const af_tool::Options& o)
   try { h = read_ply_header(o.input); }
   catch(const std::exception&) { return "the input's header is read with the whole mesh"; }
   if(!h.refusal.empty()) return h.refusal;
-  const Ply_element& vertex = h.elements[std::size_t(h.vertex)];
-  for(const Ply_property& p : vertex.properties)
-    if(p.name == "nx" || p.name == "ny" || p.name == "nz") return "the input has vertex normals";
   const AF::Fairing_options& f = o.fairing;
   if(o.fairing.attribute_mode && *o.fairing.attribute_mode != AF::Attribute_mode::GEOMETRY_ONLY)
     return "attributes are faired";
   if(f.relative_maximum_deviation || f.absolute_maximum_deviation || f.attribute_maximum_deviation > 0)
     return "a deviation bound is given";
-  if(!o.hold.empty() || o.curvature || o.repair) return "--hold, --curvature or --repair is given";
+  if(o.curvature || o.repair) return "--curvature or --repair is given";
   if(f.finite_element != AF::Finite_element::LOOP) return "the linear element is asked for";
   return std::string();
 }
@@ -202,9 +276,15 @@ bool run_on_parts(const af_tool::Options& o, MPI_Comm comm, Run_summary& summary
   state.size = size;
   const Part_process process(comm, part);
   const bool print = rank == 0 && !o.quiet;
-  collectively(comm, o.input, [&] { summary.report = fair_part(o, mesh, part, process, state, print); });
+  std::vector<unsigned char> held;
+  collectively(comm, o.input, [&] { summary.held_vertices = part_held(comm, o, blocks, part, held); });
+  std::vector<af_tool::Point> control;
+  collectively(comm, o.input,
+               [&] { summary.report = fair_part(o, mesh, part, process, state, print, held, control); });
   const double call_seconds = clock.time();
   after_the_call(comm, o, call_seconds, state, summary);
+  if(!normal_columns(blocks).empty())
+    collectively(comm, o.input, [&] { summary.normals = replace_normals(o, mesh, control, summary.report); });
   summary.part_vertices = gathered<std::size_t>(comm, part.global_vertex.size(), MPI_UNSIGNED_LONG);
   clock.reset();
   summary.peak_memory_mb = gathered<double>(comm, peak_memory_mb(), MPI_DOUBLE);

@@ -17,8 +17,8 @@ namespace af_distributed {
 /// neighbours' corners (2: folds), the places a fold near them marks (3, 4: Fold_sites).
 constexpr int part_depth = 4;
 
-/// Why `o` cannot run on parts (empty: it can): the input and the output binary PLY files of triangles, the
-/// input without vertex normals; the flow with a given time step on the geometry, no bound, no held vertices.
+/// Why `o` cannot run on parts (empty: it can): the input and the output binary PLY files of triangles; the
+/// default run or the flow with a given time step on the geometry, no bound.
 std::string part_refusal(const af_tool::Options& o);
 
 /// Runs `o` with each process holding its part of the mesh, as run_distributed() runs it; false, having run

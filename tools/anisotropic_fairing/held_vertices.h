@@ -5,6 +5,7 @@
 
 #include "tool_common.h"
 
+#include <functional>
 #include <string>
 #include <vector>
 
@@ -15,6 +16,11 @@ namespace af_tool {
 // '#' skipped). held[i] is set to 1 for each vertex held; returns how many. A bad line, an index out of
 // range or a spec that is neither fails naming it.
 std::size_t read_held_vertices(const Mesh& mesh, const std::string& spec, std::vector<unsigned char>& held);
+
+// The indices of the text file `spec` (as above), each below `vertices`, given to `held` in the file's order; a bad
+// line or an index out of range fails naming it. False, having read nothing, where `spec` cannot be opened.
+bool read_vertex_index_file(const std::string& spec, std::size_t vertices,
+                            const std::function<void(std::size_t)>& held);
 
 } // namespace af_tool
 

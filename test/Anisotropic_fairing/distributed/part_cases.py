@@ -6,11 +6,12 @@
 # than the mesh has; what parts cannot run yet runs with the whole mesh on every process, and the report says why.
 import json, math, os, random, struct, sys
 
-def binary_ply(source, target, noise=0.0, seed=3, spikes=0.0, lattice=0.0):
+def binary_ply(source, target, noise=0.0, seed=3, spikes=0.0, lattice=0.0, normals=False):
     """source's mesh (OFF) as a binary little-endian PLY: double x, y, z and a float `quality` per vertex (which
     must come back unchanged), with Gaussian noise of `noise` mean edge lengths on each coordinate; a share `spikes`
     of the vertices thrown 1.5 mean edge lengths off in a random direction (impulsive noise); the coordinates
-    rounded to multiples of `lattice` mean edge lengths (a quantised scan)."""
+    rounded to multiples of `lattice` mean edge lengths (a quantised scan); with `normals`, double nx, ny, nz: the
+    noisy surface's area-weighted vertex normals, as a scanner writes them."""
     words = [w for l in open(source) for w in l.split("#")[0].split()]
     n, m = int(words[1]), int(words[2])
     points = [[float(x) for x in words[4 + 3 * i:7 + 3 * i]] for i in range(n)]
@@ -18,17 +19,26 @@ def binary_ply(source, target, noise=0.0, seed=3, spikes=0.0, lattice=0.0):
     faces = [[int(x) for x in words[at + 4 * j + 1:at + 4 * j + 4]] for j in range(m)]
     edge = sum(math.dist(points[a], points[b]) for a, b, _ in faces) / max(m, 1)
     rng = random.Random(seed)
+    moved = []
+    for p in points:
+        q = [x + noise * edge * rng.gauss(0, 1) for x in p]
+        if rng.random() < spikes:
+            d = [rng.gauss(0, 1) for _ in range(3)]
+            q = [x + 1.5 * edge * y / math.hypot(*d) for x, y in zip(q, d)]
+        moved.append([round(x / (lattice * edge)) * lattice * edge for x in q] if lattice > 0 else q)
+    normal = [[0.0] * 3 for _ in moved]
+    for f in faces:
+        a, b, c = (moved[k] for k in f)
+        u, v = [b[i] - a[i] for i in range(3)], [c[i] - a[i] for i in range(3)]
+        cross = [u[1] * v[2] - u[2] * v[1], u[2] * v[0] - u[0] * v[2], u[0] * v[1] - u[1] * v[0]]
+        for k in f: normal[k] = [x + y for x, y in zip(normal[k], cross)]
     with open(target, "wb") as out:
         out.write(("ply\nformat binary_little_endian 1.0\nelement vertex %d\nproperty double x\nproperty double y\n"
-                   "property double z\nproperty float quality\nelement face %d\nproperty list uchar int vertex_indices\n"
-                   "end_header\n" % (n, m)).encode())
-        for i, p in enumerate(points):
-            q = [x + noise * edge * rng.gauss(0, 1) for x in p]
-            if rng.random() < spikes:
-                d = [rng.gauss(0, 1) for _ in range(3)]
-                q = [x + 1.5 * edge * y / math.hypot(*d) for x, y in zip(q, d)]
-            if lattice > 0: q = [round(x / (lattice * edge)) * lattice * edge for x in q]
+                   "property double z\nproperty float quality\n%selement face %d\nproperty list uchar int vertex_indices\n"
+                   "end_header\n" % (n, "property double nx\nproperty double ny\nproperty double nz\n" if normals else "", m)).encode())
+        for i, q in enumerate(moved):
             out.write(struct.pack("<3df", *q, float(i % 97)))
+            if normals: out.write(struct.pack("<3d", *[x / (math.hypot(*normal[i]) or 1) for x in normal[i]]))
         for f in faces: out.write(struct.pack("<B3i", 3, *f))
 
 def with_bowtie(source, target):
@@ -43,12 +53,21 @@ def with_bowtie(source, target):
     open(target, "w").write("\n".join(lines) + "\n")
 
 def ply_sections(path):
-    """The vertex records (x, y, z, quality) and the face section's bytes of a file binary_ply() wrote."""
+    """The vertex records (x, y, z, quality and nx, ny, nz if there) and the face section's bytes of a binary PLY
+    file of scalar vertex properties."""
     data = open(path, "rb").read()
     end = data.index(b"end_header\n") + len(b"end_header\n")
-    n = int([l for l in data[:end].decode().split("\n") if l.startswith("element vertex")][0].split()[2])
-    rows = [list(struct.unpack_from("<3df", data, end + 28 * i)) for i in range(n)]
-    return rows, data[end + 28 * n:]
+    lines = data[:end].decode().split("\n")
+    at = [i for i, l in enumerate(lines) if l.startswith("element vertex")][0]
+    n, names, record = int(lines[at].split()[2]), [], "<"
+    for l in lines[at + 1:]:
+        if not l.startswith("property"): break
+        record += {"double": "d", "float": "f", "float64": "d", "float32": "f"}[l.split()[1]]
+        names.append(l.split()[2])
+    size = struct.calcsize(record)
+    order = [names.index(k) for k in ("x", "y", "z", "quality", "nx", "ny", "nz") if k in names]
+    rows = [[r[k] for k in order] for r in (struct.unpack_from(record, data, end + size * i) for i in range(n))]
+    return rows, data[end + size * n:]
 
 def equal_on_parts(args, run, mpi, name, mesh, flags, processes=(1, 2, 3)):
     """`flags` on `mesh` (a binary PLY) by the serial program and on parts: the same result and decisions."""
@@ -65,16 +84,19 @@ def equal_on_parts(args, run, mpi, name, mesh, flags, processes=(1, 2, 3)):
         got = json.load(open(out + ".json"))
         rows, faces = ply_sections(out)
         d = max(math.dist(r[:3], q) for r, q in zip(rows, reference)) / diagonal
+        normals = max((math.dist(r[4:7], q[4:7]) for r, q in zip(rows, ply_sections(serial)[0]) if len(r) > 4), default=0)
+        if not normals <= 1e-9: sys.exit("FAIL: %s on %d processes: the normals differ from the serial program's by %.3g" % (name, np, normals))
+        if len(rows[0]) > 4 and got["normals"] != expected["normals"]: sys.exit("FAIL: %s: normals %s" % (name, got["normals"]))
         held = got["per_process"]["part_vertices"]
         print("%s, %d process(es): held in parts %s of %d vertices; largest difference to the serial program %.3g of "
               "the diagonal; %d steps, stopped: %s" % (name, np, held, len(rows), d, len(got["steps"]), got["stop_reason"]))
         if got["mesh_held"] != "parts": sys.exit("FAIL: %s: run with the whole mesh (%s)" % (name, got.get("whole_mesh_why")))
         if np > 1 and max(held) >= len(rows): sys.exit("FAIL: %s on %d processes: a process held the whole mesh" % (name, np))
         if not d <= 1e-9: sys.exit("FAIL: %s on %d processes differs from the serial result by %.3g" % (name, np, d))
-        if faces != faces_in or any(r[3] != q[3] for r, q in zip(rows, rows_in)):
-            sys.exit("FAIL: %s on %d processes: the faces or the vertices' quality were not written as read" % (name, np))
+        if faces != faces_in or any(r[3] != q[3] for r, q in zip(rows, rows_in)) or (len(rows[0]) > 4 and rows[0][4:] == rows_in[0][4:]):
+            sys.exit("FAIL: %s on %d processes: the faces or the vertices' quality were not written as read, or the normals were" % (name, np))
         for key in ("stop_reason", "rejected_steps", "boundary_vertices", "boundary_held_vertices", "boundary_loops",
-                    "isolated_vertices", "components"):
+                    "isolated_vertices", "components", "held_vertices"):
             if got[key] != expected[key]: sys.exit("FAIL: %s on %d processes: %s %s, the serial run's %s" % (name, np, key, got[key], expected[key]))
         if len(got["steps"]) != len(expected["steps"]): sys.exit("FAIL: %s on %d processes: other steps" % (name, np))
         for key in ("noise_level", "mean_edge_length"):
@@ -123,6 +145,11 @@ def parts(args, run, mpi, helpers):
         meshes[name] = os.path.join(args.work, name + ".ply")
         binary_ply(source, meshes[name], noise=0.05)
         equal_on_parts(args, run, mpi, name, meshes[name], iso)
+    # held vertices: a file of the whole mesh's indices, and a vertex property (quality: all but every 97th)
+    held = os.path.join(args.work, "held.txt")
+    open(held, "w").write("# every seventh vertex\n" + "\n".join(str(i) for i in range(0, 1250, 7)) + "\n")
+    equal_on_parts(args, run, mpi, "held_file", meshes["bumpy"], aniso + ["--hold", held])
+    equal_on_parts(args, run, mpi, "held_property", meshes["two_components"], iso + ["--hold", "quality"])
     # a vertex of two fans (a tetrahedron hung on a vertex): read whole, and split there, as the serial program does
     bowtie = os.path.join(args.work, "bowtie.off")
     with_bowtie(os.path.join(args.data, "bumpy.off"), bowtie)
@@ -132,7 +159,8 @@ def parts(args, run, mpi, helpers):
     # the default run: the spikes, the noise model (its lattice too) and the comparison of flows over the parts
     for name, source, noise in (("default_closed", "bunny.off", dict(noise=0.3)), ("default_bordered", "hemisphere.off", dict(noise=0.2)),
                                 ("default_spikes", "bumpy.off", dict(noise=0.02, spikes=0.05)),
-                                ("default_lattice", "bumpy.off", dict(noise=0.1, lattice=0.125))):
+                                ("default_lattice", "bumpy.off", dict(noise=0.1, lattice=0.125)),
+                                ("default_normals", "bunny.off", dict(noise=0.3, normals=True))):
         meshes[name] = os.path.join(args.work, name + ".ply")
         binary_ply(os.path.join(args.data, source), meshes[name], **noise)
         equal_on_parts(args, run, mpi, name, meshes[name], [])
