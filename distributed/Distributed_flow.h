@@ -102,14 +102,25 @@ public:
     op_.assembler().set_context(context_);
   }
   const AFI::Step_units& units() const { return units_; }
-  /// which process's part holds the degenerate face named by `a` (the caller's numbering), when there are several
+  /// which process's part holds the degenerate face named by `a` (the caller's numbering; in parts, the whole
+  /// mesh's: its owner found over the processes, all of which ask), when there are several
   std::string where_face(const AFI::Assembly_statistics& a) const
   {
-    if(d_.size == 1 || !a.degenerate || !context_.original_face || d_.part) return std::string();
-    const std::vector<std::size_t>& original = *context_.original_face;
-    for(std::size_t f = 0; f < original.size(); ++f)
-      if(original[f] == a.degenerate_face) return " (in the part of process " + std::to_string(d_.face_owner[f]) + ")";
-    return std::string();
+    if(d_.size == 1 || !a.degenerate || (!context_.original_face && !d_.part)) return std::string();
+    int owner = -1;
+    if(d_.part)
+    {
+      const auto at = d_.face_of_global.find(std::int64_t(a.degenerate_face));
+      const int mine = at == d_.face_of_global.end() ? -1 : d_.face_owner[at->second];
+      MPI_Allreduce(&mine, &owner, 1, MPI_INT, MPI_MAX, comm_);
+    }
+    else
+    {
+      const std::vector<std::size_t>& original = *context_.original_face;
+      for(std::size_t f = 0; f < original.size() && owner < 0; ++f)
+        if(original[f] == a.degenerate_face) owner = d_.face_owner[f];
+    }
+    return owner < 0 ? std::string() : " (in the part of process " + std::to_string(owner) + ")";
   }
 
   // --- the operator on a surface: a failed prefilter (the same on every process) is an error()

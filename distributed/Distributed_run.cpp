@@ -93,13 +93,20 @@ void write_result(const af_tool::Options& o, Input& in, af_tool::Run_record& rec
   af_tool::merge_copies(in.mesh, in.info.split);   // a split vertex at the mean of its copies
   af_tool::merge_copies(in.values, in.info.split);
   if(in.fair_attributes) af_tool::scatter(in.mesh, in.columns, in.values);
+  write_mesh_file(o, in.mesh, in.info);
+}
+
+} // namespace
+
+void write_mesh_file(const af_tool::Options& o, const af_tool::Mesh& mesh, const af_tool::Input_info& info)
+{
   af_tool::Format format;
   af_tool::format_of(o.output, format);
   const std::filesystem::path tmp = af_tool::temporary_next_to(o.output);
   try
   {
-    af_tool::write_mesh(tmp.string(), format, in.mesh, in.info, false, o.text_output);
-    af_tool::merge_copies_in_file(tmp.string(), format, in.info.split);
+    af_tool::write_mesh(tmp.string(), format, mesh, info, false, o.text_output);
+    af_tool::merge_copies_in_file(tmp.string(), format, info.split);
   }
   catch(const af_tool::Failure& f)
   {
@@ -114,16 +121,14 @@ void write_result(const af_tool::Options& o, Input& in, af_tool::Run_record& rec
   }
   // as anisotropic_fairing warns: what the output's format cannot hold
   std::string dropped;
-  for(const std::string& p : af_tool::dropped_properties(in.mesh, format)) dropped += (dropped.empty() ? "" : ", ") + p;
+  for(const std::string& p : af_tool::dropped_properties(mesh, format)) dropped += (dropped.empty() ? "" : ", ") + p;
   if(!dropped.empty())
     std::fprintf(stderr, "anisotropic_fairing_mpi: warning: %s cannot hold the input's %s: not written\n",
                  o.output.c_str(), dropped.c_str());
   for(const std::string& w :
-      in.info.warnings) // what reading changed for the run (split vertices, triangulated polygons)
+      info.warnings) // what reading changed for the run (split vertices, triangulated polygons)
     std::fprintf(stderr, "anisotropic_fairing_mpi: warning: %s\n", af_tool::one_line(w).c_str());
 }
-
-} // namespace
 
 // the library's call on every process, its runs divided among them; the result written by process 0
 int run_distributed(const af_tool::Options& o, MPI_Comm comm, Run_summary& summary)
@@ -151,8 +156,6 @@ int run_distributed(const af_tool::Options& o, MPI_Comm comm, Run_summary& summa
   const double call_seconds = clock.time();
   after_the_call(comm, o, call_seconds, state, summary);
   const AF::Fairing_report& r = summary.report;
-  if(rank == 0 && !o.quiet && !r.choices.empty())
-    std::fprintf(stderr, "anisotropic_fairing_mpi: automatic parameters: %s\n", af_tool::one_line(r.choices).c_str());
   clock.reset();
   summary.peak_memory_mb = gathered<double>(comm, peak_memory_mb(), MPI_DOUBLE);
   collectively(comm, o.input, [&] {

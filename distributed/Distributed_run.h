@@ -13,6 +13,7 @@
 #define AF_DISTRIBUTED_DISTRIBUTED_RUN_H
 
 #include "Distributed_cache.h"
+#include "mesh_io.h"
 #include "options.h"
 
 #include <CGAL/Anisotropic_fairing/Fairing_report.h>
@@ -48,6 +49,10 @@ struct Run_summary
 /// Runs `o` on the processes of `comm`; returns 0, or throws Collective_failure (the same on every process)
 /// or af_tool::Failure (a usage error, the same on every process).
 int run_distributed(const af_tool::Options& o, MPI_Comm comm, Run_summary& summary);
+
+/// Process 0's writing of a mesh it holds whole (`info`: as the program read it: its split vertices merged back,
+/// what the output's format cannot hold said), as anisotropic_fairing writes it, through a temporary file.
+void write_mesh_file(const af_tool::Options& o, const af_tool::Mesh& mesh, const af_tool::Input_info& info);
 
 /// The JSON text of the report of a run (`ok` false: `status` and `message` say why it failed).
 std::string summary_json(const af_tool::Options& o, const Run_summary& s, bool ok, const std::string& status,

@@ -17,6 +17,7 @@
 #include "Part_values.h"
 #include "Ply_blocks.h"
 #include "Run_support.h"
+#include "Scattered_mesh.h"
 #include "held_vertices.h"
 #include "mesh_io.h"
 #include "written_normals_and_curvature.h"
@@ -221,15 +222,39 @@ void write_result(const af_tool::Options& o, MPI_Comm comm, const Ply_blocks& bl
   }, "write_error");
 }
 
+// binary PLY files of triangles in and out: each process reads and writes its blocks (else process 0 reads the mesh
+// whole and scatters it: Scattered_mesh.h)
+bool by_blocks(const af_tool::Options& o)
+{
+  if(!ends_with(o.input, ".ply") || !ends_with(o.output, ".ply")) return false;
+  try { return read_ply_header(o.input).refusal.empty(); }
+  catch(const std::exception&) { return false; }
+}
+
+// process 0's writing of the mesh it read whole, with every process's faired vertices, as the program writes a mesh
+// held whole (the normals from the control points, split vertices merged back)
+void write_whole(const af_tool::Options& o, MPI_Comm comm, const Mesh_part& part, const af_tool::Mesh& mesh,
+                 const std::vector<af_tool::Point>& control, Whole_mesh_file& whole, Run_summary& summary)
+{
+  std::vector<af_tool::Point> all_control;
+  gather_faired(comm, part, mesh, control, whole, all_control);
+  collectively(comm, o.input, [&] {
+    if(part.rank != 0) return;
+    af_tool::Run_record record;
+    record.report = summary.report;
+    af_tool::write_normals_and_curvature(o, whole.info, true, all_control, whole.mesh, record);
+    af_tool::merge_copies(whole.mesh, whole.info.split);
+    write_mesh_file(o, whole.mesh, whole.info);
+    summary.normals = record.normals;
+  });
+}
+
 } // namespace
 
 std::string part_refusal(const af_tool::Options& o)
 {
-  if(!ends_with(o.input, ".ply") || !ends_with(o.output, ".ply")) return "the input and the output are not PLY files";
-  Ply_header h;
-  try { h = read_ply_header(o.input); }
-  catch(const std::exception&) { return "the input's header is read with the whole mesh"; }
-  if(!h.refusal.empty()) return h.refusal;
+  if(!o.hold.empty() && !by_blocks(o) && !std::filesystem::is_regular_file(o.hold))
+    return "--hold names a vertex property of a mesh process 0 reads whole";
   const AF::Fairing_options& f = o.fairing;
   if(o.fairing.attribute_mode && *o.fairing.attribute_mode != AF::Attribute_mode::GEOMETRY_ONLY)
     return "attributes are faired";
@@ -251,12 +276,22 @@ bool run_on_parts(const af_tool::Options& o, MPI_Comm comm, Run_summary& summary
   clock.start();
   Ply_blocks blocks;
   Mesh_part part;
+  Whole_mesh_file whole;
+  const bool blocks_read = by_blocks(o);
+  if(!blocks_read)
+    collectively(comm, o.input, [&] {
+      if(rank != 0) return;
+      af_tool::read_input(o.input, whole.mesh, whole.info, o.repair);
+      af_tool::check_curvature_properties_free(o, whole.mesh);
+    });
   collectively(comm, o.input, [&] {
-    blocks = read_ply_blocks(o.input, rank, size);
+    if(blocks_read) blocks = read_ply_blocks(o.input, rank, size);
+    else blocks.mesh = scattered_blocks(comm, whole);
     part = make_mesh_part(comm, blocks.mesh, part_depth);
   });
   summary.read_seconds = clock.time();
   summary.vertices = std::size_t(blocks.mesh.vertices);
+  if(!whole.info.split.empty()) summary.vertices = whole.info.split.file_vertices;   // (process 0's: it reports)
   summary.faces = std::size_t(blocks.mesh.faces);
   af_tool::Mesh mesh;
   int surface = 0, everywhere = 0;
@@ -288,7 +323,8 @@ bool run_on_parts(const af_tool::Options& o, MPI_Comm comm, Run_summary& summary
   summary.part_vertices = gathered<std::size_t>(comm, part.global_vertex.size(), MPI_UNSIGNED_LONG);
   clock.reset();
   summary.peak_memory_mb = gathered<double>(comm, peak_memory_mb(), MPI_DOUBLE);
-  write_result(o, comm, blocks, part, mesh);
+  if(blocks_read) write_result(o, comm, blocks, part, mesh);
+  else write_whole(o, comm, part, mesh, control, whole, summary);
   summary.write_seconds = clock.time();
   return true;
 }

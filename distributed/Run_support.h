@@ -10,6 +10,7 @@
 
 #include "Collective_failure.h"
 #include "Distributed_run.h"
+#include "message_text.h"
 #include "tool_common.h"
 
 #include <CGAL/Anisotropic_fairing/Input_error.h>
@@ -123,6 +124,10 @@ inline void after_the_call(MPI_Comm comm, const af_tool::Options& o, double call
           "fairing " + o.input + " failed (" + AF::to_string(r.status) +
             "): " + (r.message.empty() ? std::string("no detail") : r.message),
           AF::to_string(r.status));
+  int rank = 0;
+  MPI_Comm_rank(comm, &rank);
+  if(rank == 0 && !o.quiet && !r.choices.empty())   // as anisotropic_fairing says what the default run chose
+    std::fprintf(stderr, "anisotropic_fairing_mpi: automatic parameters: %s\n", af_tool::one_line(r.choices).c_str());
 }
 
 } // namespace af_distributed

@@ -227,7 +227,9 @@ def run_case():
     elif case == "failures": failures(args, closed)
     elif case == "parts":
         import part_cases
-        part_cases.parts(args, run, mpi, {"two_components": two_components, "with_isolated_vertex": with_isolated_vertex})
+        part_cases.parts(args, run, mpi, {"two_components": two_components, "with_isolated_vertex": with_isolated_vertex,
+                                          "read_mesh": read_mesh, "relative_difference": relative_difference,
+                                          "noisy_scan": noisy_scan})
     elif case == "mesh_part":
         # --mpi names the test program test_mesh_part here: its own checks, on 1, 2 and 3 processes
         for np in (1, 2, 3): print(run(mpi(args, np, args.data)).stdout)

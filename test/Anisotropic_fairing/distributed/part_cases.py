@@ -3,7 +3,8 @@
 # equals the serial program's to 1e-9 (the vertices' other properties and the faces unchanged, byte for byte), with
 # the same decisions and the same measures of the whole mesh (components, border loops and vertices, vertices on
 # no face, the noise level; the default run's spikes, noise model and choice), while each process holds fewer vertices
-# than the mesh has; what parts cannot run yet runs with the whole mesh on every process, and the report says why.
+# than the mesh has (a file not read by blocks: read by process 0 and scattered); what parts cannot run yet runs with
+# the whole mesh on every process, and the report says why.
 import json, math, os, random, struct, sys
 
 def binary_ply(source, target, noise=0.0, seed=3, spikes=0.0, lattice=0.0, normals=False):
@@ -112,6 +113,27 @@ def equal_on_parts(args, run, mpi, name, mesh, flags, processes=(1, 2, 3)):
             if got[key] != expected[serial_key]:
                 sys.exit("FAIL: %s on %d processes: %s '%s', the serial run's '%s'" % (name, np, key, got[key], expected[serial_key]))
 
+def equal_on_scattered_parts(args, run, mpi, helpers, name, mesh, output, flags):
+    """`flags` on `mesh` in a format process 0 reads whole and scatters (Scattered_mesh.h), the output `output`'s
+    format: the serial program's result and decisions, each process holding its part."""
+    serial = os.path.join(args.work, name + "_serial" + output)
+    run([args.tool, mesh, serial, "--quiet", "--solver", "cholesky", "--report", serial + ".json"] + flags)
+    expected = json.load(open(serial + ".json"))
+    for np in (1, 2, 3):
+        out = os.path.join(args.work, "%s_np%d%s" % (name, np, output))
+        run(mpi(args, np, mesh, out, "--quiet", "--report", out + ".json", "-ksp_rtol", "1e-13",
+                "-prefilter_ksp_rtol", "1e-14", "-ksp_max_it", "20000") + flags)
+        got = json.load(open(out + ".json"))
+        d = helpers["relative_difference"](helpers["read_mesh"](out), helpers["read_mesh"](serial))
+        held = got["per_process"]["part_vertices"]
+        print("%s, %d process(es), read by process 0 and scattered: held in parts %s of %d vertices; largest difference "
+              "to the serial program %.3g; %d steps, stopped: %s" % (name, np, held, got["vertices"], d, len(got["steps"]), got["stop_reason"]))
+        if got["mesh_held"] != "parts": sys.exit("FAIL: %s: run with the whole mesh (%s)" % (name, got.get("whole_mesh_why")))
+        if np > 1 and max(held) >= got["vertices"]: sys.exit("FAIL: %s on %d processes: a process held the whole mesh" % (name, np))
+        if not d <= 1e-9: sys.exit("FAIL: %s on %d processes differs from the serial result by %.3g" % (name, np, d))
+        for key in ("stop_reason", "normals", "choices"):
+            if got[key] != expected[key]: sys.exit("FAIL: %s on %d processes: %s %s, the serial run's %s" % (name, np, key, got[key], expected[key]))
+
 def whole_mesh_run(args, run, mpi, name, mesh, flags, why):
     """What parts cannot run yet runs with the whole mesh on every process, and the report says why."""
     out = os.path.join(args.work, name + "_whole" + os.path.splitext(mesh)[1])
@@ -175,4 +197,9 @@ def parts(args, run, mpi, helpers):
     p = run(mpi(args, 2, bad, out, "--quiet") + iso, expect_code=1)
     print("a vertex with a NaN, on 2 processes: %s" % p.stderr.strip().split("\n")[0])
     if "vertex 700 " not in p.stderr or os.path.exists(out): sys.exit("FAIL: the bad vertex is not named as the file numbers it, or an output was written")
-    whole_mesh_run(args, run, mpi, "off_input", os.path.join(args.data, "bumpy.off"), iso, "not PLY")
+    # other formats: read whole by process 0 and scattered, written by it; the default run on an ASCII PLY scan with
+    # vertex normals; a bow-tie OFF, its vertex split as the serial program splits it and merged back
+    scan = os.path.join(args.work, "scan_ascii.ply")
+    helpers["noisy_scan"](os.path.join(args.data, "bunny.off"), scan, True)
+    equal_on_scattered_parts(args, run, mpi, helpers, "scattered_default", scan, ".ply", [])
+    equal_on_scattered_parts(args, run, mpi, helpers, "scattered_bowtie", bowtie, ".off", iso)
