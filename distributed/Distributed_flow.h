@@ -48,8 +48,7 @@ public:
     op_.assembler().set_context(context_);
     for(std::size_t k = 0; k < d_.owned_vertices.size(); ++k)
       if(!constrained[std::size_t(d_.owned_vertices[k])]) free_.push_back(k);
-    for(std::size_t i = 0; i < d_.vertex_owner.size(); ++i)
-      if(!constrained[i]) all_free_rows_.push_back(int(i));
+    for(std::size_t k : free_) own_free_rows_.push_back(d_.owned_vertices[k]);
     long long mine = (long long)free_.size(), all = 0;
     MPI_Allreduce(&mine, &all, 1, MPI_LONG_LONG, MPI_SUM, comm_);
     free_count_ = std::size_t(all);
@@ -68,6 +67,12 @@ public:
   {
     double all = x;
     MPI_Allreduce(&x, &all, 1, MPI_DOUBLE, MPI_MAX, comm_);
+    return all;
+  }
+  double total(double x) const
+  {
+    double all = x;
+    MPI_Allreduce(&x, &all, 1, MPI_DOUBLE, MPI_SUM, comm_);
     return all;
   }
   bool everywhere(bool b) const
@@ -256,7 +261,7 @@ public:
   }
   bool all_finite(const Control_matrix& X) const { return everywhere(X.allFinite()); }
   /// the free rows of the whole mesh: a bound's weights are decided on every row, alike on every process
-  const std::vector<int>& free_rows() const { return all_free_rows_; }
+  const std::vector<int>& free_rows() const { return own_free_rows_; }
 
 private:
   Distributed_state& state_;
@@ -271,7 +276,7 @@ private:
   std::unique_ptr<Distributed_solver> solver_;
   const AFI::Tangential_motion_filter* filter_ = nullptr;
   std::vector<std::size_t> free_;   // positions in d_.owned_vertices of the free ones
-  std::vector<int> all_free_rows_;  // of the mesh the library was given
+  std::vector<int> own_free_rows_;  // the same, as rows of the mesh the library was given
   std::size_t free_count_ = 0;      // of the whole mesh
   const AFI::Stepper_settings* settings_ = nullptr;
   AFI::Step_units units_;

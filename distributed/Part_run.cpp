@@ -256,10 +256,8 @@ std::string part_refusal(const af_tool::Options& o)
   if(!o.hold.empty() && !by_blocks(o) && !std::filesystem::is_regular_file(o.hold))
     return "--hold names a vertex property of a mesh process 0 reads whole";
   const AF::Fairing_options& f = o.fairing;
-  if(o.fairing.attribute_mode && *o.fairing.attribute_mode != AF::Attribute_mode::GEOMETRY_ONLY)
+  if((f.attribute_mode && *f.attribute_mode != AF::Attribute_mode::GEOMETRY_ONLY) || f.attribute_maximum_deviation > 0)
     return "attributes are faired";
-  if(f.relative_maximum_deviation || f.absolute_maximum_deviation || f.attribute_maximum_deviation > 0)
-    return "a deviation bound is given";
   if(o.curvature || o.repair) return "--curvature or --repair is given";
   if(f.finite_element != AF::Finite_element::LOOP) return "the linear element is asked for";
   return std::string();

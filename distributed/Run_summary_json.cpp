@@ -6,6 +6,7 @@
 // vertices and peak memory.
 
 #include "Distributed_run.h"
+#include "json_report.h"
 
 #include <nlohmann/json.hpp>
 
@@ -99,6 +100,11 @@ std::string summary_json(const af_tool::Options& o, const Run_summary& s, bool o
                            { "impulse_share", f.impulse_share },
                            { "impulse_deviation", f.impulse_deviation },
                            { "lattice_step", { f.lattice_step[0], f.lattice_step[1], f.lattice_step[2] } } };
+    af_tool::Run_record record;   // the deviation bounds, as anisotropic_fairing reports them
+    record.fairing_ran = true;
+    record.report = s.report;
+    const nlohmann::json deviations = nlohmann::json::parse(af_tool::deviations_json(o, record));
+    for(const auto& [key, value] : deviations.items()) j[key] = value;
     j["rejected_steps"] = s.report.rejected_steps;
     j["time_step"] = s.report.time_step;
     j["scale"] = s.report.scale;

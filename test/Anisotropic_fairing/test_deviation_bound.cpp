@@ -1,8 +1,9 @@
 // The user's bound on the deviation (named parameter relative_maximum_deviation): every written vertex
 // stays within the bound of its input position, for several bounds, on a noisy sphere and on the
-// Fandisk0.3 denoising pair; as the bound goes to 0 the output tends to the input; with a bound the run
-// never reaches, the result is byte for byte the unbounded run's; a bound near the noise still removes
-// noise (the output is closer to the true sphere than the input); the bound holds with both tensors,
+// Fandisk0.3 denoising pair (and a vertex far from the origin, clamped to a tiny bound); as the bound goes
+// to 0 the output tends to the input; with a bound the run never reaches, the result is byte for byte the
+// unbounded run's; a bound near the noise still removes noise (the output is closer to the true sphere than
+// the input); the bound holds with both tensors,
 // the fourth-order flow, the linear element, borders, constrained vertices, the automatic defaults, and
 // for attributes (separate, coupled, attributes only) with a bound of their own. Run to a steady state, the
 // bounded flow settles within the bound where the unbounded one shrinks past it: on a sphere at the radius
@@ -64,6 +65,38 @@ Mesh noisy_sphere(unsigned int seed, double amplitude)
     m.point(v) = m.point(v) + noise(rng) * n / std::sqrt(n.squared_length());
   }
   return m;
+}
+
+// Vertices far from the origin, carried far past a bound much smaller than their coordinates: the write-back
+// puts each on the bound (within it, and not back at the input), though rounding the point near the input
+// errs by many times 1e-15 of the bound, either way.
+void clamped_far_from_origin()
+{
+  namespace AFI = AF::internal;
+  const int n = 2000;
+  AFI::Control_matrix input(n, 3), Y(n, 3);
+  std::mt19937 rng(5);
+  std::normal_distribution<double> normal(0, 1);
+  for(int i = 0; i < n; ++i)
+  {
+    input.row(i) << 1000.3 + normal(rng), -700.1 + normal(rng), 500.7 + normal(rng);
+    Y.row(i) = input.row(i) + 1e-2 * Eigen::RowVector3d(normal(rng), normal(rng), normal(rng));
+  }
+  for(double radius : { 1e-6, 1e-9, 1e-10 })
+  {
+    AFI::Control_matrix Yc = Y;
+    std::vector<bool> moved(n, false);
+    AFI::clamp_to_bound(Yc, input, AFI::Column_bound{ 0, 3, radius }, std::vector<bool>(n, true), moved);
+    int on_bound = 0;
+    for(int i = 0; i < n; ++i)
+    {
+      const double d = (Yc.row(i) - input.row(i)).norm();
+      on_bound += moved[std::size_t(i)] && d <= radius && d > 0.99 * radius ? 1 : 0;
+    }
+    char what[96];
+    std::snprintf(what, sizeof what, "clamped to a bound of %g at 1000: %d of %d vertices on the bound", radius, on_bound, n);
+    AF_CHECK(on_bound == n, what);
+  }
 }
 
 // the bound holds on every vertex to rounding; the report says so
@@ -349,6 +382,7 @@ void control_points_given_back(const std::string& data)
 int main(int argc, char** argv)
 {
   const std::string data = argc > 1 ? argv[1] : "data";
+  clamped_far_from_origin();
   sphere_bounds();
   fandisk_bounds(data);
   border_bound(data);

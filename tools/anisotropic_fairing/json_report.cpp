@@ -251,6 +251,13 @@ void add_memory(Json& j, const Run_record& r)
 
 } // namespace
 
+std::string deviations_json(const Options& o, const Run_record& r)
+{
+  Json j = Json::object();
+  add_deviations(j, o, r);
+  return j.dump();
+}
+
 std::string report_json(const Options& o, const Run_record& r, double wall_seconds)
 {
   Json j;   // the keys in the order of the calls: the order --help lists and the manual documents

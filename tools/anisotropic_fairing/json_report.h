@@ -40,6 +40,10 @@ struct Run_record
 
 std::string report_json(const Options& o, const Run_record& r, double wall_seconds);
 
+/// The report's keys of the deviation bounds (absolute_maximum_deviation ... clamped_vertices) as a JSON
+/// object: what the distributed program reports of them.
+std::string deviations_json(const Options& o, const Run_record& r);
+
 /// The report's keys in the order written, nested ones in braces ("initial {area, ...}"), from a report
 /// of a run that took a step: the list --help prints.
 std::string report_keys();

@@ -97,7 +97,8 @@ def equal_on_parts(args, run, mpi, name, mesh, flags, processes=(1, 2, 3)):
         if faces != faces_in or any(r[3] != q[3] for r, q in zip(rows, rows_in)) or (len(rows[0]) > 4 and rows[0][4:] == rows_in[0][4:]):
             sys.exit("FAIL: %s on %d processes: the faces or the vertices' quality were not written as read, or the normals were" % (name, np))
         for key in ("stop_reason", "rejected_steps", "boundary_vertices", "boundary_held_vertices", "boundary_loops",
-                    "isolated_vertices", "components", "held_vertices"):
+                    "isolated_vertices", "components", "held_vertices", "bound_held_vertices", "clamped_vertices",
+                    "bound_retaken_steps"):
             if got[key] != expected[key]: sys.exit("FAIL: %s on %d processes: %s %s, the serial run's %s" % (name, np, key, got[key], expected[key]))
         if len(got["steps"]) != len(expected["steps"]): sys.exit("FAIL: %s on %d processes: other steps" % (name, np))
         for key in ("noise_level", "mean_edge_length"):
@@ -186,6 +187,15 @@ def parts(args, run, mpi, helpers):
         meshes[name] = os.path.join(args.work, name + ".ply")
         binary_ply(os.path.join(args.data, source), meshes[name], **noise)
         equal_on_parts(args, run, mpi, name, meshes[name], [])
+    # deviation bounds: the default run's (each vertex held by its own fidelity) and a run of given steps to a
+    # steady state (the uniform weight too), their decisions over the parts
+    equal_on_parts(args, run, mpi, "bounded", meshes["default_closed"], ["--relative-maximum-deviation", "0.05"])
+    equal_on_parts(args, run, mpi, "bounded_steps", noisy, ["--tensor", "isotropic", "--relative-time-step", "0.05",
+                                                            "--steps", "12", "--relative-maximum-deviation", "0.01"])
+    for name in ("bounded", "bounded_steps"):   # the bound held rows: the case tests what it names
+        report = json.load(open(os.path.join(args.work, name + "_serial.ply.json")))
+        if report["bound_held_vertices"] == 0 or (name == "bounded_steps" and not report["bound_uniform_weight"]):
+            sys.exit("FAIL: %s: the bound held no row, or gave no uniform weight" % name)
     # a bad vertex is named by its number in the file, not in a part; nothing is written
     bad = os.path.join(args.work, "nan.ply")
     binary_ply(os.path.join(args.data, "bumpy.off"), bad)

@@ -14,6 +14,8 @@
 // leaves the per-vertex holding the rest. Bajaj & Xu leave this choice open; it is their omega chosen as
 // the surface goes. It comes into force once a vertex is halfway to the bound: a bound the run stays far
 // from changes nothing.
+// On several processes each judges the rows it owns, and the decisions (a retake, the uniform weight) are
+// taken over all of them (`largest`), so that every process decides alike.
 
 #ifndef CGAL_ANISOTROPIC_FAIRING_INTERNAL_FLOW_DEVIATION_BOUND_H
 #define CGAL_ANISOTROPIC_FAIRING_INTERNAL_FLOW_DEVIATION_BOUND_H
@@ -24,7 +26,9 @@
 #include <array>
 #include <cmath>
 #include <cstddef>
+#include <functional>
 #include <limits>
+#include <utility>
 #include <vector>
 
 namespace CGAL {
@@ -55,8 +59,13 @@ inline void clamp_to_bound(Control_matrix& Y, const Control_matrix& input, const
   {
     const double d = row_deviation(Y, input, i, b);
     if(!written[std::size_t(i)] || !(d > b.radius)) continue;
-    // the point is rounded onto the grid of doubles near the input: shrink until the rounded one is within
+    // the point is rounded onto the grid of doubles near the input, whose spacing can be much more than
+    // 1e-15 of a small radius: shrink by what the rounding left beyond the bound or by the spacing (shares
+    // of the radius), whichever is larger, doubled at each attempt; a radius below the spacing leaves the input
     const Eigen::RowVectorXd away = Y.row(i).segment(b.first, b.count) - input.row(i).segment(b.first, b.count);
+    double spacing = 0;
+    for(double x : input.row(i).segment(b.first, b.count))
+      spacing = std::max(spacing, std::nextafter(std::abs(x), std::numeric_limits<double>::infinity()) - std::abs(x));
     double scale = b.radius / d;
     for(int attempt = 0; ; ++attempt)
     {
@@ -64,7 +73,7 @@ inline void clamp_to_bound(Control_matrix& Y, const Control_matrix& input, const
       const double e = row_deviation(Y, input, i, b);
       if(e <= b.radius) break;
       if(attempt == 8) { Y.row(i).segment(b.first, b.count) = input.row(i).segment(b.first, b.count); break; }
-      scale *= b.radius / e * (1 - 1e-15);
+      scale *= b.radius / e * std::max(0.0, 1 - std::ldexp(std::max(e / b.radius - 1, spacing / b.radius), attempt));
     }
     moved[std::size_t(i)] = true;
   }
@@ -95,9 +104,11 @@ class Deviation_bound
 {
 public:
   /// `geometry`, `attributes`: the two bounds on the stepper's columns; `rows`: of the stepper's matrices;
-  /// `uniform`: whether every vertex also gets the uniform weight of a run to a steady state.
-  Deviation_bound(const Column_bound& geometry, const Column_bound& attributes, std::size_t rows, bool uniform)
-    : bounds_{ geometry, attributes }, uniform_(uniform)
+  /// `uniform`: whether every vertex also gets the uniform weight of a run to a steady state; `largest`: the
+  /// largest of every process's value (one process: the value itself).
+  Deviation_bound(const Column_bound& geometry, const Column_bound& attributes, std::size_t rows, bool uniform,
+                  std::function<double(double)> largest = [](double x) { return x; })
+    : bounds_{ geometry, attributes }, uniform_(uniform), largest_(std::move(largest))
   {
     if(active()) { weight_.assign(rows, 0.0); own_.assign(rows, 0.0); }
   }
@@ -123,7 +134,8 @@ public:
 
   /// Whether the candidate's written positions Y carry some free row past its bound (by more than 1%:
   /// the write-back puts what is left on the bound). Where they do, mu is raised on the row (raise()), and
-  /// the step is to be taken again. `tau`: each row's time step of the step taken.
+  /// the step is to be taken again (if so on any process). `free`: the rows this process judges; `tau`: each
+  /// row's time step of the step taken.
   bool exceeded_and_raised(const Control_matrix& Y, const Control_matrix& input, const std::vector<int>& free,
                            const std::vector<double>& tau)
   {
@@ -133,7 +145,7 @@ public:
          raise(r, d, row_deviation(previous_, input, Eigen::Index(r), bounds_[b]), radius, tau[r], 4))
         exceeded = true;
     });
-    return exceeded;
+    return largest_(exceeded ? 1.0 : 0.0) > 0;
   }
 
   /// The written positions of the accepted step: where the next step's motion starts. A row whose next
@@ -157,6 +169,8 @@ public:
       }
       if(d + step > 0.9 * radius) raise(r, d + step, d, radius, tau[r], 1);
     });
+    omega = largest_(omega);
+    halfway = largest_(halfway ? 1.0 : 0.0) > 0;
     // a change of less than a tenth keeps the weights (and a fixed surface's factorised matrix) as they are
     if(uniform_ && (halfway || uniform_weight_ > 0) && std::abs(omega - uniform_weight_) > 0.1 * uniform_weight_)
     {
@@ -168,8 +182,11 @@ public:
 
   /// mu per row (1/time, model units), empty without a bound
   const std::vector<double>& weights() const { return weight_; }
-  /// the largest weight a row was given of its own, and the rows given one
-  double largest_weight() const { return own_.empty() ? 0.0 : *std::max_element(own_.begin(), own_.end()); }
+  /// the largest weight a row was given of its own (of every process's), and this process's rows given one
+  double largest_weight() const
+  {
+    return largest_(own_.empty() ? 0.0 : *std::max_element(own_.begin(), own_.end()));
+  }
   std::size_t held_rows() const
   {
     return std::size_t(std::count_if(own_.begin(), own_.end(), [](double w) { return w > 0; }));
@@ -212,6 +229,7 @@ private:
   Column_bound bounds_[2];
   std::vector<double> start_[2];
   bool uniform_;
+  std::function<double(double)> largest_;
   double uniform_weight_ = 0;
   std::vector<double> own_;      // each row's own weight
   std::vector<double> weight_;   // what holds each row: the larger of its own and the uniform one

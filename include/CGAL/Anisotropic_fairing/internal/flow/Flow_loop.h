@@ -200,7 +200,8 @@ private:
     }
     const auto bounds = user_bounds(Z_.cols(), !fixed_, fixed_ ? 0 : 3, report_.absolute_maximum_deviation,
                                     s_.attribute_maximum_deviation);
-    return Deviation_bound(bounds[0], bounds[1], std::size_t(Z_.rows()), !noise_stop_);
+    return Deviation_bound(bounds[0], bounds[1], std::size_t(Z_.rows()), !noise_stop_,
+                           [this](double x) { return op_.largest(x); });
   }
 
   // the probe, carried along where the steps are linear in the positions (without the bound's own
@@ -542,7 +543,7 @@ private:
       }
     }
     report_.bound_fidelity_weight = bound_->largest_weight();
-    report_.bound_held_vertices = bound_->held_rows();
+    report_.bound_held_vertices = std::size_t(op_.total(double(bound_->held_rows())));
     report_.bound_uniform_weight = bound_->uniform_weight();
     report_.total_seconds = total_.time();
   }

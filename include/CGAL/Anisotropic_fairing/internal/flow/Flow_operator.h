@@ -9,7 +9,9 @@
 //   const Flow_mesh& mesh()                           the mesh, its components and edge lengths
 //   std::string unsupported(settings, fixed)          what of the settings it cannot run (empty: all)
 //   std::size_t vertex_count(), free_count()          the vertices of the whole mesh, and its free ones
-//   largest(x), everywhere(b)                         the largest of the processes' x, whether b holds on each
+//   largest(x), total(x), everywhere(b)               the largest of the processes' x, their sum, whether b holds
+//                                                     on each
+//   free_rows()                                       the free rows this process owns (a bound judges them)
 //   units:     assemble_isotropic(X, columns, kept), discard_isotropic(), set_prefilter(eps, settings),
 //              set_units(units, statistics, component_scale), units(), where_face(statistics)
 //   operator:  assemble(X, columns, tensor, with_matrices), error(), save(), restore(X, columns, tensor),

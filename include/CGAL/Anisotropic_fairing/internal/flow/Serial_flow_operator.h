@@ -53,6 +53,7 @@ public:
   std::size_t vertex_count() const { return rows_; }
   std::size_t free_count() const { return block_.size(); }
   double largest(double x) const { return x; }
+  double total(double x) const { return x; }
   bool everywhere(bool b) const { return b; }
   /// A run starts: its settings, and whether the surface is fixed (attributes only).
   void begin_run(const Stepper_settings& s, bool fixed)
@@ -207,7 +208,7 @@ public:
   }
   bool all_finite(const Control_matrix& X) const { return X.allFinite(); }
 
-  /// a bound's fidelity acts on the free rows of the block (Deviation_bound.h)
+  /// the free rows this process judges for a bound (Deviation_bound.h): all of them
   const std::vector<int>& free_rows() const { return block_.free; }
 
 private:
