@@ -133,8 +133,7 @@ void write_mesh_file(const af_tool::Options& o, const af_tool::Mesh& mesh, const
 // the library's call on every process, its runs divided among them; the result written by process 0
 int run_distributed(const af_tool::Options& o, MPI_Comm comm, Run_summary& summary)
 {
-  summary.whole_mesh_why = part_refusal(o);
-  if(summary.whole_mesh_why.empty() && run_on_parts(o, comm, summary)) return 0;
+  if(run_on_parts(o, comm, summary)) return 0;
   int rank = 0, size = 1;
   MPI_Comm_rank(comm, &rank);
   MPI_Comm_size(comm, &size);

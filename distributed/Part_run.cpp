@@ -7,17 +7,22 @@
 // are made over the processes and whose flow steps on them (Distributed_cache.h with the part's layout). Each
 // process then writes its block of vertex records at their places in the output, every vertex property as
 // read but the normals (nx, ny, nz: the faired surface's, as the serial program writes them), the faces as they
-// were. What a part cannot run yet (part_refusal) is run with the whole mesh on every process (Distributed_run.cpp).
+// were (with --curvature's k1, k2, mean_curvature added: Ply_block_output.h), faired attributes in their types. Any
+// other file is read whole by process 0 and scattered (Scattered_mesh.h). What parts cannot run (run_on_parts()
+// false) runs with the whole mesh on every process (Distributed_run.cpp).
 
 #include "Part_run.h"
 
 #include "Distributed_flow.h"
 #include "Mesh_part.h"
+#include "Part_attributes.h"
 #include "Part_process.h"
 #include "Part_values.h"
+#include "Ply_block_output.h"
 #include "Ply_blocks.h"
 #include "Run_support.h"
 #include "Scattered_mesh.h"
+#include "attribute_columns.h"
 #include "held_vertices.h"
 #include "mesh_io.h"
 #include "written_normals_and_curvature.h"
@@ -76,6 +81,42 @@ AF::Input_error in_the_whole_mesh(const AF::Input_error& e, const Mesh_part& par
   return E(e.kind(), std::size_t(global[local]), message);
 }
 
+bool fair_attributes(const af_tool::Options& o)
+{
+  return !o.attributes.empty() && af_tool::effective_mode(o) != AF::Attribute_mode::GEOMETRY_ONLY;
+}
+bool fairs_geometry(const af_tool::Options& o)
+{
+  return !fair_attributes(o) || af_tool::effective_mode(o) != AF::Attribute_mode::ATTRIBUTES_ONLY;
+}
+
+// Each process's blocks of the file (read by blocks, or read whole by process 0 and scattered with the held vertices
+// and the attributes it found: blocks.names, the hold column named as --hold's property), and its part made of them.
+void read_parts(const af_tool::Options& o, MPI_Comm comm, bool blocks_read, Ply_blocks& blocks, Mesh_part& part,
+                Whole_mesh_file& whole)
+{
+  int rank = 0, size = 1;
+  MPI_Comm_rank(comm, &rank);
+  MPI_Comm_size(comm, &size);
+  if(!blocks_read) collectively(comm, o.input, [&] { if(rank == 0) read_whole_mesh(o, fair_attributes(o), whole); });
+  collectively(comm, o.input, [&] {
+    if(blocks_read) blocks = read_ply_blocks(o.input, rank, size);
+    else
+    {
+      blocks.mesh = scattered_blocks(comm, whole);
+      std::size_t columns = 0;
+      blocks.values = scattered_values(comm, whole, blocks.mesh.vertices, columns);
+      if(!o.hold.empty()) blocks.names.push_back(o.hold);
+      while(blocks.names.size() < columns) blocks.names.push_back("attribute " + std::to_string(blocks.names.size()));
+    }
+    for(const std::string& name : blocks.names)   // as check_curvature_properties_free says it
+      if(blocks_read && o.curvature && (name == "k1" || name == "k2" || name == "mean_curvature"))
+        af_tool::fail("input_error", "--curvature: " + o.input + " already has a vertex property '" + name +
+                                       "', which it would overwrite");
+    part = make_mesh_part(comm, blocks.mesh, part_depth);
+  });
+}
+
 // --hold on the part's vertices, as the serial program reads it (held_vertices.cpp): a vertex property of the file
 // (held where it is not 0) or a file of vertex indices of the whole mesh. Returns how many of the whole mesh's.
 std::size_t part_held(MPI_Comm comm, const af_tool::Options& o, const Ply_blocks& blocks, const Mesh_part& part,
@@ -111,22 +152,24 @@ std::size_t part_held(MPI_Comm comm, const af_tool::Options& o, const Ply_blocks
 // the library's call on the part, its faired control points to `control` (as the serial program asks for them)
 AF::Fairing_report fair_part(const af_tool::Options& o, af_tool::Mesh& mesh, const Mesh_part& part,
                              const Part_process& process, Distributed_state& state, bool print,
-                             std::vector<unsigned char>& held, std::vector<af_tool::Point>& control)
+                             std::vector<unsigned char>& held, Part_attributes& attributes,
+                             std::vector<af_tool::Point>& control)
 {
   AF::Fairing_options options = o.fairing;
-  options.attribute_mode = AF::Attribute_mode::GEOMETRY_ONLY;
+  options.attribute_mode = attributes.faired() ? af_tool::effective_mode(o) : AF::Attribute_mode::GEOMETRY_ONLY;
   options.memory_limit = std::numeric_limits<double>::infinity();
   control.resize(mesh.number_of_vertices());
+  const af_tool::Attribute_vectors attribute_map{ &attributes.values };
   const auto np = AF::parameters::fairing_options(options)
                     .control_point_map(CGAL::make_property_map(control))
+                    .attribute_control_map(af_tool::Attribute_vectors{ &attributes.controls })
                     .vertex_is_constrained_map(CGAL::make_property_map(held))
                     .callback(step_lines(o, print));
-  const AFI::No_attributes none;
-  const auto hooks = AFI::caller_hooks<af_tool::Mesh>(none, np);
+  const auto hooks = AFI::caller_hooks<af_tool::Mesh>(attribute_map, np);
   const Distributed_elements elements{ &state, &process };
   try
   {
-    return AFI::fair_with_options(mesh, mesh.points(), none, AFI::read_fairing_options(np), hooks,
+    return AFI::fair_with_options(mesh, mesh.points(), attribute_map, AFI::read_fairing_options(np), hooks,
                                   options.diffusion_tensor_or_default(), elements);
   }
   catch(const AF::Input_error& e) { throw in_the_whole_mesh(e, part); }
@@ -142,58 +185,87 @@ std::vector<std::size_t> normal_columns(const Ply_blocks& blocks)
   return columns.size() == 3 ? columns : std::vector<std::size_t>();
 }
 
-// The input's normals replaced by the faired surface's at the part's vertices, as the serial program replaces them
-// (written_normals_and_curvature.cpp: the limit surface's, from the control points); an own vertex's fan and the
-// rings its normal reads are in its part. Returns what the report's `normals` says.
-std::string replace_normals(const af_tool::Options& o, af_tool::Mesh& mesh, const std::vector<af_tool::Point>& control,
-                            const AF::Fairing_report& report)
+// The input's normals replaced by the faired surface's at the part's vertices, and --curvature's k1, k2,
+// mean_curvature, as the serial program writes them (written_normals_and_curvature.cpp: the limit surface's, from
+// the control points); an own vertex's fan and the rings its normal and curvature read are in its part. Returns what
+// the report's `normals` says.
+std::string limit_quantities(const af_tool::Options& o, bool has_normals, af_tool::Mesh& mesh,
+                             const std::vector<af_tool::Point>& control, const AF::Fairing_report& report)
 {
-  mesh.add_property_map<af_tool::Vertex_index, af_tool::Vector>("v:normal", af_tool::Vector(0, 0, 0));
   af_tool::Input_info info;
-  info.has_normals = info.normals_read = true;
+  if(has_normals)
+  {
+    mesh.add_property_map<af_tool::Vertex_index, af_tool::Vector>("v:normal", af_tool::Vector(0, 0, 0));
+    info.has_normals = info.normals_read = true;
+  }
   af_tool::Run_record record;
   record.report = report;
-  af_tool::write_normals_and_curvature(o, info, true, control, mesh, record);
+  af_tool::write_normals_and_curvature(o, info, fairs_geometry(o), control, mesh, record);
   return record.normals;
 }
 
-// the own vertices' new positions (and normals, when the file has them) to the holders of their blocks, then each
-// process's block written in place in `path`
+// the own vertices' new positions (and normals, when the file has them, and faired attributes) to the holders of
+// their blocks, then each process's block written in place in `path`
 void write_blocks(const af_tool::Options& o, const std::string& path, MPI_Comm comm, const Ply_blocks& blocks,
-                  const Mesh_part& part, const af_tool::Mesh& mesh)
+                  const Mesh_part& part, const af_tool::Mesh& mesh, const Part_attributes& attributes)
 {
-  struct Moved { std::int64_t vertex; double point[3], normal[3]; };
   const int size = part.size;
   const std::vector<std::size_t> normal = normal_columns(blocks);
   const auto normals = mesh.property_map<af_tool::Vertex_index, af_tool::Vector>("v:normal");
-  std::vector<std::vector<Moved>> out(static_cast<std::size_t>(size));
+  std::vector<af_tool::Mesh::Property_map<af_tool::Vertex_index, double>> curvature;
+  for(const char* name : af_tool::curvature_properties)
+    if(o.curvature) curvature.push_back(mesh.property_map<af_tool::Vertex_index, double>(name).first);
+  // a record: the vertex's number, its point, its normal, its attributes, its curvature
+  const std::size_t width = 7 + attributes.columns.size() + curvature.size();
+  std::vector<std::vector<double>> out(static_cast<std::size_t>(size));
   for(std::size_t v = 0; v < part.owned_vertices; ++v)
   {
     const af_tool::Vertex_index i(static_cast<af_tool::Mesh::size_type>(v));
     const af_tool::Point& p = mesh.point(i);
     const af_tool::Vector n = normals.second ? normals.first[i] : af_tool::Vector(0, 0, 0);
     const std::int64_t g = part.global_vertex[v];
-    out[std::size_t(block_of(g, blocks.mesh.vertices, size))].push_back({ g, { p.x(), p.y(), p.z() },
-                                                                          { n.x(), n.y(), n.z() } });
+    std::vector<double>& to = out[std::size_t(block_of(g, blocks.mesh.vertices, size))];
+    to.insert(to.end(), { double(g), p.x(), p.y(), p.z(), n.x(), n.y(), n.z() });
+    if(attributes.faired()) to.insert(to.end(), attributes.values[v].begin(), attributes.values[v].end());
+    for(const auto& k : curvature) to.push_back(k[i]);
   }
   const std::int64_t first = block_first(blocks.mesh.vertices, part.rank, size);
-  std::vector<double> points = blocks.mesh.points, values = blocks.values;
-  const std::size_t columns = blocks.names.size();
-  for(const Moved& m : af_distributed::exchange(comm, out))
+  std::vector<double> points = blocks.mesh.points, values;
+  const Ply_header written = with_vertex_properties(
+    blocks.header, o.curvature ? std::vector<std::string>{ "k1", "k2", "mean_curvature" } : std::vector<std::string>(),
+    path);
+  const std::size_t read_columns = blocks.names.size(), columns = written.columns.size();
+  for(std::size_t row = 0; row < points.size() / 3; ++row)   // the properties read, then room for those added
   {
-    const std::size_t row = std::size_t(m.vertex - first);
-    std::copy(m.point, m.point + 3, points.begin() + std::ptrdiff_t(3 * row));
-    for(std::size_t a = 0; a < normal.size() && normals.second; ++a) values[row * columns + normal[a]] = m.normal[a];
+    values.insert(values.end(), blocks.values.begin() + std::ptrdiff_t(row * read_columns),
+                  blocks.values.begin() + std::ptrdiff_t((row + 1) * read_columns));
+    values.resize(values.size() + columns - read_columns);
+  }
+  const Ply_element& vertex = blocks.header.elements[std::size_t(blocks.header.vertex)];
+  const std::vector<double> received = af_distributed::exchange(comm, out);
+  for(std::size_t at = 0; at + width <= received.size(); at += width)
+  {
+    const double* m = received.data() + at;
+    const std::size_t row = std::size_t(std::int64_t(m[0]) - first);
+    std::copy(m + 1, m + 4, points.begin() + std::ptrdiff_t(3 * row));
+    for(std::size_t a = 0; a < normal.size() && normals.second; ++a) values[row * columns + normal[a]] = m[4 + a];
+    for(std::size_t c = 0; c < attributes.columns.size(); ++c)
+    {
+      const std::size_t k = attributes.columns[c];
+      const Ply_type type = vertex.properties[std::size_t(blocks.header.columns[k])].type;
+      values[row * columns + k] = in_property_type(type, m[7 + c]);
+    }
+    for(std::size_t c = 0; c < curvature.size(); ++c) values[row * columns + read_columns + c] = m[width - 3 + c];
   }
   std::vector<std::int64_t> mine(points.size() / 3);
   for(std::size_t k = 0; k < mine.size(); ++k) mine[k] = first + std::int64_t(k);
-  agree_on(comm, [&] { if(part.rank == 0) create_ply_output(o.input, path, blocks.header); }, "write_error");
-  write_ply_blocks(o.input, path, blocks.header, part.rank, size, mine, points, values);
+  agree_on(comm, [&] { if(part.rank == 0) create_ply_output(o.input, path, blocks.header, written); }, "write_error");
+  write_ply_blocks(o.input, path, blocks.header, written, part.rank, size, mine, points, values);
 }
 
 // written through a temporary file next to the output, which replaces the output once every process wrote
 void write_result(const af_tool::Options& o, MPI_Comm comm, const Ply_blocks& blocks, const Mesh_part& part,
-                  const af_tool::Mesh& mesh)
+                  const af_tool::Mesh& mesh, const Part_attributes& attributes)
 {
   std::string tmp = part.rank == 0 ? af_tool::temporary_next_to(o.output).string() : std::string();
   unsigned long length = tmp.size();
@@ -202,7 +274,7 @@ void write_result(const af_tool::Options& o, MPI_Comm comm, const Ply_blocks& bl
   MPI_Bcast(&tmp[0], int(length), MPI_CHAR, 0, comm);
   try
   {
-    collectively(comm, o.input, [&] { write_blocks(o, tmp, comm, blocks, part, mesh); });
+    collectively(comm, o.input, [&] { write_blocks(o, tmp, comm, blocks, part, mesh, attributes); });
   }
   catch(...)
   {
@@ -226,7 +298,7 @@ void write_result(const af_tool::Options& o, MPI_Comm comm, const Ply_blocks& bl
 // whole and scatters it: Scattered_mesh.h)
 bool by_blocks(const af_tool::Options& o)
 {
-  if(!ends_with(o.input, ".ply") || !ends_with(o.output, ".ply")) return false;
+  if(o.repair || !ends_with(o.input, ".ply") || !ends_with(o.output, ".ply")) return false;   // --repair: whole
   try { return read_ply_header(o.input).refusal.empty(); }
   catch(const std::exception&) { return false; }
 }
@@ -234,34 +306,27 @@ bool by_blocks(const af_tool::Options& o)
 // process 0's writing of the mesh it read whole, with every process's faired vertices, as the program writes a mesh
 // held whole (the normals from the control points, split vertices merged back)
 void write_whole(const af_tool::Options& o, MPI_Comm comm, const Mesh_part& part, const af_tool::Mesh& mesh,
-                 const std::vector<af_tool::Point>& control, Whole_mesh_file& whole, Run_summary& summary)
+                 const std::vector<af_tool::Point>& control, const Part_attributes& attributes, Whole_mesh_file& whole,
+                 Run_summary& summary)
 {
   std::vector<af_tool::Point> all_control;
   gather_faired(comm, part, mesh, control, whole, all_control);
+  std::vector<std::vector<double>> values;
+  if(attributes.faired()) gather_attributes(comm, part, attributes.values, whole.mesh.number_of_vertices(), values);
   collectively(comm, o.input, [&] {
     if(part.rank != 0) return;
     af_tool::Run_record record;
     record.report = summary.report;
-    af_tool::write_normals_and_curvature(o, whole.info, true, all_control, whole.mesh, record);
+    af_tool::write_normals_and_curvature(o, whole.info, fairs_geometry(o), all_control, whole.mesh, record);
     af_tool::merge_copies(whole.mesh, whole.info.split);
+    af_tool::merge_copies(values, whole.info.split);
+    if(attributes.faired()) af_tool::scatter(whole.mesh, whole.attributes, values);
     write_mesh_file(o, whole.mesh, whole.info);
     summary.normals = record.normals;
   });
 }
 
 } // namespace
-
-std::string part_refusal(const af_tool::Options& o)
-{
-  if(!o.hold.empty() && !by_blocks(o) && !std::filesystem::is_regular_file(o.hold))
-    return "--hold names a vertex property of a mesh process 0 reads whole";
-  const AF::Fairing_options& f = o.fairing;
-  if((f.attribute_mode && *f.attribute_mode != AF::Attribute_mode::GEOMETRY_ONLY) || f.attribute_maximum_deviation > 0)
-    return "attributes are faired";
-  if(o.curvature || o.repair) return "--curvature or --repair is given";
-  if(f.finite_element != AF::Finite_element::LOOP) return "the linear element is asked for";
-  return std::string();
-}
 
 bool run_on_parts(const af_tool::Options& o, MPI_Comm comm, Run_summary& summary)
 {
@@ -276,17 +341,7 @@ bool run_on_parts(const af_tool::Options& o, MPI_Comm comm, Run_summary& summary
   Mesh_part part;
   Whole_mesh_file whole;
   const bool blocks_read = by_blocks(o);
-  if(!blocks_read)
-    collectively(comm, o.input, [&] {
-      if(rank != 0) return;
-      af_tool::read_input(o.input, whole.mesh, whole.info, o.repair);
-      af_tool::check_curvature_properties_free(o, whole.mesh);
-    });
-  collectively(comm, o.input, [&] {
-    if(blocks_read) blocks = read_ply_blocks(o.input, rank, size);
-    else blocks.mesh = scattered_blocks(comm, whole);
-    part = make_mesh_part(comm, blocks.mesh, part_depth);
-  });
+  read_parts(o, comm, blocks_read, blocks, part, whole);
   summary.read_seconds = clock.time();
   summary.vertices = std::size_t(blocks.mesh.vertices);
   if(!whole.info.split.empty()) summary.vertices = whole.info.split.file_vertices;   // (process 0's: it reports)
@@ -311,18 +366,35 @@ bool run_on_parts(const af_tool::Options& o, MPI_Comm comm, Run_summary& summary
   const bool print = rank == 0 && !o.quiet;
   std::vector<unsigned char> held;
   collectively(comm, o.input, [&] { summary.held_vertices = part_held(comm, o, blocks, part, held); });
+  Part_attributes attributes;
+  if(fair_attributes(o))
+  {
+    if(!blocks_read)   // the columns process 0 sent after --hold's
+      for(std::size_t k = o.hold.empty() ? 0 : 1; k < blocks.names.size(); ++k) attributes.columns.push_back(k);
+    else if(!resolve_part_attributes(o, blocks, attributes.columns))
+    {
+      summary = Run_summary();
+      summary.whole_mesh_why = "an attribute named is not a numeric vertex property or a colour of bytes of the file "
+                               "(uv, or a name it lacks): the mesh is read whole, as anisotropic_fairing reads it";
+      return false;
+    }
+    collectively(comm, o.input, [&] { gather_part_attributes(comm, blocks, part, attributes); });
+  }
   std::vector<af_tool::Point> control;
-  collectively(comm, o.input,
-               [&] { summary.report = fair_part(o, mesh, part, process, state, print, held, control); });
+  collectively(comm, o.input, [&] {
+    summary.report = fair_part(o, mesh, part, process, state, print, held, attributes, control);
+  });
   const double call_seconds = clock.time();
   after_the_call(comm, o, call_seconds, state, summary);
-  if(!normal_columns(blocks).empty())
-    collectively(comm, o.input, [&] { summary.normals = replace_normals(o, mesh, control, summary.report); });
+  const bool has_normals = !normal_columns(blocks).empty();
+  if(blocks_read && (has_normals || o.curvature))
+    collectively(comm, o.input,
+                 [&] { summary.normals = limit_quantities(o, has_normals, mesh, control, summary.report); });
   summary.part_vertices = gathered<std::size_t>(comm, part.global_vertex.size(), MPI_UNSIGNED_LONG);
   clock.reset();
   summary.peak_memory_mb = gathered<double>(comm, peak_memory_mb(), MPI_DOUBLE);
-  if(blocks_read) write_result(o, comm, blocks, part, mesh);
-  else write_whole(o, comm, part, mesh, control, whole, summary);
+  if(blocks_read) write_result(o, comm, blocks, part, mesh, attributes);
+  else write_whole(o, comm, part, mesh, control, attributes, whole, summary);
   summary.write_seconds = clock.time();
   return true;
 }

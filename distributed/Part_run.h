@@ -1,8 +1,7 @@
 // Copyright (c) 2026 Anisotropic_fairing developers.
 // SPDX-License-Identifier: GPL-3.0-or-later
 //
-// The run in which each process holds its part of the mesh, not the whole mesh (Part_run.cpp), and what it
-// cannot run yet.
+// The run in which each process holds its part of the mesh, not the whole mesh (Part_run.cpp).
 
 #ifndef AF_DISTRIBUTED_PART_RUN_H
 #define AF_DISTRIBUTED_PART_RUN_H
@@ -17,12 +16,9 @@ namespace af_distributed {
 /// neighbours' corners (2: folds), the places a fold near them marks (3, 4: Fold_sites).
 constexpr int part_depth = 4;
 
-/// Why `o` cannot run on parts (empty: it can): the input and the output binary PLY files of triangles; the
-/// default run or the flow with a given time step on the geometry, no bound.
-std::string part_refusal(const af_tool::Options& o);
-
 /// Runs `o` with each process holding its part of the mesh, as run_distributed() runs it; false, having run
-/// nothing, where the mesh is not a manifold surface (summary.whole_mesh_why says so): then it runs whole.
+/// nothing, where the parts cannot run it (summary.whole_mesh_why says why: a binary PLY mesh that is not a manifold
+/// surface, an attribute they cannot name as the serial program does): then it runs whole.
 bool run_on_parts(const af_tool::Options& o, MPI_Comm comm, Run_summary& summary);
 
 } // namespace af_distributed

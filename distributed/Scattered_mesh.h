@@ -7,14 +7,21 @@
 // them from a binary PLY file (Part_exchange.h's Mesh_blocks). After the run each process sends process 0 its
 // own vertices' positions and control points, and process 0 writes the file as the program writes a mesh held
 // whole (Distributed_run.cpp). Process 0 holds the whole mesh meanwhile; the other processes, their parts.
+// Held vertices (--hold, a property or a file) and attributes are found by process 0 as the program finds them
+// (held_vertices.h, attribute_columns.h: a split vertex's copies held as it is, uv and colours included), sent with
+// the blocks as columns of values, and the faired attributes gathered back and written as the program writes them.
 
 #ifndef AF_DISTRIBUTED_SCATTERED_MESH_H
 #define AF_DISTRIBUTED_SCATTERED_MESH_H
 
 #include "Mesh_part.h"
 #include "Part_exchange.h"
+#include "attribute_columns.h"
+#include "held_vertices.h"
 #include "mesh_io.h"
+#include "written_normals_and_curvature.h"
 
+#include <algorithm>
 #include <cstdint>
 #include <limits>
 #include <stdexcept>
@@ -27,7 +34,35 @@ struct Whole_mesh_file
 {
   af_tool::Mesh mesh;
   af_tool::Input_info info;
+  bool held = false;                                  // the first column of `values`: --hold's (every process's)
+  std::vector<af_tool::Attribute_column> attributes;  // the others: the attributes faired
+  std::vector<double> values;                         // per vertex, the columns
 };
+
+/// Process 0's reading of the mesh, its held vertices and its attributes, as anisotropic_fairing reads them
+/// (fairing_run.cpp: read_mesh, plan_attributes, plan_held_vertices); `fair_attributes`: whether they are faired.
+inline void read_whole_mesh(const af_tool::Options& o, bool fair_attributes, Whole_mesh_file& whole)
+{
+  af_tool::read_input(o.input, whole.mesh, whole.info, o.repair);
+  af_tool::check_curvature_properties_free(o, whole.mesh);
+  const std::size_t n = whole.mesh.number_of_vertices();
+  std::vector<unsigned char> held(n, 0);
+  whole.held = !o.hold.empty();
+  if(whole.held) af_tool::read_held_vertices(whole.mesh, o.hold, held);
+  for(std::size_t i = 0; i < whole.info.split.copy_of.size(); ++i)   // a split vertex's copies are held as it is
+    held[whole.info.split.file_vertices + i] = held[whole.info.split.copy_of[i]];
+  std::vector<std::vector<double>> attributes;
+  if(fair_attributes)
+  {
+    whole.attributes = af_tool::resolve_attributes(whole.mesh, whole.info, o.input, o.attributes);
+    af_tool::gather(whole.mesh, whole.attributes, attributes);
+  }
+  for(std::size_t v = 0; v < n; ++v)
+  {
+    if(whole.held) whole.values.push_back(held[v]);
+    if(fair_attributes) whole.values.insert(whole.values.end(), attributes[v].begin(), attributes[v].end());
+  }
+}
 
 /// Each process's blocks of the mesh process 0 holds in `whole` (collective).
 inline Mesh_blocks scattered_blocks(MPI_Comm comm, const Whole_mesh_file& whole)
@@ -76,6 +111,28 @@ inline Mesh_blocks scattered_blocks(MPI_Comm comm, const Whole_mesh_file& whole)
   return b;
 }
 
+/// Each process's block of process 0's `whole.values` (collective): `columns` per vertex, their count sent to all.
+inline std::vector<double> scattered_values(MPI_Comm comm, const Whole_mesh_file& whole, std::int64_t vertices,
+                                            std::size_t& columns)
+{
+  int rank = 0, size = 1;
+  MPI_Comm_rank(comm, &rank);
+  MPI_Comm_size(comm, &size);
+  unsigned long counts[2] = { whole.held ? 1ul : 0ul, (unsigned long)whole.attributes.size() };
+  MPI_Bcast(counts, 2, MPI_UNSIGNED_LONG, 0, comm);
+  columns = std::size_t(counts[0] + counts[1]);
+  std::vector<int> count(static_cast<std::size_t>(size)), at(static_cast<std::size_t>(size));
+  for(int p = 0; p < size; ++p)
+  {
+    at[std::size_t(p)] = int(columns * std::size_t(block_first(vertices, p, size)));
+    count[std::size_t(p)] = int(columns * std::size_t(block_first(vertices, p + 1, size))) - at[std::size_t(p)];
+  }
+  std::vector<double> mine(std::size_t(count[std::size_t(rank)]));
+  MPI_Scatterv(whole.values.data(), count.data(), at.data(), MPI_DOUBLE, mine.data(), count[std::size_t(rank)],
+               MPI_DOUBLE, 0, comm);
+  return mine;
+}
+
 /// The faired positions and control points of every process's own vertices, into process 0's `whole` and
 /// `control` (collective; the other processes' arguments are not read).
 inline void gather_faired(MPI_Comm comm, const Mesh_part& part, const af_tool::Mesh& faired,
@@ -99,6 +156,26 @@ inline void gather_faired(MPI_Comm comm, const Mesh_part& part, const af_tool::M
       af_tool::Point(f.point[0], f.point[1], f.point[2]);
     control[std::size_t(f.vertex)] = af_tool::Point(f.control[0], f.control[1], f.control[2]);
   }
+}
+
+/// The faired attributes of every process's own vertices (`part_values`, per vertex of the part), into process 0's
+/// `values` per vertex of the whole mesh (collective).
+inline void gather_attributes(MPI_Comm comm, const Mesh_part& part, const std::vector<std::vector<double>>& part_values,
+                              std::size_t vertices, std::vector<std::vector<double>>& values)
+{
+  const std::size_t width = part_values.empty() ? 0 : part_values[0].size();
+  std::vector<std::vector<double>> out(static_cast<std::size_t>(part.size));
+  for(std::size_t v = 0; v < part.owned_vertices && width > 0; ++v)
+  {
+    out[0].push_back(double(part.global_vertex[v]));
+    out[0].insert(out[0].end(), part_values[v].begin(), part_values[v].end());
+  }
+  const std::vector<double> all = af_distributed::exchange(comm, out);
+  if(part.rank != 0) return;
+  values.assign(vertices, std::vector<double>(width));
+  for(std::size_t at = 0; at + width + 1 <= all.size(); at += width + 1)
+    std::copy(all.begin() + std::ptrdiff_t(at + 1), all.begin() + std::ptrdiff_t(at + 1 + width),
+              values[std::size_t(all[at])].begin());
 }
 
 } // namespace af_distributed

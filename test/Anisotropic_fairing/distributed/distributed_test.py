@@ -259,14 +259,24 @@ os.execv(sys.argv[2], sys.argv[2:])
 
 def out_of_memory(args):
     """Process 1 runs out of memory (its data limited) on the armadillo, in the library's code (60 MB, each process
-    holding its part) or in PETSc's (200 MB, the whole mesh on every process: --repair runs whole; a part fits in
-    200 MB): the run ends on every process, saying which one ran out; nothing is written."""
+    holding its part) or in PETSc's (200 MB, the whole mesh on every process: a binary PLY mesh with a vertex of two
+    fans runs whole; a part fits in 200 MB): the run ends on every process, saying which one ran out; nothing is
+    written."""
+    import part_cases
     wrapper = os.path.join(args.work, "limited.py")
     open(wrapper, "w").write(LIMITED)
     mesh = os.path.join(args.data, "armadillo.obj")
-    for megabytes, whole in ((60, []), (200, ["--repair"])):
-        out = os.path.join(args.work, "out_of_memory_%d.obj" % megabytes)
-        command = mpi(args, 2, mesh, out, "--quiet", "--relative-time-step", "1e-3", "--steps", "2", *whole)
+    lines = [l.split() for l in open(mesh) if l.startswith(("v ", "f "))]
+    points, faces = [l[1:4] for l in lines if l[0] == "v"], [[w.split("/")[0] for w in l[1:]] for l in lines if l[0] == "f"]
+    off, bowtie, whole = (os.path.join(args.work, "armadillo" + e) for e in (".off", "_bowtie.off", "_bowtie.ply"))
+    open(off, "w").write("OFF\n%d %d 0\n" % (len(points), len(faces)) + "".join(" ".join(p) + "\n" for p in points) +
+                         "".join("%d %s\n" % (len(f), " ".join(str(int(i) - 1) for i in f)) for f in faces))
+    part_cases.with_bowtie(off, bowtie)
+    part_cases.binary_ply(bowtie, whole)
+    for megabytes, source in ((60, mesh), (200, whole)):
+        mesh = source
+        out = os.path.join(args.work, "out_of_memory_%d%s" % (megabytes, os.path.splitext(source)[1]))
+        command = mpi(args, 2, mesh, out, "--quiet", "--relative-time-step", "1e-3", "--steps", "2")
         at = command.index(args.mpi)
         command[at:at] = [sys.executable, wrapper, str(megabytes << 20)]
         p = subprocess.run(command, capture_output=True, text=True, timeout=300)

@@ -7,12 +7,13 @@
 # the whole mesh on every process, and the report says why.
 import json, math, os, random, struct, sys
 
-def binary_ply(source, target, noise=0.0, seed=3, spikes=0.0, lattice=0.0, normals=False):
+def binary_ply(source, target, noise=0.0, seed=3, spikes=0.0, lattice=0.0, normals=False, attributes=False):
     """source's mesh (OFF) as a binary little-endian PLY: double x, y, z and a float `quality` per vertex (which
     must come back unchanged), with Gaussian noise of `noise` mean edge lengths on each coordinate; a share `spikes`
     of the vertices thrown 1.5 mean edge lengths off in a random direction (impulsive noise); the coordinates
     rounded to multiples of `lattice` mean edge lengths (a quantised scan); with `normals`, double nx, ny, nz: the
-    noisy surface's area-weighted vertex normals, as a scanner writes them."""
+    noisy surface's area-weighted vertex normals, as a scanner writes them; with `attributes`, a noisy function on
+    the surface (double value) and a noisy colour (uchar red, green, blue)."""
     words = [w for l in open(source) for w in l.split("#")[0].split()]
     n, m = int(words[1]), int(words[2])
     points = [[float(x) for x in words[4 + 3 * i:7 + 3 * i]] for i in range(n)]
@@ -35,11 +36,18 @@ def binary_ply(source, target, noise=0.0, seed=3, spikes=0.0, lattice=0.0, norma
         for k in f: normal[k] = [x + y for x, y in zip(normal[k], cross)]
     with open(target, "wb") as out:
         out.write(("ply\nformat binary_little_endian 1.0\nelement vertex %d\nproperty double x\nproperty double y\n"
-                   "property double z\nproperty float quality\n%selement face %d\nproperty list uchar int vertex_indices\n"
-                   "end_header\n" % (n, "property double nx\nproperty double ny\nproperty double nz\n" if normals else "", m)).encode())
+                   "property double z\nproperty float quality\n%s%selement face %d\nproperty list uchar int vertex_indices\n"
+                   "end_header\n" % (n, "property double nx\nproperty double ny\nproperty double nz\n" if normals else "",
+                                     "property double value\nproperty uchar red\nproperty uchar green\nproperty uchar blue\n"
+                                     if attributes else "", m)).encode())
         for i, q in enumerate(moved):
             out.write(struct.pack("<3df", *q, float(i % 97)))
             if normals: out.write(struct.pack("<3d", *[x / (math.hypot(*normal[i]) or 1) for x in normal[i]]))
+            if attributes:
+                p = points[i]
+                byte = lambda x: max(0, min(255, int(round(127.5 + 100 * x + 20 * rng.gauss(0, 1)))))
+                out.write(struct.pack("<d3B", math.sin(3 * p[0] / edge / 10) + 0.2 * rng.gauss(0, 1),
+                                      byte(math.sin(p[1] / edge / 8)), byte(math.cos(p[2] / edge / 8)), byte(0)))
         for f in faces: out.write(struct.pack("<B3i", 3, *f))
 
 def with_bowtie(source, target):
@@ -53,9 +61,9 @@ def with_bowtie(source, target):
     lines += [" ".join(w) for w in words[2 + n:2 + n + f]] + tetra
     open(target, "w").write("\n".join(lines) + "\n")
 
-def ply_sections(path):
-    """The vertex records (x, y, z, quality and nx, ny, nz if there) and the face section's bytes of a binary PLY
-    file of scalar vertex properties."""
+def ply_vertex_records(path):
+    """The vertex properties' names, the vertex records and the face section's bytes of a PLY file of scalar vertex
+    properties (binary little endian or ascii: then the face section's text)."""
     data = open(path, "rb").read()
     end = data.index(b"end_header\n") + len(b"end_header\n")
     lines = data[:end].decode().split("\n")
@@ -63,12 +71,52 @@ def ply_sections(path):
     n, names, record = int(lines[at].split()[2]), [], "<"
     for l in lines[at + 1:]:
         if not l.startswith("property"): break
-        record += {"double": "d", "float": "f", "float64": "d", "float32": "f"}[l.split()[1]]
+        record += {"double": "d", "float": "f", "float64": "d", "float32": "f", "uchar": "B", "uint8": "B", "char": "b",
+                   "int8": "b", "short": "h", "int16": "h", "ushort": "H", "uint16": "H", "int": "i", "int32": "i",
+                   "uint": "I", "uint32": "I"}[l.split()[1]]
         names.append(l.split()[2])
+    if "format ascii 1.0" in lines:
+        rows = data[end:].decode().split("\n")
+        return names, [tuple(float(x) for x in r.split()) for r in rows[:n]], "\n".join(rows[n:]).encode()
     size = struct.calcsize(record)
+    return names, [struct.unpack_from(record, data, end + size * i) for i in range(n)], data[end + size * n:]
+
+def ascii_ply(source, target):
+    """The binary PLY file `source` as an ascii PLY file of the same properties (integers as integers)."""
+    names, records, faces = ply_vertex_records(source)
+    data = open(source, "rb").read()
+    header = data[:data.index(b"end_header\n")].decode().replace("binary_little_endian", "ascii")
+    m = int([l for l in header.split("\n") if l.startswith("element face")][0].split()[2])
+    corners = [struct.unpack_from("<B3i", faces, 13 * j)[1:] for j in range(m)]
+    text = ["%s" % " ".join("%d" % x if x == int(x) and abs(x) < 256 else "%.17g" % x for x in r) for r in records]
+    open(target, "w").write(header + "end_header\n" + "\n".join(text) + "\n" + "".join("3 %d %d %d\n" % c for c in corners))
+
+def same_attributes(name, np, out, serial, mesh):
+    """The attributes faired and the curvature written (those of `serial`) in `out` as in `serial`: bytes to the rounding
+    of a value within 1e-9 of it, the curvature to 1e-7 of the largest; a faired `value` differs from `mesh`'s (None:
+    the attributes are not faired)."""
+    got_attributes = attribute_columns(out)
+    for key, want_values in attribute_columns(serial).items():
+        got_values = got_attributes.get(key, [float("nan")] * len(want_values))
+        span = (max(want_values) - min(want_values) if key == "value" else max(abs(x) for x in want_values)) or 1
+        worst = max(abs(a - b) if a == a else float("inf") for a, b in zip(got_values, want_values))
+        tolerance = 1 if key in ("red", "green", "blue") else 1e-9 * span if key == "value" else 1e-7 * span
+        if worst > tolerance or (mesh and key == "value" and got_values == attribute_columns(mesh)[key]):
+            sys.exit("FAIL: %s on %d processes: attribute %s differs from the serial program's by %.3g, or was not faired"
+                     % (name, np, key, worst))
+
+def ply_sections(path):
+    """The vertex records (x, y, z, quality and nx, ny, nz if there) and the face section's bytes."""
+    names, records, faces = ply_vertex_records(path)
     order = [names.index(k) for k in ("x", "y", "z", "quality", "nx", "ny", "nz") if k in names]
-    rows = [[r[k] for k in order] for r in (struct.unpack_from(record, data, end + size * i) for i in range(n))]
-    return rows, data[end + size * n:]
+    return [[r[k] for k in order] for r in records], faces
+
+def attribute_columns(path):
+    """The attribute properties value, red, green, blue and the curvature k1, k2, mean_curvature of a binary PLY file,
+    by name (those it has)."""
+    names, records, _ = ply_vertex_records(path)
+    return {k: [r[names.index(k)] for r in records] for k in ("value", "red", "green", "blue", "k1", "k2", "mean_curvature")
+            if k in names}
 
 def equal_on_parts(args, run, mpi, name, mesh, flags, processes=(1, 2, 3)):
     """`flags` on `mesh` (a binary PLY) by the serial program and on parts: the same result and decisions."""
@@ -101,6 +149,7 @@ def equal_on_parts(args, run, mpi, name, mesh, flags, processes=(1, 2, 3)):
                     "bound_retaken_steps"):
             if got[key] != expected[key]: sys.exit("FAIL: %s on %d processes: %s %s, the serial run's %s" % (name, np, key, got[key], expected[key]))
         if len(got["steps"]) != len(expected["steps"]): sys.exit("FAIL: %s on %d processes: other steps" % (name, np))
+        same_attributes(name, np, out, serial, mesh if "--attributes" in flags else None)
         for key in ("noise_level", "mean_edge_length"):
             if abs(got[key] - expected[key]) > 1e-9 * abs(expected[key]):
                 sys.exit("FAIL: %s on %d processes: %s %.17g, the serial run's %.17g" % (name, np, key, got[key], expected[key]))
@@ -134,6 +183,7 @@ def equal_on_scattered_parts(args, run, mpi, helpers, name, mesh, output, flags)
         if not d <= 1e-9: sys.exit("FAIL: %s on %d processes differs from the serial result by %.3g" % (name, np, d))
         for key in ("stop_reason", "normals", "choices"):
             if got[key] != expected[key]: sys.exit("FAIL: %s on %d processes: %s %s, the serial run's %s" % (name, np, key, got[key], expected[key]))
+        if output == ".ply": same_attributes(name, np, out, serial, mesh if "--attributes" in flags else None)
 
 def whole_mesh_run(args, run, mpi, name, mesh, flags, why):
     """What parts cannot run yet runs with the whole mesh on every process, and the report says why."""
@@ -196,6 +246,38 @@ def parts(args, run, mpi, helpers):
         report = json.load(open(os.path.join(args.work, name + "_serial.ply.json")))
         if report["bound_held_vertices"] == 0 or (name == "bounded_steps" and not report["bound_uniform_weight"]):
             sys.exit("FAIL: %s: the bound held no row, or gave no uniform weight" % name)
+    # attributes: a function and a colour with the geometry (coupled, the anisotropic flow), after it (separate), on
+    # the fixed surface (attributes only), under a bound of their own, and the default run with them
+    valued = os.path.join(args.work, "valued.ply")
+    binary_ply(os.path.join(args.data, "bumpy.off"), valued, noise=0.05, attributes=True)
+    equal_on_parts(args, run, mpi, "attributes_coupled", valued, ["--attributes", "value,color", "--mode", "coupled",
+                                                                  "--attribute-weight", "2"] + aniso)
+    equal_on_parts(args, run, mpi, "attributes_separate", valued, ["--attributes", "value", "--mode", "separate"] + iso)
+    equal_on_parts(args, run, mpi, "attributes_only", valued, ["--attributes", "value,red", "--mode", "attributes"])
+    equal_on_parts(args, run, mpi, "attributes_bounded", valued, ["--attributes", "value", "--mode", "attributes",
+                                                                  "--attribute-maximum-deviation", "0.01"])
+    noisy_valued = os.path.join(args.work, "noisy_valued.ply")
+    binary_ply(os.path.join(args.data, "bunny.off"), noisy_valued, noise=0.3, attributes=True)
+    equal_on_parts(args, run, mpi, "attributes_default", noisy_valued, ["--attributes", "value,color"])
+    for name in ("attributes_bounded", "attributes_default"):   # the bound held rows; the default run took steps
+        report = json.load(open(os.path.join(args.work, name + "_serial.ply.json")))
+        if (report["bound_held_vertices"] if name == "attributes_bounded" else len(report["steps"])) == 0:
+            sys.exit("FAIL: %s: the bound held no row, or no step was taken" % name)
+    # a name the file lacks: the serial program's message (the mesh read whole, as it reads it), nothing written
+    out = os.path.join(args.work, "unknown_out.ply")
+    p = run(mpi(args, 2, valued, out, "--quiet", "--attributes", "value,colour") + iso, expect_code=1)
+    print("an attribute the file lacks, on 2 processes: %s" % p.stderr.strip().split("\n")[0])
+    if "has no such vertex attribute" not in p.stderr or os.path.exists(out): sys.exit("FAIL: an unknown attribute")
+    # attributes and held vertices of a mesh read whole by process 0: an ascii PLY file (held: all but every 97th vertex)
+    valued_ascii = os.path.join(args.work, "valued_ascii.ply")
+    ascii_ply(valued, valued_ascii)
+    equal_on_scattered_parts(args, run, mpi, helpers, "scattered_attributes", valued_ascii, ".ply",
+                             ["--attributes", "value,color", "--mode", "coupled"] + aniso)
+    equal_on_scattered_parts(args, run, mpi, helpers, "scattered_held", valued_ascii, ".ply", iso + ["--hold", "quality"])
+    # the curvature written (k1, k2, mean_curvature added to the vertex records), with the normals of a scan
+    equal_on_parts(args, run, mpi, "curvature", meshes["default_normals"], aniso + ["--curvature"])
+    # --repair: the mesh read whole by process 0 (its lone vertex removed), as the serial program reads it
+    equal_on_scattered_parts(args, run, mpi, helpers, "scattered_repair", lonely, ".off", iso + ["--repair"])
     # a bad vertex is named by its number in the file, not in a part; nothing is written
     bad = os.path.join(args.work, "nan.ply")
     binary_ply(os.path.join(args.data, "bumpy.off"), bad)

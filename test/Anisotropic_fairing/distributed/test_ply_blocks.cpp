@@ -1,4 +1,4 @@
-// A binary PLY file read and written by blocks (distributed/Ply_blocks.h), without MPI: the processes are
+// A binary PLY file read and written by blocks (distributed/Ply_blocks.h, Ply_block_output.h), without MPI: the processes are
 // simulated, process p of P (P = 1, 2, 3, 5) calling the reader and the writer as it would. Files written here, by
 // this test's own PLY writer, from the mesh bumpy.off (little and big endian; float and double positions; other
 // vertex properties of several types; a face property; elements before the vertices, between the vertices and the
@@ -8,9 +8,11 @@
 //   element; errors naming the file and the record: a truncated file, a face of 4 corners, a corner out of range,
 //   a missing x, a bad header line;
 // - written back in parts (vertex v by process v % P, moved, with changed properties; each process copying its
-//   block of faces), the file is byte for byte the one this test's writer makes of the same values, and reads back.
+//   block of faces), the file is byte for byte the one this test's writer makes of the same values, and reads back;
+//   so too with vertex properties added (--curvature's k1, k2, mean_curvature), the elements after them moved.
 // Arguments: the test data directory; the directory to write in (default: the current one).
 
+#include "Ply_block_output.h"
 #include "Ply_blocks.h"
 
 #include <CGAL/IO/polygon_soup_io.h>
@@ -358,15 +360,19 @@ void refusals_and_errors(const std::string& dir, const std::vector<Point>& point
   check_error(dir + "/bad_line.ply", dir + "/bad_line.ply: PLY header line 5 is not understood: \"property flaot x\"");
 }
 
-// The file `name` written back in parts by P processes with the moved values (`moved`: as its types hold them).
+// The file `name` written back in parts by P processes with the moved values (`moved`: as its types hold them), and
+// with `added` vertex properties after the vertex's others (doubles: 0.25 i, -i, i / 3 at vertex i).
 void write_back(const std::string& dir, const std::string& name, const std::vector<Point>& original,
-                const Ply_file& moved, int P)
+                const Ply_file& moved, int P, const std::vector<std::string>& added = {})
 {
   const std::string input = dir + "/" + name + ".ply", output = dir + "/" + name + "_out.ply";
-  const std::string on = name + " written back by " + std::to_string(P) + " processes: ";
+  const std::string on = name + " written back by " + std::to_string(P) + " processes" +
+                         (added.empty() ? "" : " with properties added") + ": ";
   const af::Ply_header header = af::read_ply_header(input);
-  af::create_ply_output(input, output, header);   // process 0; then the barrier
+  const af::Ply_header written = af::with_vertex_properties(header, added, output);
+  af::create_ply_output(input, output, header, written);   // process 0; then the barrier
   const Element& v = element(moved, "vertex");
+  const auto added_value = [](std::size_t k, std::size_t i) { return k == 0 ? 0.25 * double(i) : k == 1 ? -double(i) : double(i) / 3; };
   for(int p = P - 1; p >= 0; --p)   // any order: each writes its own bytes
   {
     std::vector<std::int64_t> mine;
@@ -382,16 +388,26 @@ void write_back(const std::string& dir, const std::string& name, const std::vect
         if(c >= 'x' && c <= 'z') xyz[c - 'x'] = value;
         else values.push_back(value);
       }
+      for(std::size_t k = 0; k < added.size(); ++k) values.push_back(added_value(k, i));
       points.insert(points.end(), xyz, xyz + 3);
     }
-    af::write_ply_blocks(input, output, header, p, P, mine, points, values);
+    af::write_ply_blocks(input, output, header, written, p, P, mine, points, values);
   }
-  const std::string in = read_file(input), out = read_file(output), expected = bytes_of(moved);
+  Ply_file expected = moved;
+  for(Element& e : expected.elements)
+    if(e.name == "vertex")
+      for(std::size_t k = 0; k < added.size(); ++k)
+      {
+        e.props.push_back({ added[k], "double", "" });
+        for(std::size_t i = 0; i < e.records.size(); ++i) e.records[i].push_back({ added_value(k, i) });
+      }
+  const std::string in = read_file(input), out = read_file(output);
   const af::Ply_element& faces = header.elements[std::size_t(header.face)];
   const std::size_t at = std::size_t(faces.offset), bytes = std::size_t(faces.count * faces.record);
-  check(out.size() == in.size() && out.compare(at, bytes, in, at, bytes) == 0, on + "the faces' bytes are the input's");
-  check(out == expected, on + "the file is byte for byte the one of the moved values");
-  check_blocks(output, moved, P, name + " written back, read");
+  const std::size_t to = std::size_t(written.elements[std::size_t(header.face)].offset);
+  check(out.size() >= to + bytes && out.compare(to, bytes, in, at, bytes) == 0, on + "the faces' bytes are the input's");
+  check(out == bytes_of(expected), on + "the file is byte for byte the one of the moved values");
+  check_blocks(output, expected, P, name + " written back, read");
 }
 
 void writer_refuses(const std::string& dir)
@@ -435,6 +451,7 @@ int main(int argc, char** argv)
       for(int P : { 1, 2, 3, 5 }) check_blocks(dir + "/" + originals[k].first + ".ply", originals[k].second, P,
                                                originals[k].first);
       for(int P : { 1, 2, 3, 5 }) write_back(dir, originals[k].first, points, moved[k].second, P);
+      for(int P : { 1, 3 }) write_back(dir, originals[k].first, points, moved[k].second, P, { "k1", "k2", "mean_curvature" });
     }
     refusals_and_errors(dir, points, polygons);
     writer_refuses(dir);
