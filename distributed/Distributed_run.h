@@ -42,6 +42,7 @@ struct Run_summary
   std::size_t overlap_refreshes = 0;              // how many refreshes moved them
   std::string ksp_type, pc_type;
   std::string mesh_held = "whole", whole_mesh_why;   // "parts" (Part_run.h), or "whole" and why
+  std::string mesh_read, mesh_read_why;   // in parts: "blocks" or "process 0" (and why a binary PLY file was not)
   std::vector<std::size_t> part_vertices;            // per process, the vertices of its part (the parts' run)
   CGAL::Anisotropic_fairing::Fairing_report report;
 };

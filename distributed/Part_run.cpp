@@ -328,7 +328,10 @@ void write_whole(const af_tool::Options& o, MPI_Comm comm, const Mesh_part& part
 
 } // namespace
 
-bool run_on_parts(const af_tool::Options& o, MPI_Comm comm, Run_summary& summary)
+namespace {
+
+// run_on_parts(), the file read by blocks or by process 0
+bool run_parts(const af_tool::Options& o, MPI_Comm comm, Run_summary& summary, bool blocks_read)
 {
   int rank = 0, size = 1;
   MPI_Comm_rank(comm, &rank);
@@ -340,7 +343,7 @@ bool run_on_parts(const af_tool::Options& o, MPI_Comm comm, Run_summary& summary
   Ply_blocks blocks;
   Mesh_part part;
   Whole_mesh_file whole;
-  const bool blocks_read = by_blocks(o);
+  summary.mesh_read = blocks_read ? "blocks" : "process 0";
   read_parts(o, comm, blocks_read, blocks, part, whole);
   summary.read_seconds = clock.time();
   summary.vertices = std::size_t(blocks.mesh.vertices);
@@ -396,6 +399,19 @@ bool run_on_parts(const af_tool::Options& o, MPI_Comm comm, Run_summary& summary
   if(blocks_read) write_result(o, comm, blocks, part, mesh, attributes);
   else write_whole(o, comm, part, mesh, control, attributes, whole, summary);
   summary.write_seconds = clock.time();
+  return true;
+}
+
+} // namespace
+
+bool run_on_parts(const af_tool::Options& o, MPI_Comm comm, Run_summary& summary)
+{
+  if(run_parts(o, comm, summary, by_blocks(o))) return true;
+  if(!by_blocks(o)) return false;
+  // a binary PLY file whose blocks cannot make the parts: read whole by process 0, as any other file
+  const std::string why = summary.whole_mesh_why;
+  if(!run_parts(o, comm, summary, false)) return false;
+  summary.mesh_read_why = why;
   return true;
 }
 

@@ -16,9 +16,10 @@ namespace af_distributed {
 /// neighbours' corners (2: folds), the places a fold near them marks (3, 4: Fold_sites).
 constexpr int part_depth = 4;
 
-/// Runs `o` with each process holding its part of the mesh, as run_distributed() runs it; false, having run
-/// nothing, where the parts cannot run it (summary.whole_mesh_why says why: a binary PLY mesh that is not a manifold
-/// surface, an attribute they cannot name as the serial program does): then it runs whole.
+/// Runs `o` with each process holding its part of the mesh, as run_distributed() runs it. A binary PLY file whose
+/// blocks cannot make the parts (a mesh that is not a manifold surface, an attribute the blocks cannot name as the
+/// serial program does) is read whole by process 0 instead (summary.mesh_read_why says why), as any other file.
+/// False, having run nothing, where the parts cannot run it (summary.whole_mesh_why says why): then it runs whole.
 bool run_on_parts(const af_tool::Options& o, MPI_Comm comm, Run_summary& summary);
 
 } // namespace af_distributed

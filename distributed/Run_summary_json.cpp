@@ -73,7 +73,12 @@ std::string summary_json(const af_tool::Options& o, const Run_summary& s, bool o
   j["per_process"]["overlap_doubles_received"] = s.overlap_doubles_received;
   // what a process holds of the mesh: its part, or the whole mesh (and why)
   j["mesh_held"] = s.mesh_held;
-  if(s.mesh_held == "parts") j["per_process"]["part_vertices"] = s.part_vertices;
+  if(s.mesh_held == "parts")
+  {
+    j["per_process"]["part_vertices"] = s.part_vertices;
+    j["mesh_read"] = s.mesh_read;   // by blocks, or whole by process 0 (and why, for a binary PLY file)
+    if(!s.mesh_read_why.empty()) j["mesh_read_why"] = s.mesh_read_why;
+  }
   else j["whole_mesh_why"] = s.whole_mesh_why;
   j["overlap_refreshes"] = s.overlap_refreshes;
   if(ok)
