@@ -118,9 +118,11 @@ void read_parts(const af_tool::Options& o, MPI_Comm comm, bool blocks_read, Ply_
 }
 
 // --hold on the part's vertices, as the serial program reads it (held_vertices.cpp): a vertex property of the file
-// (held where it is not 0) or a file of vertex indices of the whole mesh. Returns how many of the whole mesh's.
+// (held where it is not 0) or a file of vertex indices of the whole mesh. Returns how many of the file's
+// `file_vertices` (a split vertex's copies, after them, are held as it is and not counted, as the serial program
+// counts them).
 std::size_t part_held(MPI_Comm comm, const af_tool::Options& o, const Ply_blocks& blocks, const Mesh_part& part,
-                      std::vector<unsigned char>& held)
+                      std::int64_t file_vertices, std::vector<unsigned char>& held)
 {
   held.assign(part.global_vertex.size(), 0);
   if(o.hold.empty()) return 0;
@@ -144,7 +146,7 @@ std::size_t part_held(MPI_Comm comm, const af_tool::Options& o, const Ply_blocks
                                                         "readable file of vertex indices");
   }
   unsigned long own = 0, all = 0;
-  for(std::size_t v = 0; v < part.owned_vertices; ++v) own += held[v];
+  for(std::size_t v = 0; v < part.owned_vertices; ++v) own += part.global_vertex[v] < file_vertices ? held[v] : 0;
   MPI_Allreduce(&own, &all, 1, MPI_UNSIGNED_LONG, MPI_SUM, comm);
   return std::size_t(all);
 }
@@ -346,8 +348,9 @@ bool run_parts(const af_tool::Options& o, MPI_Comm comm, Run_summary& summary, b
   summary.mesh_read = blocks_read ? "blocks" : "process 0";
   read_parts(o, comm, blocks_read, blocks, part, whole);
   summary.read_seconds = clock.time();
-  summary.vertices = std::size_t(blocks.mesh.vertices);
-  if(!whole.info.split.empty()) summary.vertices = whole.info.split.file_vertices;   // (process 0's: it reports)
+  std::int64_t file_vertices = whole.info.split.empty() ? blocks.mesh.vertices : whole.info.split.file_vertices;
+  MPI_Bcast(&file_vertices, 1, MPI_INT64_T, 0, comm);   // process 0's: it read the file
+  summary.vertices = std::size_t(file_vertices);
   summary.faces = std::size_t(blocks.mesh.faces);
   af_tool::Mesh mesh;
   int surface = 0, everywhere = 0;
@@ -368,7 +371,7 @@ bool run_parts(const af_tool::Options& o, MPI_Comm comm, Run_summary& summary, b
   const Part_process process(comm, part);
   const bool print = rank == 0 && !o.quiet;
   std::vector<unsigned char> held;
-  collectively(comm, o.input, [&] { summary.held_vertices = part_held(comm, o, blocks, part, held); });
+  collectively(comm, o.input, [&] { summary.held_vertices = part_held(comm, o, blocks, part, file_vertices, held); });
   Part_attributes attributes;
   if(fair_attributes(o))
   {

@@ -181,7 +181,7 @@ def equal_on_scattered_parts(args, run, mpi, helpers, name, mesh, output, flags)
         if got["mesh_held"] != "parts": sys.exit("FAIL: %s: run with the whole mesh (%s)" % (name, got.get("whole_mesh_why")))
         if np > 1 and max(held) >= got["vertices"]: sys.exit("FAIL: %s on %d processes: a process held the whole mesh" % (name, np))
         if not d <= 1e-9: sys.exit("FAIL: %s on %d processes differs from the serial result by %.3g" % (name, np, d))
-        for key in ("stop_reason", "normals", "choices"):
+        for key in ("stop_reason", "normals", "choices", "held_vertices", "vertices"):
             if got[key] != expected[key]: sys.exit("FAIL: %s on %d processes: %s %s, the serial run's %s" % (name, np, key, got[key], expected[key]))
         if output == ".ply": same_attributes(name, np, out, serial, mesh if "--attributes" in flags else None)
 
@@ -306,3 +306,7 @@ def parts(args, run, mpi, helpers):
     helpers["noisy_scan"](os.path.join(args.data, "bunny.off"), scan, True)
     equal_on_scattered_parts(args, run, mpi, helpers, "scattered_default", scan, ".ply", [])
     equal_on_scattered_parts(args, run, mpi, helpers, "scattered_bowtie", bowtie, ".off", iso)
+    # held vertices of a mesh whose vertex 0 is split: its copy held with it, counted once
+    held0 = os.path.join(args.work, "held0.txt")
+    open(held0, "w").write("0\n5\n")
+    equal_on_scattered_parts(args, run, mpi, helpers, "scattered_bowtie_held", bowtie, ".off", iso + ["--hold", held0])
